@@ -1,0 +1,210 @@
+// inerta — command-line interface (docs/cli.md).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+
+#include "inerta/error.hpp"
+#include "inerta/io/model_file.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/dynamics.hpp"
+#include "inerta/solve/integrator.hpp"
+
+using namespace inerta;
+
+namespace {
+
+const char* joint_type_name(mbs::JointType t) {
+  switch (t) {
+    case mbs::JointType::Revolute: return "revolute";
+    case mbs::JointType::Prismatic: return "prismatic";
+    case mbs::JointType::Fixed: return "fixed";
+    case mbs::JointType::Driving: return "driving";
+  }
+  return "?";
+}
+
+std::string body_name(const mbs::Model& m, int b) { return b < 0 ? "ground" : m.bodies[static_cast<std::size_t>(b)].name; }
+
+void print_assembly(const mbs::Model& model, const mbs::AssemblyReport& a) {
+  fmt::print("assembly: max |C| {:.3g} -> {:.3g} in {} Newton iteration(s)", a.initial_residual, a.residual, a.iterations);
+  if (a.dq.size() > 0 && a.dq.cwiseAbs().maxCoeff() > 0)
+    fmt::print("; largest correction {:+.4g} {} on {}", a.dq[a.largest], a.largest % 3 == 2 ? "rad" : "m",
+               model.coord_name(a.largest));
+  fmt::print("\n");
+}
+
+int cmd_check(const std::string& path) {
+  mbs::Model model = io::load_model(path);
+  fmt::print("model: {} ({})\n", model.name, path);
+  fmt::print("bodies ({}):\n", model.bodies.size());
+  for (const auto& b : model.bodies)
+    fmt::print("  {:<16} m = {:<10.6g} kg  I = {:<10.6g} kg·m²  x = {:<10.6g} y = {:<10.6g} θ = {:.6g} rad\n", b.name,
+               b.mass, b.inertia, b.q0.x(), b.q0.y(), b.q0.z());
+  fmt::print("coordinates: {}\n", model.n_coords());
+  fmt::print("joints ({}), constraint equations: {}\n", model.joints.size(), model.n_constraints());
+  for (const auto& j : model.joints)
+    fmt::print("  {:<16} {:<10} {} - {}  ({} equation{})\n", j.name, joint_type_name(j.type), body_name(model, j.body_i),
+               body_name(model, j.body_j), j.rows(), j.rows() > 1 ? "s" : "");
+  fmt::print("force elements ({}):", model.forces.size());
+  for (const auto& f : model.forces) fmt::print(" {}", f->name());
+  fmt::print("\noutputs ({}):", model.outputs.size());
+  for (const auto& o : model.outputs) fmt::print(" {}", o.name);
+  fmt::print("\n");
+
+  mbs::AssemblyReport rep;
+  mbs::State x = mbs::assemble(model, 0.0, &rep);
+  print_assembly(model, rep);
+  mbs::Workspace ws(model);
+  mbs::evaluate_constraints(model, 0.0, x, ws);
+  Eigen::Index rank = 0;
+  if (model.n_constraints() > 0) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(ws.Cq);
+    lu.setThreshold(1e-10);
+    rank = lu.rank();
+  }
+  fmt::print("degrees of freedom: {}", model.n_coords() - rank);
+  if (rank < model.n_constraints()) fmt::print(" ({} redundant constraint equation(s)!)", model.n_constraints() - rank);
+  fmt::print("\n");
+  mbs::accelerations(model, 0.0, x, ws);  // throws if the system matrix is singular
+  fmt::print("ok\n");
+  return 0;
+}
+
+struct SimulateArgs {
+  std::string model, out;
+  double t_end = -1, sample = -1, rtol = 1e-6, atol = 1e-8, steady_from = -1, max_step = 0;
+  bool no_centripetal = false, from_equilibrium = false;
+  std::string integrator = "rk";
+};
+
+int cmd_simulate(const SimulateArgs& a) {
+  mbs::Model model = io::load_model(a.model);
+  if (a.no_centripetal) model.options.centripetal = false;
+  const double t_end = a.t_end > 0 ? a.t_end : model.options.t_end;
+  const double dt = a.sample > 0 ? a.sample : model.options.sample;
+  solve::IntegratorOptions opt;
+  opt.method = solve::parse_method(a.integrator);
+  opt.rtol = a.rtol;
+  opt.atol = a.atol;
+  opt.max_step = a.max_step;
+
+  mbs::AssemblyReport rep;
+  mbs::State x = mbs::assemble(model, 0.0, &rep);
+  if (rep.initial_residual > 1e-9) print_assembly(model, rep);
+  if (a.from_equilibrium) {
+    mbs::EquilibriumReport eq;
+    mbs::static_equilibrium(model, 0.0, x, &eq);
+    fmt::print("static equilibrium: {} iteration(s), largest move {:.4g} on {}\n", eq.iterations, eq.max_move,
+               eq.largest >= 0 ? model.coord_name(eq.largest) : "-");
+  }
+
+  std::FILE* out = nullptr;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
+  if (!a.out.empty()) {
+    file.reset(std::fopen(a.out.c_str(), "w"));
+    if (!file) throw std::runtime_error(fmt::format("cannot write '{}'", a.out));
+    out = file.get();
+  } else {
+    out = stdout;
+  }
+  fmt::print(out, "t");
+  for (const auto& o : model.outputs) fmt::print(out, ",{}", o.name);
+  fmt::print(out, "\n");
+
+  const std::size_t no = model.outputs.size();
+  std::vector<double> first(no, 0), lo(no, INFINITY), hi(no, -INFINITY), sum(no, 0);
+  long n_steady = 0;
+  const bool progress = isatty(STDERR_FILENO) && a.out.size() > 0;
+  double next_report = 0;
+  std::string line;
+  auto observer = [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
+    line.clear();
+    fmt::format_to(std::back_inserter(line), "{:.10g}", t);
+    const bool steady = a.steady_from >= 0 && t >= a.steady_from - 1e-12;
+    for (std::size_t k = 0; k < no; ++k) {
+      double v = mbs::evaluate_output(model.outputs[k], model, t, s, ws);
+      fmt::format_to(std::back_inserter(line), ",{:.10g}", v);
+      if (t == 0.0) first[k] = v;
+      if (steady) lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v), sum[k] += v;
+    }
+    n_steady += steady;
+    line += '\n';
+    std::fputs(line.c_str(), out);
+    if (progress && t >= next_report) {
+      fmt::print(stderr, "\r  t = {:.4g} / {:.4g} s ({:3.0f} %)", t, t_end, 100 * t / t_end);
+      next_report += t_end / 50;
+    }
+  };
+  bool need_acc = false;
+  for (const auto& o : model.outputs) need_acc = need_acc || mbs::needs_accelerations(o);
+  solve::RunStats st = solve::integrate(model, x, 0.0, t_end, dt, opt, observer, need_acc);
+  if (progress) fmt::print(stderr, "\r{:60}\r", "");
+  std::FILE* info = a.out.empty() ? stderr : stdout;
+  fmt::print(info,
+             "simulated {} to t = {:g} s: {} steps, {} RHS evaluations, wall {:.3f} s, "
+             "max constraint violation {:.3g} (velocity {:.3g}); integrator {}, rtol {:g}, atol {:g}, centripetal {}\n",
+             model.name, t_end, st.steps, st.rhs_evals, st.wall_s, st.max_violation, st.max_velocity_violation,
+             solve::method_name(opt.method), opt.rtol, opt.atol, model.options.centripetal ? "on" : "off");
+  if (a.steady_from >= 0 && n_steady > 0) {
+    fmt::print(info, "steady state t >= {:g} s ({} samples):\n", a.steady_from, n_steady);
+    fmt::print(info, "  {:<14} {:>14} {:>14} {:>14} {:>14} {:>14}\n", "output", "initial", "min", "max", "peak-to-peak",
+               "mean-initial");
+    for (std::size_t k = 0; k < no; ++k)
+      fmt::print(info, "  {:<14} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g}\n", model.outputs[k].name, first[k],
+                 lo[k], hi[k], hi[k] - lo[k], sum[k] / static_cast<double>(n_steady) - first[k]);
+  }
+  if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
+  app.require_subcommand(1);
+
+  std::string check_model;
+  auto* check = app.add_subcommand("check", "Validate and assemble a model; print bodies, constraints and DOF");
+  check->add_option("model", check_model, "Model file (YAML)")->required();
+
+  SimulateArgs sa;
+  auto* sim = app.add_subcommand("simulate", "Time simulation; writes a CSV of the model's outputs");
+  sim->add_option("model", sa.model, "Model file (YAML)")->required();
+  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)");
+  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)");
+  sim->add_option("--out", sa.out, "CSV file to write (default: standard output)");
+  sim->add_flag("--no-centripetal", sa.no_centripetal, "Switch off the inerter centripetal correction (eq. 3.8)");
+  sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str();
+  sim->add_option("--atol", sa.atol, "Absolute tolerance (m, rad, m/s, rad/s)")->capture_default_str();
+  sim->add_option("--integrator", sa.integrator, "rk (explicit Dormand-Prince) or bdf (CVODE BDF, stiff)")
+      ->check(CLI::IsMember({"rk", "bdf"}))
+      ->capture_default_str();
+  sim->add_option("--max-step", sa.max_step, "Largest integrator step, s (0 = unlimited)");
+  sim->add_flag("--from-equilibrium", sa.from_equilibrium, "Start from the static equilibrium under all loads");
+  sim->add_option("--steady-from", sa.steady_from, "Print min/max/peak-to-peak/mean of every output for t >= T");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (check->parsed()) return cmd_check(check_model);
+    if (sim->parsed()) return cmd_simulate(sa);
+  } catch (const ModelError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  } catch (const NumericalError& e) {
+    fmt::print(stderr, "numerical failure: {}\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,19 @@
+#pragma once
+// Typed errors. Every error message names what failed and the quantities involved.
+#include <stdexcept>
+#include <string>
+
+namespace inerta {
+
+/// Bad input in a model or study file: "file:line: key: what is wrong; expected ...".
+struct ModelError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Numerical failure (assembly not converging, singular constraints, integrator failure, ...).
+/// The message carries the simulated time and the quantities involved.
+struct NumericalError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace inerta

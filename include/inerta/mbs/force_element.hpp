@@ -1,0 +1,35 @@
+#pragma once
+// One small uniform interface for every force element (design.md, principle 3): an element adds
+// its generalised force into Workspace::Q and, for inerters, its mass term into Workspace::M
+// (eq. 3.33); it never overwrites them. Each element reports its stored energy and the power it
+// delivers, so that d/dt(T + Σ energy) = Σ power holds for any model without driven constraints.
+#include <string>
+
+namespace inerta::mbs {
+
+struct Model;
+struct State;
+struct Workspace;
+
+class ForceElement {
+ public:
+  explicit ForceElement(std::string name) : name_(std::move(name)) {}
+  virtual ~ForceElement() = default;
+  const std::string& name() const { return name_; }
+
+  /// Adds the generalised force (and inerter mass term) at (t, state).
+  virtual void add(const Model& model, double t, const State& x, Workspace& ws) const = 0;
+  /// Stored energy: spring potential, ½ b l̇² of an inerter, potential of gravity / constant force.
+  virtual double energy(const Model&, double, const State&) const { return 0.0; }
+  /// Power delivered to the bodies beyond −d(energy)/dt: −c l̇² for a damper, F·v for a point force.
+  virtual double power(const Model&, double, const State&) const { return 0.0; }
+  /// Scalar force for outputs (axial tension, joint moment or applied force), using ws.qdd.
+  virtual double force(const Model& model, double t, const State& x, const Workspace& ws) const = 0;
+  /// Strut length or joint relative angle; NaN where it has no meaning.
+  virtual double length(const Model& model, const State& x) const;
+
+ private:
+  std::string name_;
+};
+
+}  // namespace inerta::mbs

@@ -1,0 +1,54 @@
+#pragma once
+// Joints as holonomic constraints C(q, t) = 0 (spec/02 §2.1, eqs. 4.1–4.4).
+#include <string>
+
+#include "inerta/mbs/kinematics.hpp"
+#include "inerta/mbs/time_function.hpp"
+
+namespace inerta::mbs {
+
+constexpr int kGround = -1;
+
+enum class JointType {
+  Revolute,   ///< r_Pi − r_Pj = 0 (eqs. 6.29–6.36)
+  Prismatic,  ///< θ_j − θ_i − θ0 = 0;  (r_Pj − r_Pi)·(A_i n̄⊥) = 0
+  Fixed,      ///< r_Pi − r_Pj = 0 with P = j's centre of mass;  θ_j − θ_i − θ0 = 0 (eq. 6.28)
+  Driving,    ///< coordinate(s) of body j or of point P_j = value0 + f(t)
+};
+
+struct Joint {
+  std::string name;
+  JointType type = JointType::Revolute;
+  int body_i = kGround, body_j = kGround;
+  Vec2 u_i = Vec2::Zero(), u_j = Vec2::Zero();  ///< joint points in body frames (global if ground)
+  Vec2 axis = Vec2(1, 0);                       ///< prismatic: unit axis in body i's frame
+  double theta0 = 0;                            ///< prismatic, fixed: θ_j − θ_i locked value
+  // Driving: component 0 = x, 1 = y of point P_j (u_j), or 2 = θ_j; value = value0 + f(t).
+  int component = 0;
+  double value0 = 0;
+  TimeFunction motion;
+  int row = 0;  ///< first constraint row (set by Model::finalize)
+
+  int rows() const {
+    switch (type) {
+      case JointType::Revolute: return 2;
+      case JointType::Prismatic: return 2;
+      case JointType::Fixed: return 3;
+      case JointType::Driving: return 1;
+    }
+    return 0;
+  }
+};
+
+/// One constraint equation of a joint, evaluated at (q, q̇, t):
+///   C, C_t, the gradients wrt q_i and q_j, and γ = Q_d of eq. 4.3 (C_q q̈ = γ).
+struct ConstraintRow {
+  double C = 0, Ct = 0, gamma = 0;
+  Vec3 gi = Vec3::Zero(), gj = Vec3::Zero();
+};
+
+/// Evaluates the rows of joint `jt` given both bodies' frames (identity for ground).
+/// Returns the number of rows written into `rows` (at most 3).
+int evaluate_joint(const Joint& jt, double t, const BodyFrame& fi, const BodyFrame& fj, ConstraintRow rows[3]);
+
+}  // namespace inerta::mbs

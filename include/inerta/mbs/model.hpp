@@ -1,0 +1,74 @@
+#pragma once
+// The immutable planar multibody model (spec/02). Algorithms read `const Model&` and write
+// into a State or Workspace (design.md, principle 1).
+#include <Eigen/Dense>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "inerta/mbs/force_element.hpp"
+#include "inerta/mbs/joint.hpp"
+#include "inerta/mbs/kinematics.hpp"
+#include "inerta/mbs/output.hpp"
+
+namespace inerta::mbs {
+
+/// Rigid body; coordinates q = [x y θ] of the centre of mass (centroidal frame).
+struct Body {
+  std::string name;
+  double mass = 0;     ///< kg
+  double inertia = 0;  ///< kg·m² about the centre of mass
+  Vec3 q0 = Vec3::Zero();   ///< tabulated initial position [x y θ]
+  Vec3 qd0 = Vec3::Zero();  ///< initial velocity
+};
+
+/// Body-fixed point. body = kGround means a fixed point with u in global coordinates.
+struct Marker {
+  std::string name;  ///< "body.point"
+  int body = kGround;
+  Vec2 u = Vec2::Zero();
+};
+
+struct Options {
+  bool gravity = true;
+  Vec2 g = Vec2(0.0, -9.81);  ///< m/s², spec README
+  double alpha = 5.0;         ///< Baumgarte, eq. 4.11
+  double beta = 5.0;
+  bool centripetal = true;    ///< model-wide switch of the inerter correction (eq. 3.9)
+  double t_end = 10.0;        ///< default simulation end time, s
+  double sample = 0.01;       ///< default output sampling interval, s
+};
+
+struct Model {
+  std::string name;
+  std::string source;  ///< file the model was read from (for messages)
+  Options options;
+  std::vector<Body> bodies;
+  std::vector<Marker> markers;
+  std::vector<Joint> joints;
+  std::vector<std::shared_ptr<const ForceElement>> forces;
+  std::vector<Output> outputs;
+  std::vector<int> held;  ///< coordinates held fixed during assembly
+
+  int n_coords() const { return 3 * static_cast<int>(bodies.size()); }
+  int n_constraints() const { return n_constraints_; }
+  int dof() const { return n_coords() - n_constraints_; }
+
+  int find_body(const std::string& name) const;    ///< index, kGround for "ground", -2 if unknown
+  int find_marker(const std::string& name) const;  ///< -1 if unknown
+  int find_joint(const std::string& name) const;
+  int find_force(const std::string& name) const;
+  std::string coord_name(int k) const;  ///< "bar1.theta"
+
+  /// Assigns constraint rows; call after the joints are final.
+  void finalize();
+
+  /// Initial state from the bodies' tabulated q0, qd0 (not yet assembled).
+  Eigen::VectorXd q0() const;
+  Eigen::VectorXd qd0() const;
+
+ private:
+  int n_constraints_ = 0;
+};
+
+}  // namespace inerta::mbs

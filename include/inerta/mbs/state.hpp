@@ -1,0 +1,56 @@
+#pragma once
+// Mutable State (q, q̇) and Workspace (every buffer an evaluation needs; allocated once).
+#include <Eigen/Dense>
+#include <vector>
+
+#include "inerta/mbs/kinematics.hpp"
+
+namespace inerta::mbs {
+
+struct Model;
+
+struct State {
+  Eigen::VectorXd q, qd;
+  /// Body coordinates [x y θ] (zeros for ground, body < 0).
+  Vec3 q_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(q.segment<3>(3 * body)); }
+  Vec3 qd_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(qd.segment<3>(3 * body)); }
+  BodyFrame frame(int body) const { return body < 0 ? BodyFrame{} : BodyFrame::of(q_of(body), qd_of(body)); }
+};
+
+/// Scratch space of `accelerations` (eq. 4.12): sized for one model, reused for every call.
+struct Workspace {
+  explicit Workspace(const Model& model);
+
+  /// Kinematics stage: every body's frame (coordinates, cos θ, sin θ) at x.
+  void set_state(const State& x);
+  const BodyFrame& frame(int body) const { return body < 0 ? ground_ : frames[static_cast<std::size_t>(body)]; }
+  std::vector<BodyFrame> frames;
+
+  Eigen::MatrixXd M;       ///< M + M_I (eq. 3.33), n×n
+  Eigen::VectorXd Q;       ///< Q_e + Q_Iv, n
+  Eigen::VectorXd C, Ct;   ///< constraint values and ∂C/∂t, m
+  Eigen::MatrixXd Cq;      ///< constraint Jacobian, m×n
+  Eigen::VectorXd gamma;   ///< Q_d of eq. 4.3, m
+  // Schur-complement solve of eq. 4.12 when M + M_I is positive definite (the usual case):
+  Eigen::LLT<Eigen::MatrixXd> llt_M;  ///< M + M_I = L Lᵀ
+  Eigen::MatrixXd Y;                  ///< L⁻¹ C_qᵀ, n×m
+  Eigen::MatrixXd S;                  ///< C_q (M + M_I)⁻¹ C_qᵀ = Yᵀ Y, m×m
+  Eigen::LLT<Eigen::MatrixXd> llt_S;
+  Eigen::VectorXd z, c;               ///< L⁻¹ Q (n), constraint right-hand side (m)
+  // Fallback for a singular M + M_I (e.g. a body without inertia whose rotation is constrained):
+  Eigen::MatrixXd K;                  ///< system matrix of eq. 4.12, (n+m)²
+  Eigen::VectorXd rhs, sol;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::VectorXd qdd;     ///< result: accelerations
+  Eigen::VectorXd lambda;  ///< result: Lagrange multipliers
+
+  /// Adds f·J to Q for a 6-vector over [q_i; q_j] (ground parts skipped).
+  void add_Q(int body_i, int body_j, const Vec6& f);
+  /// Adds b·J Jᵀ to M (rank-one inerter mass term, eq. 3.33).
+  void add_M(int body_i, int body_j, const Vec6& J, double b);
+
+ private:
+  BodyFrame ground_;
+};
+
+}  // namespace inerta::mbs

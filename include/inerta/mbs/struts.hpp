@@ -1,0 +1,90 @@
+#pragma once
+// Uniaxial struts between two markers (spec/01 §1.1, spec/02 §2.3). Tension is positive; the
+// generalised force of a tension F on [q_i; q_j] is Q = −F Jᵀ with J = êᵀ H (eqs. 6.40–6.44).
+#include "inerta/mbs/force_element.hpp"
+#include "inerta/mbs/kinematics.hpp"
+
+namespace inerta::mbs {
+
+/// Common geometry of a strut from marker P_i (body i) to P_j (body j).
+class Strut : public ForceElement {
+ public:
+  Strut(std::string name, int body_i, Vec2 u_i, int body_j, Vec2 u_j)
+      : ForceElement(std::move(name)), body_i_(body_i), body_j_(body_j), u_i_(u_i), u_j_(u_j) {}
+  StrutKinematics kinematics(const State& x) const;
+  StrutKinematics kinematics(const Workspace& ws) const;  ///< from the frames of ws.set_state
+  double length(const Model&, const State& x) const override;
+  int body_i() const { return body_i_; }
+  int body_j() const { return body_j_; }
+
+ protected:
+  /// Q += −F Jᵀ.
+  void add_tension(double F, const StrutKinematics& s, Workspace& ws) const;
+
+ private:
+  int body_i_, body_j_;
+  Vec2 u_i_, u_j_;
+};
+
+/// Spring, eqs. 3.1/3.5: F = k (l − L0).
+class Spring : public Strut {
+ public:
+  Spring(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double k, double free_length)
+      : Strut(std::move(name), bi, ui, bj, uj), k_(k), L0_(free_length) {}
+  void add(const Model&, double t, const State& x, Workspace& ws) const override;
+  double energy(const Model&, double t, const State& x) const override;  // ½ k (l − L0)²
+  double force(const Model&, double t, const State& x, const Workspace& ws) const override;
+  double free_length() const { return L0_; }
+
+ private:
+  double k_, L0_;
+};
+
+/// Damper, eqs. 3.2/3.6–3.7: F = c l̇.
+class Damper : public Strut {
+ public:
+  Damper(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double c)
+      : Strut(std::move(name), bi, ui, bj, uj), c_(c) {}
+  void add(const Model&, double t, const State& x, Workspace& ws) const override;
+  double power(const Model&, double t, const State& x) const override;  // −c l̇²
+  double force(const Model&, double t, const State& x, const Workspace& ws) const override;
+
+ private:
+  double c_;
+};
+
+/// Inerter, eq. 3.20: F = b l̈ = b { (H q̈ + a_n)·ê + [ṙ·ṙ − (ṙ·ê)²]/l }. The q̈ part enters the
+/// mass matrix, M_I = b Jᵀ J, and the rest the right-hand side, Q_Iv (eqs. 3.31–3.33).
+/// Without the centripetal correction (eq. 3.8, the 1D textbook form) F = b (r̈·ê).
+class Inerter : public Strut {
+ public:
+  Inerter(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double b, bool centripetal = true)
+      : Strut(std::move(name), bi, ui, bj, uj), b_(b), centripetal_(centripetal) {}
+  /// Correction active: this element's switch and the model-wide switch.
+  bool centripetal(const Model& model) const;
+  void add(const Model& model, double t, const State& x, Workspace& ws) const override;
+  double energy(const Model&, double t, const State& x) const override;  // ½ b l̇²
+  /// Without the correction the element is not conservative: power b·[ṙ·ṙ − l̇²]/l·l̇.
+  double power(const Model& model, double t, const State& x) const override;
+  double force(const Model& model, double t, const State& x, const Workspace& ws) const override;
+
+ private:
+  double b_;
+  bool centripetal_;
+};
+
+/// Constant axial force (pneumatic actuator's static force F_c, spec/02 §2.3); tension positive,
+/// so a pushing actuator has force < 0. Potential F·l.
+class AxialForce : public Strut {
+ public:
+  AxialForce(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double F)
+      : Strut(std::move(name), bi, ui, bj, uj), F_(F) {}
+  void add(const Model&, double t, const State& x, Workspace& ws) const override;
+  double energy(const Model&, double t, const State& x) const override;
+  double force(const Model&, double, const State&, const Workspace&) const override { return F_; }
+
+ private:
+  double F_;
+};
+
+}  // namespace inerta::mbs

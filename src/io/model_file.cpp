@@ -1,0 +1,487 @@
+#include "inerta/io/model_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "inerta/error.hpp"
+#include "inerta/mbs/applied_forces.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/struts.hpp"
+
+namespace inerta::io {
+
+using mbs::Vec2;
+using mbs::Vec3;
+
+namespace {
+
+// Reading helpers that turn every problem into "file:line: key: what; expected ...".
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& key, const std::string& what) const {
+    std::string where = file_;
+    if (at.IsDefined() && at.Mark().line >= 0) where += fmt::format(":{}", at.Mark().line + 1);
+    throw ModelError(fmt::format("{}: {}{}", where, key.empty() ? "" : "'" + key + "': ", what));
+  }
+
+  void keys(const YAML::Node& map, const std::string& what, std::initializer_list<const char*> allowed) const {
+    if (!map.IsMap()) fail(map, what, "expected a mapping (key: value pairs)");
+    for (auto it = map.begin(); it != map.end(); ++it) {
+      std::string k = it->first.as<std::string>();
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || k == a;
+      if (!ok) {
+        std::string list;
+        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        fail(it->first, k, fmt::format("unknown key in {}; expected one of: {}", what, list));
+      }
+    }
+  }
+
+  YAML::Node need(const YAML::Node& map, const char* key, const std::string& what) const {
+    YAML::Node n = map[key];
+    if (!n.IsDefined() || n.IsNull()) fail(map, key, fmt::format("missing in {}", what));
+    return n;
+  }
+
+  double number(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsScalar()) fail(n, key, "expected a number");
+    try {
+      return n.as<double>();
+    } catch (const YAML::Exception&) {
+      fail(n, key, fmt::format("expected a number, got '{}'", n.Scalar()));
+    }
+  }
+  double number(const YAML::Node& map, const char* key, const std::string& what) const {
+    return number(need(map, key, what), key);
+  }
+  double number_or(const YAML::Node& map, const char* key, double fallback) const {
+    YAML::Node n = map[key];
+    return n.IsDefined() && !n.IsNull() ? number(n, key) : fallback;
+  }
+  double nonnegative(const YAML::Node& map, const char* key, const std::string& what) const {
+    double v = number(map, key, what);
+    if (!(v >= 0)) fail(map[key], key, fmt::format("must be >= 0 (got {}) in {}", v, what));
+    return v;
+  }
+  bool boolean(const YAML::Node& n, const std::string& key) const {
+    try {
+      return n.as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(n, key, "expected true or false");
+    }
+  }
+  std::string text(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsScalar()) fail(n, key, "expected a text value");
+    return n.Scalar();
+  }
+  std::string text(const YAML::Node& map, const char* key, const std::string& what) const {
+    return text(need(map, key, what), key);
+  }
+  Vec2 vec2(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsSequence() || n.size() != 2) fail(n, key, "expected a list of two numbers [x, y]");
+    return {number(n[0], key), number(n[1], key)};
+  }
+  // Angle from `key` (rad) or `key_deg` (degrees), not both.
+  double angle(const YAML::Node& map, const std::string& key, double fallback) const {
+    YAML::Node r = map[key], d = map[key + "_deg"];
+    if (r.IsDefined() && d.IsDefined()) fail(d, key + "_deg", fmt::format("give either {} (rad) or {}_deg, not both", key, key));
+    if (r.IsDefined()) return number(r, key);
+    if (d.IsDefined()) return number(d, key + "_deg") * std::numbers::pi / 180.0;
+    return fallback;
+  }
+
+ private:
+  std::string file_;
+};
+
+mbs::TimeFunction time_function(const Reader& rd, const YAML::Node& n, const std::string& key) {
+  if (n.IsScalar()) return mbs::TimeFunction::constant(rd.number(n, key));
+  rd.keys(n, key, {"type", "value", "amplitude", "frequency", "phase", "phase_deg", "offset", "points"});
+  std::string type = rd.text(n, "type", key);
+  if (type == "constant") return mbs::TimeFunction::constant(rd.number(n, "value", key));
+  if (type == "sine") {
+    double f = rd.number(n, "frequency", key);
+    if (!(f >= 0)) rd.fail(n["frequency"], "frequency", "must be >= 0 (Hz)");
+    return mbs::TimeFunction::sine(rd.number(n, "amplitude", key), f, rd.angle(n, "phase", 0.0),
+                                   rd.number_or(n, "offset", 0.0));
+  }
+  if (type == "table") {
+    YAML::Node pts = rd.need(n, "points", key);
+    if (!pts.IsSequence() || pts.size() < 1) rd.fail(pts, "points", "expected a list of [t, value] pairs");
+    mbs::TimeFunction f;
+    f.kind = mbs::TimeFunction::Kind::Table;
+    for (const auto& p : pts) {
+      Vec2 tv = rd.vec2(p, "points");
+      if (!f.t.empty() && !(tv.x() > f.t.back())) rd.fail(p, "points", "times must be strictly increasing");
+      f.t.push_back(tv.x());
+      f.v.push_back(tv.y());
+    }
+    return f;
+  }
+  rd.fail(n["type"], "type", fmt::format("unknown function type '{}'; expected constant, sine or table", type));
+}
+
+struct Loader {
+  Reader rd;
+  mbs::Model model;
+
+  int marker(const YAML::Node& n, const std::string& key) const {
+    std::string name = rd.text(n, key);
+    int k = model.find_marker(name);
+    if (k < 0) {
+      auto dot = name.find('.');
+      std::string body = dot == std::string::npos ? name : name.substr(0, dot);
+      if (model.find_body(body) == -2)
+        rd.fail(n, key, fmt::format("unknown body '{}' in marker '{}'; markers are written body.marker", body, name));
+      rd.fail(n, key, fmt::format("unknown marker '{}'; define it under the body's markers (body.cm is the centre of mass)", name));
+    }
+    return k;
+  }
+  int body(const YAML::Node& n, const std::string& key) const {
+    std::string name = rd.text(n, key);
+    int b = model.find_body(name);
+    if (b == -2) rd.fail(n, key, fmt::format("unknown body '{}'", name));
+    return b;
+  }
+  std::pair<int, int> marker_pair(const YAML::Node& map, const std::string& what) const {
+    YAML::Node m = rd.need(map, "markers", what);
+    if (!m.IsSequence() || m.size() != 2) rd.fail(m, "markers", "expected a list of two markers [body_i.point, body_j.point]");
+    return {marker(m[0], "markers"), marker(m[1], "markers")};
+  }
+  const mbs::Marker& mk(int k) const { return model.markers[static_cast<std::size_t>(k)]; }
+  Vec3 q_of(const Eigen::VectorXd& q, int b) const { return b < 0 ? Vec3::Zero() : Vec3(q.segment<3>(3 * b)); }
+
+  void names_unique(const YAML::Node& list, const std::string& what) const {
+    std::set<std::string> seen;
+    for (const auto& item : list) {
+      std::string name = rd.text(item, "name", what);
+      if (!seen.insert(name).second) rd.fail(item["name"], "name", fmt::format("duplicate {} name '{}'", what, name));
+    }
+  }
+
+  void options(const YAML::Node& n) {
+    if (!n.IsDefined()) return;
+    rd.keys(n, "options", {"gravity", "baumgarte", "centripetal", "t_end", "sample"});
+    if (YAML::Node g = n["gravity"]; g.IsDefined()) {
+      if (g.IsSequence()) model.options.g = rd.vec2(g, "gravity");
+      else model.options.gravity = rd.boolean(g, "gravity");
+    }
+    if (YAML::Node b = n["baumgarte"]; b.IsDefined()) {
+      rd.keys(b, "baumgarte", {"alpha", "beta"});
+      model.options.alpha = rd.number_or(b, "alpha", 5.0);
+      model.options.beta = rd.number_or(b, "beta", 5.0);
+      if (model.options.alpha < 0 || model.options.beta < 0) rd.fail(b, "baumgarte", "alpha and beta must be >= 0");
+    }
+    if (n["centripetal"].IsDefined()) model.options.centripetal = rd.boolean(n["centripetal"], "centripetal");
+    model.options.t_end = rd.number_or(n, "t_end", model.options.t_end);
+    model.options.sample = rd.number_or(n, "sample", model.options.sample);
+    if (!(model.options.t_end > 0)) rd.fail(n["t_end"], "t_end", "must be > 0 (s)");
+    if (!(model.options.sample > 0)) rd.fail(n["sample"], "sample", "must be > 0 (s)");
+  }
+
+  void markers_of(const YAML::Node& n, int body, const std::string& body_name) {
+    if (!n.IsDefined()) return;
+    if (!n.IsMap()) rd.fail(n, "markers", "expected a mapping name: [x, y]");
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      std::string name = body_name + "." + it->first.as<std::string>();
+      if (model.find_marker(name) >= 0) rd.fail(it->first, "markers", fmt::format("duplicate marker '{}'", name));
+      model.markers.push_back({name, body, rd.vec2(it->second, name)});
+    }
+  }
+
+  void bodies(const YAML::Node& n) {
+    if (!n.IsDefined()) return;
+    if (!n.IsSequence()) rd.fail(n, "bodies", "expected a list of bodies");
+    names_unique(n, "body");
+    for (const auto& b : n) {
+      rd.keys(b, "body", {"name", "mass", "inertia", "position", "angle", "angle_deg", "velocity", "angular_velocity", "markers"});
+      mbs::Body body;
+      body.name = rd.text(b, "name", "body");
+      if (body.name == "ground" || body.name.find('.') != std::string::npos)
+        rd.fail(b["name"], "name", "a body may not be called 'ground' or contain '.'");
+      std::string what = "body '" + body.name + "'";
+      body.mass = rd.nonnegative(b, "mass", what);
+      body.inertia = rd.nonnegative(b, "inertia", what);
+      Vec2 r = rd.vec2(rd.need(b, "position", what), "position");
+      body.q0 = Vec3(r.x(), r.y(), rd.angle(b, "angle", 0.0));
+      if (b["velocity"].IsDefined()) body.qd0.head<2>() = rd.vec2(b["velocity"], "velocity");
+      body.qd0.z() = rd.number_or(b, "angular_velocity", 0.0);
+      model.bodies.push_back(body);
+      int index = static_cast<int>(model.bodies.size()) - 1;
+      model.markers.push_back({body.name + ".cm", index, Vec2::Zero()});
+      markers_of(b["markers"], index, body.name);
+    }
+  }
+
+  void joints(const YAML::Node& n) {
+    if (!n.IsDefined()) return;
+    if (!n.IsSequence()) rd.fail(n, "joints", "expected a list of joints");
+    names_unique(n, "joint");
+    const Eigen::VectorXd q = model.q0();
+    for (const auto& j : n) {
+      mbs::Joint jt;
+      jt.name = rd.text(j, "name", "joint");
+      std::string what = "joint '" + jt.name + "'";
+      std::string type = rd.text(j, "type", what);
+      if (type == "revolute" || type == "prismatic") {
+        if (type == "revolute") rd.keys(j, what, {"name", "type", "markers"});
+        else rd.keys(j, what, {"name", "type", "markers", "axis"});
+        auto [mi, mj] = marker_pair(j, what);
+        jt.type = type == "revolute" ? mbs::JointType::Revolute : mbs::JointType::Prismatic;
+        jt.body_i = mk(mi).body, jt.body_j = mk(mj).body;
+        jt.u_i = mk(mi).u, jt.u_j = mk(mj).u;
+        if (jt.type == mbs::JointType::Prismatic) {
+          jt.axis = rd.vec2(rd.need(j, "axis", what), "axis");
+          if (!(jt.axis.norm() > 0)) rd.fail(j["axis"], "axis", "must be a non-zero vector");
+          jt.axis.normalize();
+          jt.theta0 = q_of(q, jt.body_j).z() - q_of(q, jt.body_i).z();
+        }
+      } else if (type == "fixed") {
+        rd.keys(j, what, {"name", "type", "bodies"});
+        YAML::Node bs = rd.need(j, "bodies", what);
+        if (!bs.IsSequence() || bs.size() != 2) rd.fail(bs, "bodies", "expected a list of two bodies [body_i, body_j]");
+        jt.type = mbs::JointType::Fixed;
+        jt.body_i = body(bs[0], "bodies"), jt.body_j = body(bs[1], "bodies");
+        Vec3 qi = q_of(q, jt.body_i), qj = q_of(q, jt.body_j);
+        jt.u_i = mbs::rotate(-qi.z(), qj.head<2>() - qi.head<2>());  // j's centre in i's frame
+        jt.theta0 = qj.z() - qi.z();
+      } else if (type == "driving") {
+        rd.keys(j, what, {"name", "type", "body", "marker", "coordinate", "motion"});
+        jt.type = mbs::JointType::Driving;
+        std::string c = rd.text(j, "coordinate", what);
+        if (j["marker"].IsDefined() == j["body"].IsDefined())
+          rd.fail(j, what, "give either body (a body coordinate) or marker (a point coordinate)");
+        if (j["body"].IsDefined()) {
+          jt.body_j = body(j["body"], "body");
+          if (jt.body_j < 0) rd.fail(j["body"], "body", "ground cannot be driven");
+          if (c != "x" && c != "y" && c != "theta") rd.fail(j["coordinate"], "coordinate", "expected x, y or theta");
+        } else {
+          int m = marker(j["marker"], "marker");
+          jt.body_j = mk(m).body, jt.u_j = mk(m).u;
+          if (jt.body_j < 0) rd.fail(j["marker"], "marker", "a ground marker cannot be driven");
+          if (c != "x" && c != "y") rd.fail(j["coordinate"], "coordinate", "expected x or y for a point");
+        }
+        jt.component = c == "x" ? 0 : c == "y" ? 1 : 2;
+        Vec3 qj = q_of(q, jt.body_j);
+        jt.value0 = jt.component == 2 ? qj.z() : (qj.head<2>() + mbs::rotate(qj.z(), jt.u_j))[jt.component];
+        jt.motion = time_function(rd, rd.need(j, "motion", what), "motion");
+      } else {
+        rd.fail(j["type"], "type", fmt::format("unknown joint type '{}'; expected revolute, prismatic, fixed or driving", type));
+      }
+      if (jt.type != mbs::JointType::Driving && jt.body_i == jt.body_j)
+        rd.fail(j, what, jt.body_i < 0 ? "joins ground to ground" : "joins a body to itself; expected two different bodies");
+      model.joints.push_back(jt);
+    }
+  }
+
+  void forces(const YAML::Node& n, const Eigen::VectorXd& q_init) {
+    if (model.options.gravity) model.forces.push_back(std::make_shared<mbs::Gravity>(model.options.g));
+    if (!n.IsDefined()) return;
+    if (!n.IsSequence()) rd.fail(n, "forces", "expected a list of force elements");
+    names_unique(n, "force element");
+    mbs::State x0{q_init, Eigen::VectorXd::Zero(q_init.size())};
+    for (const auto& f : n) {
+      std::string name = rd.text(f, "name", "force element");
+      if (name == "gravity") rd.fail(f["name"], "name", "'gravity' is reserved (switch it in options)");
+      std::string what = "force element '" + name + "'";
+      std::string type = rd.text(f, "type", what);
+      if (type == "spring" || type == "damper" || type == "inerter" || type == "axial_force") {
+        auto [mi, mj] = marker_pair(f, what);
+        int bi = mk(mi).body, bj = mk(mj).body;
+        Vec2 ui = mk(mi).u, uj = mk(mj).u;
+        if (bi == bj) rd.fail(f["markers"], "markers", "both terminals are on the same body; a strut needs two bodies");
+        double l_init = mbs::Spring("", bi, ui, bj, uj, 0, 0).length(model, x0);
+        if (!(l_init > 0)) rd.fail(f["markers"], "markers", "the terminals coincide in the initial configuration (zero length)");
+        if (type == "spring") {
+          rd.keys(f, what, {"name", "type", "markers", "k", "free_length"});
+          double L0 = l_init;
+          YAML::Node fl = f["free_length"];
+          if (fl.IsDefined() && !(fl.IsScalar() && fl.Scalar() == "initial")) {
+            L0 = rd.number(fl, "free_length");
+            if (!(L0 >= 0)) rd.fail(fl, "free_length", "must be >= 0 (m) or 'initial'");
+          }
+          model.forces.push_back(std::make_shared<mbs::Spring>(name, bi, ui, bj, uj, rd.nonnegative(f, "k", what), L0));
+        } else if (type == "damper") {
+          rd.keys(f, what, {"name", "type", "markers", "c"});
+          model.forces.push_back(std::make_shared<mbs::Damper>(name, bi, ui, bj, uj, rd.nonnegative(f, "c", what)));
+        } else if (type == "inerter") {
+          rd.keys(f, what, {"name", "type", "markers", "b", "centripetal"});
+          bool corr = f["centripetal"].IsDefined() ? rd.boolean(f["centripetal"], "centripetal") : true;
+          model.forces.push_back(std::make_shared<mbs::Inerter>(name, bi, ui, bj, uj, rd.nonnegative(f, "b", what), corr));
+        } else {
+          rd.keys(f, what, {"name", "type", "markers", "force"});
+          model.forces.push_back(std::make_shared<mbs::AxialForce>(name, bi, ui, bj, uj, rd.number(f, "force", what)));
+        }
+      } else if (type == "rotational_spring" || type == "rotational_damper" || type == "rotational_spring_damper") {
+        rd.keys(f, what, {"name", "type", "joint", "k", "c", "angle0", "angle0_deg"});
+        std::string jn = rd.text(f, "joint", what);
+        int ji = model.find_joint(jn);
+        if (ji < 0) rd.fail(f["joint"], "joint", fmt::format("unknown joint '{}'", jn));
+        const mbs::Joint& jt = model.joints[static_cast<std::size_t>(ji)];
+        if (jt.type != mbs::JointType::Revolute)
+          rd.fail(f["joint"], "joint", fmt::format("joint '{}' is not revolute; expected a revolute joint", jn));
+        double k = type == "rotational_damper" ? 0.0 : rd.nonnegative(f, "k", what);
+        double c = type == "rotational_spring" ? rd.number_or(f, "c", 0.0) : rd.nonnegative(f, "c", what);
+        if (c < 0) rd.fail(f["c"], "c", "must be >= 0");
+        if (type == "rotational_damper" && (f["k"].IsDefined() || f["angle0"].IsDefined() || f["angle0_deg"].IsDefined()))
+          rd.fail(f, what, "a rotational_damper takes only c; use rotational_spring_damper for both");
+        double a_init = q_of(q_init, jt.body_j).z() - q_of(q_init, jt.body_i).z();
+        double a0 = a_init;
+        if (!(f["angle0"].IsDefined() && f["angle0"].IsScalar() && f["angle0"].Scalar() == "initial"))
+          a0 = rd.angle(f, "angle0", a_init);
+        model.forces.push_back(std::make_shared<mbs::RotationalSpringDamper>(name, jt.body_i, jt.body_j, k, a0, c));
+      } else if (type == "point_force") {
+        rd.keys(f, what, {"name", "type", "marker", "direction", "value"});
+        int m = marker(rd.need(f, "marker", what), "marker");
+        Vec2 d = rd.vec2(rd.need(f, "direction", what), "direction");
+        if (!(d.norm() > 0)) rd.fail(f["direction"], "direction", "must be a non-zero vector");
+        model.forces.push_back(std::make_shared<mbs::PointForce>(name, mk(m).body, mk(m).u, d,
+                                                                 time_function(rd, rd.need(f, "value", what), "value")));
+      } else {
+        rd.fail(f["type"], "type",
+                fmt::format("unknown force element type '{}'; expected spring, damper, inerter, axial_force, "
+                            "rotational_spring, rotational_damper, rotational_spring_damper or point_force", type));
+      }
+    }
+  }
+
+  int component(const YAML::Node& o, const std::string& what, std::initializer_list<const char*> names) const {
+    std::string c = rd.text(o, "component", what);
+    int k = 0;
+    for (const char* nm : names) {
+      if (c == nm) return k;
+      ++k;
+    }
+    std::string list;
+    for (const char* nm : names) list += std::string(list.empty() ? "" : ", ") + nm;
+    rd.fail(o["component"], "component", fmt::format("unknown component '{}'; expected {}", c, list));
+  }
+
+  void outputs(const YAML::Node& n) {
+    if (!n.IsDefined()) return;
+    if (!n.IsSequence()) rd.fail(n, "outputs", "expected a list of outputs");
+    names_unique(n, "output");
+    for (const auto& o : n) {
+      mbs::Output out;
+      out.name = rd.text(o, "name", "output");
+      if (out.name == "t" || out.name.find(',') != std::string::npos)
+        rd.fail(o["name"], "name", "an output may not be called 't' or contain ','");
+      std::string what = "output '" + out.name + "'";
+      std::string type = rd.text(o, "type", what);
+      auto element = [&] {
+        std::string e = rd.text(o, "element", what);
+        int k = model.find_force(e);
+        if (k < 0) rd.fail(o["element"], "element", fmt::format("unknown force element '{}'", e));
+        return k;
+      };
+      if (type == "coordinate") {
+        rd.keys(o, what, {"name", "type", "body", "component", "scale"});
+        out.kind = mbs::Output::Kind::Coordinate;
+        out.index = body(rd.need(o, "body", what), "body");
+        if (out.index < 0) rd.fail(o["body"], "body", "ground has no coordinates");
+        out.component = component(o, what, {"x", "y", "theta"});
+      } else if (type == "position" || type == "velocity" || type == "acceleration") {
+        rd.keys(o, what, {"name", "type", "marker", "component", "scale"});
+        out.kind = type == "position"   ? mbs::Output::Kind::Position
+                   : type == "velocity" ? mbs::Output::Kind::Velocity
+                                        : mbs::Output::Kind::Acceleration;
+        out.index = marker(rd.need(o, "marker", what), "marker");
+        out.component = component(o, what, {"x", "y"});
+      } else if (type == "force" || type == "length") {
+        rd.keys(o, what, {"name", "type", "element", "scale"});
+        out.kind = type == "force" ? mbs::Output::Kind::ElementForce : mbs::Output::Kind::ElementLength;
+        out.index = element();
+      } else if (type == "reaction" || type == "multiplier") {
+        rd.keys(o, what, {"name", "type", "joint", "component", "scale"});
+        std::string jn = rd.text(o, "joint", what);
+        out.index = model.find_joint(jn);
+        if (out.index < 0) rd.fail(o["joint"], "joint", fmt::format("unknown joint '{}'", jn));
+        if (type == "reaction") {
+          out.kind = mbs::Output::Kind::Reaction;
+          out.component = component(o, what, {"x", "y", "moment"});
+        } else {
+          out.kind = mbs::Output::Kind::Multiplier;
+          double c = rd.number(o, "component", what);
+          int rows = model.joints[static_cast<std::size_t>(out.index)].rows();
+          if (c != std::floor(c) || c < 0 || c >= rows)
+            rd.fail(o["component"], "component", fmt::format("expected an equation index 0..{}", rows - 1));
+          out.component = static_cast<int>(c);
+        }
+      } else {
+        rd.fail(o["type"], "type", fmt::format("unknown output type '{}'; expected coordinate, position, velocity, "
+                                               "acceleration, force, length, reaction or multiplier", type));
+      }
+      out.scale = rd.number_or(o, "scale", 1.0);
+      model.outputs.push_back(out);
+    }
+  }
+
+  void assembly(const YAML::Node& n) {
+    if (!n.IsDefined()) return;
+    rd.keys(n, "assembly", {"hold"});
+    YAML::Node h = n["hold"];
+    if (!h.IsDefined()) return;
+    if (!h.IsSequence()) rd.fail(h, "hold", "expected a list of coordinates such as [bar1.theta]");
+    for (const auto& c : h) {
+      std::string s = rd.text(c, "hold");
+      int k = -1;
+      for (int i = 0; i < model.n_coords(); ++i)
+        if (model.coord_name(i) == s) k = i;
+      if (k < 0) rd.fail(c, "hold", fmt::format("unknown coordinate '{}'; expected body.x, body.y or body.theta", s));
+      model.held.push_back(k);
+    }
+  }
+};
+
+}  // namespace
+
+mbs::Model parse_model(const std::string& text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", source, e.mark.line + 1, e.msg));
+  }
+  Loader ld{Reader(source), {}};
+  const Reader& rd = ld.rd;
+  if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
+  rd.keys(root, "the model", {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly"});
+  ld.model.source = source;
+  ld.model.name = root["name"].IsDefined() ? rd.text(root["name"], "name") : source;
+  ld.options(root["options"]);
+  if (YAML::Node g = root["ground"]; g.IsDefined()) {
+    rd.keys(g, "ground", {"markers"});
+    ld.markers_of(g["markers"], mbs::kGround, "ground");
+  }
+  ld.bodies(rd.need(root, "bodies", "the model"));
+  ld.joints(root["joints"]);
+  ld.assembly(root["assembly"]);
+  ld.model.finalize();
+  try {
+    mbs::State x = mbs::assemble(ld.model, 0.0);
+    ld.forces(root["forces"], x.q);
+  } catch (const NumericalError& e) {
+    throw ModelError(fmt::format("{}: {}", source, e.what()));
+  }
+  ld.outputs(root["outputs"]);
+  return std::move(ld.model);
+}
+
+mbs::Model load_model(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ModelError(fmt::format("{}: cannot open the model file", path));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return parse_model(ss.str(), path);
+}
+
+}  // namespace inerta::io

@@ -1,0 +1,146 @@
+#include "inerta/mbs/dynamics.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "inerta/error.hpp"
+
+namespace inerta::mbs {
+
+namespace {
+// Stages of `accelerations`; ws.set_state(x) has run.
+void constraint_stage(const Model& model, double t, Workspace& ws) {
+  ws.Cq.setZero();
+  ConstraintRow rows[3];
+  for (const Joint& jt : model.joints) {
+    int nr = evaluate_joint(jt, t, ws.frame(jt.body_i), ws.frame(jt.body_j), rows);
+    for (int r = 0; r < nr; ++r) {
+      const int row = jt.row + r;
+      ws.C[row] = rows[r].C;
+      ws.Ct[row] = rows[r].Ct;
+      ws.gamma[row] = rows[r].gamma;
+      if (jt.body_i >= 0) ws.Cq.block<1, 3>(row, 3 * jt.body_i) += rows[r].gi.transpose();
+      if (jt.body_j >= 0) ws.Cq.block<1, 3>(row, 3 * jt.body_j) += rows[r].gj.transpose();
+    }
+  }
+}
+
+void force_stage(const Model& model, double t, const State& x, Workspace& ws) {
+  ws.M.setZero();
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int k = 3 * static_cast<int>(b);
+    ws.M(k, k) = ws.M(k + 1, k + 1) = model.bodies[b].mass;
+    ws.M(k + 2, k + 2) = model.bodies[b].inertia;
+  }
+  ws.Q.setZero();
+  for (const auto& f : model.forces) f->add(model, t, x, ws);
+}
+}  // namespace
+
+void evaluate_constraints(const Model& model, double t, const State& x, Workspace& ws) {
+  ws.set_state(x);
+  constraint_stage(model, t, ws);
+}
+
+void evaluate_forces(const Model& model, double t, const State& x, Workspace& ws) {
+  ws.set_state(x);
+  force_stage(model, t, x, ws);
+}
+
+namespace {
+[[noreturn]] void singular(double t, const char* what, double ratio) {
+  throw NumericalError(fmt::format(
+      "t = {:.6g} s: {} is singular (pivot ratio {:.3g}); check for redundant joints, a body without "
+      "mass or inertia that is not constrained, or a mechanism in a singular position",
+      t, what, ratio));
+}
+
+// Full system of eq. 4.12 by LU with partial pivoting (used when M + M_I is not positive definite).
+void solve_kkt(const Model& model, double t, Workspace& ws) {
+  const int n = model.n_coords(), m = model.n_constraints();
+  ws.K.topLeftCorner(n, n) = ws.M;
+  ws.K.topRightCorner(n, m) = ws.Cq.transpose();
+  ws.K.bottomLeftCorner(m, n) = ws.Cq;
+  ws.K.bottomRightCorner(m, m).setZero();
+  ws.rhs.head(n) = ws.Q;
+  ws.rhs.tail(m) = ws.c;
+  ws.lu.compute(ws.K);
+  const auto diag = ws.lu.matrixLU().diagonal().cwiseAbs();
+  const double pmax = diag.maxCoeff(), pmin = diag.minCoeff();
+  if (!(pmin > 1e-13 * pmax)) singular(t, "the system matrix of eq. 4.12", pmax > 0 ? pmin / pmax : 0.0);
+  ws.sol.noalias() = ws.lu.solve(ws.rhs);
+  ws.qdd = ws.sol.head(n);
+  ws.lambda = ws.sol.tail(m);
+}
+}  // namespace
+
+void accelerations(const Model& model, double t, const State& x, Workspace& ws) {
+  const int m = model.n_constraints();
+  // Stages: kinematics → force elements and inerter mass term → constraint terms → Baumgarte → solve.
+  ws.set_state(x);
+  force_stage(model, t, x, ws);
+  constraint_stage(model, t, ws);
+  // Baumgarte, eq. 4.11: C_q q̈ = Q_d − 2α Ċ − β² C, with Ċ = C_q q̇ + C_t.
+  const double a = model.options.alpha, b = model.options.beta;
+  ws.c.noalias() = ws.gamma - 2 * a * ws.Ct - b * b * ws.C;
+  ws.c.noalias() -= 2 * a * (ws.Cq * x.qd);
+
+  // Schur complement: (M + M_I) = L Lᵀ, S = C_q (M + M_I)⁻¹ C_qᵀ, S λ = C_q (M + M_I)⁻¹ Q − c,
+  // q̈ = (M + M_I)⁻¹ (Q − C_qᵀ λ).
+  ws.llt_M.compute(ws.M);
+  const auto dM = ws.llt_M.matrixLLT().diagonal();
+  if (ws.llt_M.info() != Eigen::Success || !(dM.minCoeff() > 1e-7 * dM.maxCoeff())) {
+    solve_kkt(model, t, ws);
+    return;
+  }
+  const auto L = ws.llt_M.matrixL();
+  ws.z = ws.Q;
+  L.solveInPlace(ws.z);
+  if (m > 0) {
+    ws.Y = ws.Cq.transpose();
+    L.solveInPlace(ws.Y);
+    ws.S.noalias() = ws.Y.transpose() * ws.Y;
+    ws.llt_S.compute(ws.S);
+    const auto dS = ws.llt_S.matrixLLT().diagonal();
+    if (ws.llt_S.info() != Eigen::Success || !(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
+      singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? dS.minCoeff() / dS.maxCoeff() : 0.0);
+    ws.lambda.noalias() = ws.Y.transpose() * ws.z;
+    ws.lambda -= ws.c;
+    ws.llt_S.solveInPlace(ws.lambda);
+    ws.z.noalias() -= ws.Y * ws.lambda;
+  }
+  ws.qdd = ws.z;
+  ws.llt_M.matrixU().solveInPlace(ws.qdd);
+}
+
+Vec3 joint_reaction(const Model& model, int joint, double t, const State& x, const Eigen::VectorXd& lambda) {
+  const Joint& jt = model.joints[static_cast<std::size_t>(joint)];
+  ConstraintRow rows[3];
+  int nr = evaluate_joint(jt, t, x.frame(jt.body_i), x.frame(jt.body_j), rows);
+  Vec3 f = Vec3::Zero();
+  for (int r = 0; r < nr; ++r) f -= rows[r].gj * lambda[jt.row + r];
+  return f;
+}
+
+double kinetic_energy(const Model& model, const State& x) {
+  double T = 0;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    Vec3 v = x.qd_of(static_cast<int>(b));
+    T += 0.5 * model.bodies[b].mass * v.head<2>().squaredNorm() + 0.5 * model.bodies[b].inertia * v.z() * v.z();
+  }
+  return T;
+}
+
+double stored_energy(const Model& model, double t, const State& x) {
+  double E = 0;
+  for (const auto& f : model.forces) E += f->energy(model, t, x);
+  return E;
+}
+
+double element_power(const Model& model, double t, const State& x) {
+  double P = 0;
+  for (const auto& f : model.forces) P += f->power(model, t, x);
+  return P;
+}
+
+}  // namespace inerta::mbs

@@ -1,0 +1,102 @@
+#include "inerta/mbs/model.hpp"
+
+#include <cmath>
+
+#include "inerta/mbs/state.hpp"
+
+namespace inerta::mbs {
+
+namespace {
+template <class T, class Name>
+int find_named(const std::vector<T>& items, const std::string& name, Name get) {
+  for (std::size_t k = 0; k < items.size(); ++k)
+    if (get(items[k]) == name) return static_cast<int>(k);
+  return -1;
+}
+}  // namespace
+
+int Model::find_body(const std::string& name) const {
+  if (name == "ground") return kGround;
+  int k = find_named(bodies, name, [](const Body& b) { return b.name; });
+  return k < 0 ? -2 : k;
+}
+int Model::find_marker(const std::string& name) const {
+  return find_named(markers, name, [](const Marker& m) { return m.name; });
+}
+int Model::find_joint(const std::string& name) const {
+  return find_named(joints, name, [](const Joint& j) { return j.name; });
+}
+int Model::find_force(const std::string& name) const {
+  return find_named(forces, name, [](const auto& f) { return f->name(); });
+}
+
+std::string Model::coord_name(int k) const {
+  static const char* names[] = {"x", "y", "theta"};
+  return bodies[static_cast<std::size_t>(k / 3)].name + "." + names[k % 3];
+}
+
+void Model::finalize() {
+  n_constraints_ = 0;
+  for (Joint& j : joints) {
+    j.row = n_constraints_;
+    n_constraints_ += j.rows();
+  }
+}
+
+Eigen::VectorXd Model::q0() const {
+  Eigen::VectorXd q(n_coords());
+  for (std::size_t b = 0; b < bodies.size(); ++b) q.segment<3>(3 * static_cast<int>(b)) = bodies[b].q0;
+  return q;
+}
+Eigen::VectorXd Model::qd0() const {
+  Eigen::VectorXd qd(n_coords());
+  for (std::size_t b = 0; b < bodies.size(); ++b) qd.segment<3>(3 * static_cast<int>(b)) = bodies[b].qd0;
+  return qd;
+}
+
+double ForceElement::length(const Model&, const State&) const { return std::nan(""); }
+
+Workspace::Workspace(const Model& model) {
+  const int n = model.n_coords(), m = model.n_constraints();
+  M = Eigen::MatrixXd::Zero(n, n);
+  Q = Eigen::VectorXd::Zero(n);
+  C = Eigen::VectorXd::Zero(m);
+  Ct = Eigen::VectorXd::Zero(m);
+  Cq = Eigen::MatrixXd::Zero(m, n);
+  gamma = Eigen::VectorXd::Zero(m);
+  llt_M = Eigen::LLT<Eigen::MatrixXd>(n);
+  Y = Eigen::MatrixXd::Zero(n, m);
+  S = Eigen::MatrixXd::Zero(m, m);
+  llt_S = Eigen::LLT<Eigen::MatrixXd>(m);
+  z = Eigen::VectorXd::Zero(n);
+  c = Eigen::VectorXd::Zero(m);
+  K = Eigen::MatrixXd::Zero(n + m, n + m);
+  rhs = Eigen::VectorXd::Zero(n + m);
+  sol = Eigen::VectorXd::Zero(n + m);
+  lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + m);
+  frames.resize(model.bodies.size());
+  qdd = Eigen::VectorXd::Zero(n);
+  lambda = Eigen::VectorXd::Zero(m);
+}
+
+void Workspace::set_state(const State& x) {
+  for (std::size_t b = 0; b < frames.size(); ++b) frames[b] = x.frame(static_cast<int>(b));
+}
+
+void Workspace::add_Q(int body_i, int body_j, const Vec6& f) {
+  if (body_i >= 0) Q.segment<3>(3 * body_i) += f.head<3>();
+  if (body_j >= 0) Q.segment<3>(3 * body_j) += f.tail<3>();
+}
+
+void Workspace::add_M(int body_i, int body_j, const Vec6& J, double b) {
+  const int body[2] = {body_i, body_j};
+  for (int a = 0; a < 2; ++a) {
+    if (body[a] < 0) continue;
+    for (int c = 0; c < 2; ++c) {
+      if (body[c] < 0) continue;
+      M.block<3, 3>(3 * body[a], 3 * body[c]) += b * J.segment<3>(3 * a) * J.segment<3>(3 * c).transpose();
+    }
+  }
+}
+
+}  // namespace inerta::mbs

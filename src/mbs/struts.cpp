@@ -1,0 +1,80 @@
+#include "inerta/mbs/struts.hpp"
+
+#include "inerta/mbs/model.hpp"
+#include "inerta/mbs/state.hpp"
+
+namespace inerta::mbs {
+
+StrutKinematics Strut::kinematics(const State& x) const {
+  return strut_kinematics(x.frame(body_i_), u_i_, x.frame(body_j_), u_j_);
+}
+StrutKinematics Strut::kinematics(const Workspace& ws) const {
+  return strut_kinematics(ws.frame(body_i_), u_i_, ws.frame(body_j_), u_j_);
+}
+
+double Strut::length(const Model&, const State& x) const { return kinematics(x).l; }
+
+void Strut::add_tension(double F, const StrutKinematics& s, Workspace& ws) const {
+  ws.add_Q(body_i_, body_j_, -F * s.J);
+}
+
+// Spring ---------------------------------------------------------------------------------------
+void Spring::add(const Model&, double, const State&, Workspace& ws) const {
+  StrutKinematics s = kinematics(ws);
+  add_tension(k_ * (s.l - L0_), s, ws);
+}
+double Spring::energy(const Model&, double, const State& x) const {
+  double d = kinematics(x).l - L0_;
+  return 0.5 * k_ * d * d;
+}
+double Spring::force(const Model&, double, const State& x, const Workspace&) const {
+  return k_ * (kinematics(x).l - L0_);
+}
+
+// Damper ---------------------------------------------------------------------------------------
+void Damper::add(const Model&, double, const State&, Workspace& ws) const {
+  StrutKinematics s = kinematics(ws);
+  add_tension(c_ * s.l_dot, s, ws);
+}
+double Damper::power(const Model&, double, const State& x) const {
+  double ld = kinematics(x).l_dot;
+  return -c_ * ld * ld;
+}
+double Damper::force(const Model&, double, const State& x, const Workspace&) const {
+  return c_ * kinematics(x).l_dot;
+}
+
+// Inerter --------------------------------------------------------------------------------------
+bool Inerter::centripetal(const Model& model) const { return centripetal_ && model.options.centripetal; }
+
+void Inerter::add(const Model& model, double, const State&, Workspace& ws) const {
+  StrutKinematics s = kinematics(ws);
+  // eq. 3.31: Q_Iv = −b Jᵀ (ê·a_n + correction);  eq. 3.33: M_I = b Jᵀ J.
+  double bias = s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0);
+  add_tension(b_ * bias, s, ws);
+  ws.add_M(body_i(), body_j(), s.J, b_);
+}
+double Inerter::energy(const Model&, double, const State& x) const {
+  double ld = kinematics(x).l_dot;
+  return 0.5 * b_ * ld * ld;
+}
+double Inerter::power(const Model& model, double, const State& x) const {
+  if (centripetal(model)) return 0.0;
+  StrutKinematics s = kinematics(x);
+  return b_ * s.centripetal * s.l_dot;
+}
+double Inerter::force(const Model& model, double, const State&, const Workspace& ws) const {
+  StrutKinematics s = kinematics(ws);
+  Vec6 qdd_ij = Vec6::Zero();
+  if (body_i() >= 0) qdd_ij.head<3>() = ws.qdd.segment<3>(3 * body_i());
+  if (body_j() >= 0) qdd_ij.tail<3>() = ws.qdd.segment<3>(3 * body_j());
+  return b_ * (s.J.dot(qdd_ij) + s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0));  // eq. 3.20
+}
+
+// Constant axial force -------------------------------------------------------------------------
+void AxialForce::add(const Model&, double, const State&, Workspace& ws) const {
+  add_tension(F_, kinematics(ws), ws);
+}
+double AxialForce::energy(const Model&, double, const State& x) const { return F_ * kinematics(x).l; }
+
+}  // namespace inerta::mbs

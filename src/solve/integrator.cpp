@@ -1,0 +1,180 @@
+#include "inerta/solve/integrator.hpp"
+
+#include <arkode/arkode_erkstep.h>
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <fmt/format.h>
+#include <stdexcept>
+
+#include "inerta/error.hpp"
+#include "inerta/mbs/dynamics.hpp"
+
+namespace inerta::solve {
+
+Method parse_method(const std::string& name) {
+  if (name == "bdf") return Method::Bdf;
+  if (name == "rk") return Method::Rk;
+  throw std::invalid_argument("unknown integrator '" + name + "' (expected bdf or rk)");
+}
+
+const char* method_name(Method m) { return m == Method::Bdf ? "bdf (CVODE BDF)" : "rk (ARKODE Dormand-Prince 5(4))"; }
+
+namespace {
+
+struct Problem {
+  const mbs::Model& model;
+  mbs::State x;
+  mbs::Workspace ws;
+  int n;
+  std::exception_ptr error;
+  std::string solver_message;
+};
+
+void load_state(const double* y, int n, mbs::State& x) {
+  x.q = Eigen::Map<const Eigen::VectorXd>(y, n);
+  x.qd = Eigen::Map<const Eigen::VectorXd>(y + n, n);
+}
+
+// ẏ = [q̇; q̈(q, q̇, t)]
+int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
+  auto* p = static_cast<Problem*>(user);
+  try {
+    load_state(N_VGetArrayPointer(y), p->n, p->x);
+    mbs::accelerations(p->model, t, p->x, p->ws);
+    double* yd = N_VGetArrayPointer(ydot);
+    Eigen::Map<Eigen::VectorXd>(yd, p->n) = p->x.qd;
+    Eigen::Map<Eigen::VectorXd>(yd + p->n, p->n) = p->ws.qdd;
+    return 0;
+  } catch (...) {
+    p->error = std::current_exception();
+    return -1;  // unrecoverable
+  }
+}
+
+void error_handler(int, const char*, const char*, char* msg, void* user) {
+  static_cast<Problem*>(user)->solver_message = msg ? msg : "";
+}
+
+// RAII owner of the SUNDIALS objects.
+struct Sundials {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  void* mem = nullptr;
+  Method method;
+  explicit Sundials(Method m) : method(m) {
+    if (SUNContext_Create(nullptr, &ctx) != 0) throw std::runtime_error("SUNContext_Create failed");
+  }
+  ~Sundials() {
+    if (mem) (method == Method::Bdf) ? CVodeFree(&mem) : ERKStepFree(&mem);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+};
+
+void check(int flag, const char* what) {
+  if (flag < 0) throw std::runtime_error(fmt::format("SUNDIALS: {} failed (flag {})", what, flag));
+}
+
+}  // namespace
+
+RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_end, double dt_sample,
+                   const IntegratorOptions& opt, const Observer& observer, bool observer_needs_accelerations) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const int n = model.n_coords(), N = 2 * n;
+  if (!(dt_sample > 0)) throw std::invalid_argument("sample interval must be > 0");
+  if (!(t_end >= t0)) throw std::invalid_argument("t_end must be >= t0");
+  if (!(opt.rtol > 0) || !(opt.atol > 0)) throw std::invalid_argument("rtol and atol must be > 0");
+
+  Problem p{model, x, mbs::Workspace(model), n, nullptr, {}};
+  Sundials s(opt.method);
+  s.y = N_VNew_Serial(N, s.ctx);
+  double* y = N_VGetArrayPointer(s.y);
+  Eigen::Map<Eigen::VectorXd>(y, n) = x.q;
+  Eigen::Map<Eigen::VectorXd>(y + n, n) = x.qd;
+
+  if (opt.method == Method::Bdf) {
+    s.mem = CVodeCreate(CV_BDF, s.ctx);
+    check(CVodeInit(s.mem, rhs, t0, s.y), "CVodeInit");
+    check(CVodeSStolerances(s.mem, opt.rtol, opt.atol), "CVodeSStolerances");
+    check(CVodeSetUserData(s.mem, &p), "CVodeSetUserData");
+    check(CVodeSetErrHandlerFn(s.mem, error_handler, &p), "CVodeSetErrHandlerFn");
+    check(CVodeSetMaxNumSteps(s.mem, opt.max_steps), "CVodeSetMaxNumSteps");
+    if (opt.max_step > 0) check(CVodeSetMaxStep(s.mem, opt.max_step), "CVodeSetMaxStep");
+    s.A = SUNDenseMatrix(N, N, s.ctx);
+    s.LS = SUNLinSol_Dense(s.y, s.A, s.ctx);
+    check(CVodeSetLinearSolver(s.mem, s.LS, s.A), "CVodeSetLinearSolver");
+  } else {
+    s.mem = ERKStepCreate(rhs, t0, s.y, s.ctx);
+    if (!s.mem) throw std::runtime_error("ERKStepCreate failed");
+    check(ERKStepSetTableNum(s.mem, ARKODE_DORMAND_PRINCE_7_4_5), "ERKStepSetTableNum");
+    // Cubic Hermite output interpolation uses the FSAL derivatives only: no extra RHS evaluations.
+    check(ERKStepSetInterpolantDegree(s.mem, 3), "ERKStepSetInterpolantDegree");
+    check(ERKStepSStolerances(s.mem, opt.rtol, opt.atol), "ERKStepSStolerances");
+    check(ERKStepSetUserData(s.mem, &p), "ERKStepSetUserData");
+    check(ERKStepSetErrHandlerFn(s.mem, error_handler, &p), "ERKStepSetErrHandlerFn");
+    check(ERKStepSetMaxNumSteps(s.mem, opt.max_steps), "ERKStepSetMaxNumSteps");
+    if (opt.max_step > 0) check(ERKStepSetMaxStep(s.mem, opt.max_step), "ERKStepSetMaxStep");
+  }
+
+  RunStats stats;
+  mbs::Workspace ws(model);  // for the observer and the constraint report
+  auto sample = [&](double t) {
+    load_state(y, n, x);
+    if (observer && observer_needs_accelerations) mbs::accelerations(model, t, x, ws);  // also the constraints
+    else mbs::evaluate_constraints(model, t, x, ws);
+    if (model.n_constraints() > 0) {
+      double v = ws.C.cwiseAbs().maxCoeff();
+      if (v > stats.max_violation) {
+        stats.max_violation = v;
+        stats.t_max_violation = t;
+      }
+      ws.c.noalias() = ws.Cq * x.qd;
+      ws.c += ws.Ct;
+      stats.max_velocity_violation = std::max(stats.max_velocity_violation, ws.c.cwiseAbs().maxCoeff());
+    }
+    if (observer) observer(t, x, ws);
+  };
+
+  sample(t0);
+  const long n_samples = std::lround(std::floor((t_end - t0) / dt_sample + 1e-9));
+  double t = t0;
+  for (long k = 1; k <= n_samples + 1; ++k) {
+    double tout = k <= n_samples ? t0 + static_cast<double>(k) * dt_sample : t_end;
+    if (k == n_samples + 1 && tout - t <= 1e-12 * std::max(1.0, std::abs(t_end))) break;
+    int flag = opt.method == Method::Bdf ? CVode(s.mem, tout, s.y, &t, CV_NORMAL)
+                                         : ERKStepEvolve(s.mem, tout, s.y, &t, ARK_NORMAL);
+    if (p.error) std::rethrow_exception(p.error);
+    if (flag < 0) {
+      throw NumericalError(fmt::format("integrator ({}) failed at t = {:.6g} s (flag {}): {}", method_name(opt.method),
+                                       t, flag, p.solver_message));
+    }
+    sample(tout);
+  }
+
+  if (opt.method == Method::Bdf) {
+    CVodeGetNumSteps(s.mem, &stats.steps);
+    CVodeGetNumRhsEvals(s.mem, &stats.rhs_evals);
+    long fe_ls = 0;
+    CVodeGetNumLinRhsEvals(s.mem, &fe_ls);
+    stats.rhs_evals += fe_ls;
+  } else {
+    long fi = 0;
+    ERKStepGetNumSteps(s.mem, &stats.steps);
+    ERKStepGetNumRhsEvals(s.mem, &stats.rhs_evals);
+    (void)fi;
+  }
+  stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  return stats;
+}
+
+}  // namespace inerta::solve
