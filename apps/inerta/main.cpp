@@ -30,12 +30,12 @@ const char* joint_type_name(mbs::JointType t) {
 
 std::string body_name(const mbs::Model& m, int b) { return b < 0 ? "ground" : m.bodies[static_cast<std::size_t>(b)].name; }
 
-void print_assembly(const mbs::Model& model, const mbs::AssemblyReport& a) {
-  fmt::print("assembly: max |C| {:.3g} -> {:.3g} in {} Newton iteration(s)", a.initial_residual, a.residual, a.iterations);
+void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyReport& a) {
+  fmt::print(to, "assembly: max |C| {:.3g} -> {:.3g} in {} Newton iteration(s)", a.initial_residual, a.residual, a.iterations);
   if (a.dq.size() > 0 && a.dq.cwiseAbs().maxCoeff() > 0)
-    fmt::print("; largest correction {:+.4g} {} on {}", a.dq[a.largest], a.largest % 3 == 2 ? "rad" : "m",
+    fmt::print(to, "; largest correction {:+.4g} {} on {}", a.dq[a.largest], a.largest % 3 == 2 ? "rad" : "m",
                model.coord_name(a.largest));
-  fmt::print("\n");
+  fmt::print(to, "\n");
 }
 
 int cmd_check(const std::string& path) {
@@ -58,7 +58,7 @@ int cmd_check(const std::string& path) {
 
   mbs::AssemblyReport rep;
   mbs::State x = mbs::assemble(model, 0.0, &rep);
-  print_assembly(model, rep);
+  print_assembly(stdout, model, rep);
   mbs::Workspace ws(model);
   mbs::evaluate_constraints(model, 0.0, x, ws);
   Eigen::Index rank = 0;
@@ -93,14 +93,16 @@ int cmd_simulate(const SimulateArgs& a) {
   opt.atol = a.atol;
   opt.max_step = a.max_step;
 
+  std::FILE* info = a.out.empty() ? stderr : stdout;  // keep a CSV on stdout clean
   mbs::AssemblyReport rep;
   mbs::State x = mbs::assemble(model, 0.0, &rep);
-  if (rep.initial_residual > 1e-9) print_assembly(model, rep);
+  if (rep.initial_residual > 1e-9) print_assembly(info, model, rep);
   if (a.from_equilibrium) {
     mbs::EquilibriumReport eq;
     mbs::static_equilibrium(model, 0.0, x, &eq);
-    fmt::print("static equilibrium: {} iteration(s), largest move {:.4g} on {}\n", eq.iterations, eq.max_move,
-               eq.largest >= 0 ? model.coord_name(eq.largest) : "-");
+    fmt::print(info, "static equilibrium: {} iteration(s)", eq.iterations);
+    if (eq.max_move > 0) fmt::print(info, ", largest move {:.4g} on {}", eq.max_move, model.coord_name(eq.largest));
+    fmt::print(info, "\n");
   }
 
   std::FILE* out = nullptr;
@@ -144,7 +146,6 @@ int cmd_simulate(const SimulateArgs& a) {
   for (const auto& o : model.outputs) need_acc = need_acc || mbs::needs_accelerations(o);
   solve::RunStats st = solve::integrate(model, x, 0.0, t_end, dt, opt, observer, need_acc);
   if (progress) fmt::print(stderr, "\r{:60}\r", "");
-  std::FILE* info = a.out.empty() ? stderr : stdout;
   fmt::print(info,
              "simulated {} to t = {:g} s: {} steps, {} RHS evaluations, wall {:.3f} s, "
              "max constraint violation {:.3g} (velocity {:.3g}); integrator {}, rtol {:g}, atol {:g}, centripetal {}\n",

@@ -105,16 +105,21 @@ class Reader {
 
 mbs::TimeFunction time_function(const Reader& rd, const YAML::Node& n, const std::string& key) {
   if (n.IsScalar()) return mbs::TimeFunction::constant(rd.number(n, key));
-  rd.keys(n, key, {"type", "value", "amplitude", "frequency", "phase", "phase_deg", "offset", "points"});
+  if (!n.IsMap()) rd.fail(n, key, "expected a number or a function {type: constant|sine|table, ...}");
   std::string type = rd.text(n, "type", key);
-  if (type == "constant") return mbs::TimeFunction::constant(rd.number(n, "value", key));
+  if (type == "constant") {
+    rd.keys(n, key + " (constant)", {"type", "value"});
+    return mbs::TimeFunction::constant(rd.number(n, "value", key));
+  }
   if (type == "sine") {
+    rd.keys(n, key + " (sine)", {"type", "amplitude", "frequency", "phase", "phase_deg", "offset"});
     double f = rd.number(n, "frequency", key);
     if (!(f >= 0)) rd.fail(n["frequency"], "frequency", "must be >= 0 (Hz)");
     return mbs::TimeFunction::sine(rd.number(n, "amplitude", key), f, rd.angle(n, "phase", 0.0),
                                    rd.number_or(n, "offset", 0.0));
   }
   if (type == "table") {
+    rd.keys(n, key + " (table)", {"type", "points"});
     YAML::Node pts = rd.need(n, "points", key);
     if (!pts.IsSequence() || pts.size() < 1) rd.fail(pts, "points", "expected a list of [t, value] pairs");
     mbs::TimeFunction f;
@@ -336,12 +341,16 @@ struct Loader {
           rd.fail(f, what, "a rotational_damper takes only c; use rotational_spring_damper for both");
         double a_init = q_of(q_init, jt.body_j).z() - q_of(q_init, jt.body_i).z();
         double a0 = a_init;
-        if (!(f["angle0"].IsDefined() && f["angle0"].IsScalar() && f["angle0"].Scalar() == "initial"))
+        if (f["angle0"].IsDefined() && f["angle0"].IsScalar() && f["angle0"].Scalar() == "initial") {
+          if (f["angle0_deg"].IsDefined()) rd.fail(f["angle0_deg"], "angle0_deg", "give either angle0 or angle0_deg, not both");
+        } else {
           a0 = rd.angle(f, "angle0", a_init);
+        }
         model.forces.push_back(std::make_shared<mbs::RotationalSpringDamper>(name, jt.body_i, jt.body_j, k, a0, c));
       } else if (type == "point_force") {
         rd.keys(f, what, {"name", "type", "marker", "direction", "value"});
         int m = marker(rd.need(f, "marker", what), "marker");
+        if (mk(m).body < 0) rd.fail(f["marker"], "marker", "a force on a ground marker does nothing; expected a body's marker");
         Vec2 d = rd.vec2(rd.need(f, "direction", what), "direction");
         if (!(d.norm() > 0)) rd.fail(f["direction"], "direction", "must be a non-zero vector");
         model.forces.push_back(std::make_shared<mbs::PointForce>(name, mk(m).body, mk(m).u, d,

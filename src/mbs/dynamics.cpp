@@ -102,8 +102,9 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
     ws.S.noalias() = ws.Y.transpose() * ws.Y;
     ws.llt_S.compute(ws.S);
     const auto dS = ws.llt_S.matrixLLT().diagonal();
-    if (ws.llt_S.info() != Eigen::Success || !(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
-      singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? dS.minCoeff() / dS.maxCoeff() : 0.0);
+    if (ws.llt_S.info() != Eigen::Success) singular(t, "the constraint Jacobian C_q", 0.0);
+    if (!(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
+      singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? std::pow(dS.minCoeff() / dS.maxCoeff(), 2) : 0.0);
     ws.lambda.noalias() = ws.Y.transpose() * ws.z;
     ws.lambda -= ws.c;
     ws.llt_S.solveInPlace(ws.lambda);

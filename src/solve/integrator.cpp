@@ -10,7 +10,9 @@
 #include <cmath>
 #include <exception>
 #include <fmt/format.h>
+#include <memory>
 #include <stdexcept>
+#include <type_traits>
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -128,38 +130,62 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
 
   RunStats stats;
   mbs::Workspace ws(model);  // for the observer and the constraint report
-  auto sample = [&](double t) {
-    load_state(y, n, x);
-    if (observer && observer_needs_accelerations) mbs::accelerations(model, t, x, ws);  // also the constraints
-    else mbs::evaluate_constraints(model, t, x, ws);
-    if (model.n_constraints() > 0) {
-      double v = ws.C.cwiseAbs().maxCoeff();
-      if (v > stats.max_violation) {
-        stats.max_violation = v;
-        stats.t_max_violation = t;
-      }
-      ws.c.noalias() = ws.Cq * x.qd;
-      ws.c += ws.Ct;
-      stats.max_velocity_violation = std::max(stats.max_velocity_violation, ws.c.cwiseAbs().maxCoeff());
-    }
-    if (observer) observer(t, x, ws);
+  // Constraint drift of the integrator's own solution, checked after every step.
+  auto drift = [&](double t, const double* yv) {
+    if (model.n_constraints() == 0) return;
+    load_state(yv, n, x);
+    mbs::evaluate_constraints(model, t, x, ws);
+    double v = ws.C.cwiseAbs().maxCoeff();
+    if (v > stats.max_violation) stats.max_violation = v, stats.t_max_violation = t;
+    ws.c.noalias() = ws.Cq * x.qd;
+    ws.c += ws.Ct;
+    stats.max_velocity_violation = std::max(stats.max_velocity_violation, ws.c.cwiseAbs().maxCoeff());
+  };
+  auto sample = [&](double t, const double* yv) {
+    if (!observer) return;
+    load_state(yv, n, x);
+    if (observer_needs_accelerations) mbs::accelerations(model, t, x, ws);
+    else ws.set_state(x);
+    observer(t, x, ws);
   };
 
-  sample(t0);
+  drift(t0, y);
+  sample(t0, y);
+  // One step at a time up to t_end; samples are interpolated inside each step (no step is forced).
+  if (opt.method == Method::Bdf) check(CVodeSetStopTime(s.mem, t_end), "CVodeSetStopTime");
+  else check(ERKStepSetStopTime(s.mem, t_end), "ERKStepSetStopTime");
+  N_Vector yi = N_VClone(s.y);
+  std::unique_ptr<std::remove_pointer_t<N_Vector>, void (*)(N_Vector)> yi_owner(yi, N_VDestroy);
   const long n_samples = std::lround(std::floor((t_end - t0) / dt_sample + 1e-9));
-  double t = t0;
-  for (long k = 1; k <= n_samples + 1; ++k) {
-    double tout = k <= n_samples ? t0 + static_cast<double>(k) * dt_sample : t_end;
-    if (k == n_samples + 1 && tout - t <= 1e-12 * std::max(1.0, std::abs(t_end))) break;
-    int flag = opt.method == Method::Bdf ? CVode(s.mem, tout, s.y, &t, CV_NORMAL)
-                                         : ERKStepEvolve(s.mem, tout, s.y, &t, ARK_NORMAL);
+  const double eps = 1e-12 * std::max(1.0, std::abs(t_end));
+  long k = 1, steps = 0;
+  double t = t0, t_last_sample = t0;
+  while (t < t_end - eps) {
+    if (++steps > opt.max_steps) {
+      throw NumericalError(fmt::format(
+          "integrator ({}) failed at t = {:.6g} s: more than {} steps (the model may be stiff: try --integrator bdf)",
+          method_name(opt.method), t, opt.max_steps));
+    }
+    int flag = opt.method == Method::Bdf ? CVode(s.mem, t_end, s.y, &t, CV_ONE_STEP)
+                                         : ERKStepEvolve(s.mem, t_end, s.y, &t, ARK_ONE_STEP);
     if (p.error) std::rethrow_exception(p.error);
     if (flag < 0) {
       throw NumericalError(fmt::format("integrator ({}) failed at t = {:.6g} s (flag {}): {}", method_name(opt.method),
                                        t, flag, p.solver_message));
     }
-    sample(tout);
+    drift(t, y);
+    for (; k <= n_samples; ++k) {
+      double tout = t0 + static_cast<double>(k) * dt_sample;
+      if (tout > t + eps) break;
+      tout = std::min(tout, t);
+      int f = opt.method == Method::Bdf ? CVodeGetDky(s.mem, tout, 0, yi) : ERKStepGetDky(s.mem, tout, 0, yi);
+      check(f, "GetDky");
+      sample(tout, N_VGetArrayPointer(yi));
+      t_last_sample = tout;
+    }
   }
+  if (t_end - t_last_sample > eps) sample(t_end, y);  // t_end off the sampling grid
+  load_state(y, n, x);
 
   if (opt.method == Method::Bdf) {
     CVodeGetNumSteps(s.mem, &stats.steps);

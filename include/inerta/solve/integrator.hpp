@@ -29,13 +29,13 @@ struct RunStats {
   long steps = 0;
   long rhs_evals = 0;
   double wall_s = 0;
-  double max_violation = 0;           ///< max |C(q)| over the samples (m or rad)
-  double max_velocity_violation = 0;  ///< max |C_q q̇ + C_t| over the samples
+  double max_violation = 0;           ///< max |C(q)| over the integrator's steps (m or rad)
+  double max_velocity_violation = 0;  ///< max |C_q q̇ + C_t| over the steps
   double t_max_violation = 0;
 };
 
-/// Called at t0 and at every sample time with ws holding the constraints and, when asked for,
-/// the accelerations and multipliers at (t, x).
+/// Called at t0 and at every sample time (interpolated inside the steps) with ws holding the body
+/// frames and, when asked for, the accelerations and multipliers at (t, x).
 using Observer = std::function<void(double t, const mbs::State& x, const mbs::Workspace& ws)>;
 
 /// Integrates from (t0, x) to t_end, sampling every dt_sample; x receives the final state.
