@@ -36,9 +36,12 @@ static void BM_TwoBar60s(benchmark::State& state) {
   for (auto _ : state) {
     mbs::State x = mbs::assemble(model, 0.0);
     double sink = 0;
-    auto st = solve::integrate(model, x, 0.0, 60.0, 1e-3, opt, [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
-      for (const auto& o : model.outputs) sink += mbs::evaluate_output(o, model, t, s, ws);
-    }, false);
+    auto st = solve::integrate(
+        model, x, 0.0, 60.0, 1e-3, opt,
+        [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
+          for (const auto& o : model.outputs) sink += mbs::evaluate_output(o, model, t, s, ws);
+        },
+        false);
     benchmark::DoNotOptimize(sink);
     steps = st.steps, rhs = st.rhs_evals;
   }
@@ -46,7 +49,9 @@ static void BM_TwoBar60s(benchmark::State& state) {
   state.counters["rhs_evals"] = static_cast<double>(rhs);
   state.SetLabel(solve::method_name(opt.method));
 }
-BENCHMARK(BM_TwoBar60s)->Arg(static_cast<int>(solve::Method::Rk))->Arg(static_cast<int>(solve::Method::Bdf))
+BENCHMARK(BM_TwoBar60s)
+    ->Arg(static_cast<int>(solve::Method::Rk))
+    ->Arg(static_cast<int>(solve::Method::Bdf))
     ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

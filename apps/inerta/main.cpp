@@ -1,8 +1,9 @@
 // inerta — command-line interface (docs/cli.md).
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -20,18 +21,25 @@ namespace {
 
 const char* joint_type_name(mbs::JointType t) {
   switch (t) {
-    case mbs::JointType::Revolute: return "revolute";
-    case mbs::JointType::Prismatic: return "prismatic";
-    case mbs::JointType::Fixed: return "fixed";
-    case mbs::JointType::Driving: return "driving";
+    case mbs::JointType::Revolute:
+      return "revolute";
+    case mbs::JointType::Prismatic:
+      return "prismatic";
+    case mbs::JointType::Fixed:
+      return "fixed";
+    case mbs::JointType::Driving:
+      return "driving";
   }
   return "?";
 }
 
-std::string body_name(const mbs::Model& m, int b) { return b < 0 ? "ground" : m.bodies[static_cast<std::size_t>(b)].name; }
+std::string body_name(const mbs::Model& m, int b) {
+  return b < 0 ? "ground" : m.bodies[static_cast<std::size_t>(b)].name;
+}
 
 void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyReport& a) {
-  fmt::print(to, "assembly: max |C| {:.3g} -> {:.3g} in {} Newton iteration(s)", a.initial_residual, a.residual, a.iterations);
+  fmt::print(to, "assembly: max |C| {:.3g} -> {:.3g} in {} Newton iteration(s)", a.initial_residual, a.residual,
+             a.iterations);
   if (a.dq.size() > 0 && a.dq.cwiseAbs().maxCoeff() > 0)
     fmt::print(to, "; largest correction {:+.4g} {} on {}", a.dq[a.largest], a.largest % 3 == 2 ? "rad" : "m",
                model.coord_name(a.largest));
@@ -48,8 +56,8 @@ int cmd_check(const std::string& path) {
   fmt::print("coordinates: {}\n", model.n_coords());
   fmt::print("joints ({}), constraint equations: {}\n", model.joints.size(), model.n_constraints());
   for (const auto& j : model.joints)
-    fmt::print("  {:<16} {:<10} {} - {}  ({} equation{})\n", j.name, joint_type_name(j.type), body_name(model, j.body_i),
-               body_name(model, j.body_j), j.rows(), j.rows() > 1 ? "s" : "");
+    fmt::print("  {:<16} {:<10} {} - {}  ({} equation{})\n", j.name, joint_type_name(j.type),
+               body_name(model, j.body_i), body_name(model, j.body_j), j.rows(), j.rows() > 1 ? "s" : "");
   fmt::print("force elements ({}):", model.forces.size());
   for (const auto& f : model.forces) fmt::print(" {}", f->name());
   fmt::print("\noutputs ({}):", model.outputs.size());
@@ -73,6 +81,13 @@ int cmd_check(const std::string& path) {
   mbs::accelerations(model, 0.0, x, ws);  // throws if the system matrix is singular
   fmt::print("ok\n");
   return 0;
+}
+
+// CSV numbers: 10 significant digits, shortest general form.
+void append_number(std::string& s, double v) {
+  char buf[32];
+  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 10);
+  s.append(buf, r.ptr);
 }
 
 struct SimulateArgs {
@@ -126,11 +141,12 @@ int cmd_simulate(const SimulateArgs& a) {
   std::string line;
   auto observer = [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
     line.clear();
-    fmt::format_to(std::back_inserter(line), "{:.10g}", t);
+    append_number(line, t);
     const bool steady = a.steady_from >= 0 && t >= a.steady_from - 1e-12;
     for (std::size_t k = 0; k < no; ++k) {
       double v = mbs::evaluate_output(model.outputs[k], model, t, s, ws);
-      fmt::format_to(std::back_inserter(line), ",{:.10g}", v);
+      line += ',';
+      append_number(line, v);
       if (t == 0.0) first[k] = v;
       if (steady) lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v), sum[k] += v;
     }
@@ -173,11 +189,17 @@ int main(int argc, char** argv) {
   auto* check = app.add_subcommand("check", "Validate and assemble a model; print bodies, constraints and DOF");
   check->add_option("model", check_model, "Model file (YAML)")->required();
 
+  // --t-end and --sample default to the model's options; a given value must be positive.
+  auto positive = [](const std::string& s) {
+    double v = 0;
+    return CLI::detail::lexical_cast(s, v) && v > 0 ? std::string() : "must be a positive number of seconds, got " + s;
+  };
+
   SimulateArgs sa;
   auto* sim = app.add_subcommand("simulate", "Time simulation; writes a CSV of the model's outputs");
   sim->add_option("model", sa.model, "Model file (YAML)")->required();
-  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)");
-  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)");
+  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)")->check(positive);
+  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)")->check(positive);
   sim->add_option("--out", sa.out, "CSV file to write (default: standard output)");
   sim->add_flag("--no-centripetal", sa.no_centripetal, "Switch off the inerter centripetal correction (eq. 3.8)");
   sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str();

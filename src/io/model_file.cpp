@@ -1,9 +1,9 @@
 #include "inerta/io/model_file.hpp"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <numbers>
 #include <set>
@@ -34,8 +34,11 @@ class Reader {
 
   void keys(const YAML::Node& map, const std::string& what, std::initializer_list<const char*> allowed) const {
     if (!map.IsMap()) fail(map, what, "expected a mapping (key: value pairs)");
+    std::set<std::string> seen;
     for (auto it = map.begin(); it != map.end(); ++it) {
-      std::string k = it->first.as<std::string>();
+      if (!it->first.IsScalar()) fail(it->first, what, "expected a plain key (a name)");
+      std::string k = it->first.Scalar();
+      if (!seen.insert(k).second) fail(it->first, k, fmt::format("duplicate key in {}; give each key once", what));
       bool ok = false;
       for (const char* a : allowed) ok = ok || k == a;
       if (!ok) {
@@ -93,7 +96,8 @@ class Reader {
   // Angle from `key` (rad) or `key_deg` (degrees), not both.
   double angle(const YAML::Node& map, const std::string& key, double fallback) const {
     YAML::Node r = map[key], d = map[key + "_deg"];
-    if (r.IsDefined() && d.IsDefined()) fail(d, key + "_deg", fmt::format("give either {} (rad) or {}_deg, not both", key, key));
+    if (r.IsDefined() && d.IsDefined())
+      fail(d, key + "_deg", fmt::format("give either {} (rad) or {}_deg, not both", key, key));
     if (r.IsDefined()) return number(r, key);
     if (d.IsDefined()) return number(d, key + "_deg") * std::numbers::pi / 180.0;
     return fallback;
@@ -147,7 +151,9 @@ struct Loader {
       std::string body = dot == std::string::npos ? name : name.substr(0, dot);
       if (model.find_body(body) == -2)
         rd.fail(n, key, fmt::format("unknown body '{}' in marker '{}'; markers are written body.marker", body, name));
-      rd.fail(n, key, fmt::format("unknown marker '{}'; define it under the body's markers (body.cm is the centre of mass)", name));
+      rd.fail(
+          n, key,
+          fmt::format("unknown marker '{}'; define it under the body's markers (body.cm is the centre of mass)", name));
     }
     return k;
   }
@@ -159,7 +165,8 @@ struct Loader {
   }
   std::pair<int, int> marker_pair(const YAML::Node& map, const std::string& what) const {
     YAML::Node m = rd.need(map, "markers", what);
-    if (!m.IsSequence() || m.size() != 2) rd.fail(m, "markers", "expected a list of two markers [body_i.point, body_j.point]");
+    if (!m.IsSequence() || m.size() != 2)
+      rd.fail(m, "markers", "expected a list of two markers [body_i.point, body_j.point]");
     return {marker(m[0], "markers"), marker(m[1], "markers")};
   }
   const mbs::Marker& mk(int k) const { return model.markers[static_cast<std::size_t>(k)]; }
@@ -168,6 +175,7 @@ struct Loader {
   void names_unique(const YAML::Node& list, const std::string& what) const {
     std::set<std::string> seen;
     for (const auto& item : list) {
+      if (!item.IsMap()) rd.fail(item, what, fmt::format("expected a mapping (key: value pairs) for each {}", what));
       std::string name = rd.text(item, "name", what);
       if (!seen.insert(name).second) rd.fail(item["name"], "name", fmt::format("duplicate {} name '{}'", what, name));
     }
@@ -177,8 +185,10 @@ struct Loader {
     if (!n.IsDefined()) return;
     rd.keys(n, "options", {"gravity", "baumgarte", "centripetal", "t_end", "sample"});
     if (YAML::Node g = n["gravity"]; g.IsDefined()) {
-      if (g.IsSequence()) model.options.g = rd.vec2(g, "gravity");
-      else model.options.gravity = rd.boolean(g, "gravity");
+      if (g.IsSequence())
+        model.options.g = rd.vec2(g, "gravity");
+      else
+        model.options.gravity = rd.boolean(g, "gravity");
     }
     if (YAML::Node b = n["baumgarte"]; b.IsDefined()) {
       rd.keys(b, "baumgarte", {"alpha", "beta"});
@@ -208,7 +218,8 @@ struct Loader {
     if (!n.IsSequence()) rd.fail(n, "bodies", "expected a list of bodies");
     names_unique(n, "body");
     for (const auto& b : n) {
-      rd.keys(b, "body", {"name", "mass", "inertia", "position", "angle", "angle_deg", "velocity", "angular_velocity", "markers"});
+      rd.keys(b, "body",
+              {"name", "mass", "inertia", "position", "angle", "angle_deg", "velocity", "angular_velocity", "markers"});
       mbs::Body body;
       body.name = rd.text(b, "name", "body");
       if (body.name == "ground" || body.name.find('.') != std::string::npos)
@@ -238,8 +249,10 @@ struct Loader {
       std::string what = "joint '" + jt.name + "'";
       std::string type = rd.text(j, "type", what);
       if (type == "revolute" || type == "prismatic") {
-        if (type == "revolute") rd.keys(j, what, {"name", "type", "markers"});
-        else rd.keys(j, what, {"name", "type", "markers", "axis"});
+        if (type == "revolute")
+          rd.keys(j, what, {"name", "type", "markers"});
+        else
+          rd.keys(j, what, {"name", "type", "markers", "axis"});
         auto [mi, mj] = marker_pair(j, what);
         jt.type = type == "revolute" ? mbs::JointType::Revolute : mbs::JointType::Prismatic;
         jt.body_i = mk(mi).body, jt.body_j = mk(mj).body;
@@ -280,10 +293,13 @@ struct Loader {
         jt.value0 = jt.component == 2 ? qj.z() : (qj.head<2>() + mbs::rotate(qj.z(), jt.u_j))[jt.component];
         jt.motion = time_function(rd, rd.need(j, "motion", what), "motion");
       } else {
-        rd.fail(j["type"], "type", fmt::format("unknown joint type '{}'; expected revolute, prismatic, fixed or driving", type));
+        rd.fail(j["type"], "type",
+                fmt::format("unknown joint type '{}'; expected revolute, prismatic, fixed or driving", type));
       }
       if (jt.type != mbs::JointType::Driving && jt.body_i == jt.body_j)
-        rd.fail(j, what, jt.body_i < 0 ? "joins ground to ground" : "joins a body to itself; expected two different bodies");
+        rd.fail(j, what,
+                jt.body_i < 0 ? "joins ground to ground; expected at least one body"
+                              : "joins a body to itself; expected two different bodies");
       model.joints.push_back(jt);
     }
   }
@@ -305,7 +321,8 @@ struct Loader {
         Vec2 ui = mk(mi).u, uj = mk(mj).u;
         if (bi == bj) rd.fail(f["markers"], "markers", "both terminals are on the same body; a strut needs two bodies");
         double l_init = mbs::Spring("", bi, ui, bj, uj, 0, 0).length(model, x0);
-        if (!(l_init > 0)) rd.fail(f["markers"], "markers", "the terminals coincide in the initial configuration (zero length)");
+        if (!(l_init > 0))
+          rd.fail(f["markers"], "markers", "the terminals coincide in the initial configuration (zero length)");
         if (type == "spring") {
           rd.keys(f, what, {"name", "type", "markers", "k", "free_length"});
           double L0 = l_init;
@@ -321,7 +338,8 @@ struct Loader {
         } else if (type == "inerter") {
           rd.keys(f, what, {"name", "type", "markers", "b", "centripetal"});
           bool corr = f["centripetal"].IsDefined() ? rd.boolean(f["centripetal"], "centripetal") : true;
-          model.forces.push_back(std::make_shared<mbs::Inerter>(name, bi, ui, bj, uj, rd.nonnegative(f, "b", what), corr));
+          model.forces.push_back(
+              std::make_shared<mbs::Inerter>(name, bi, ui, bj, uj, rd.nonnegative(f, "b", what), corr));
         } else {
           rd.keys(f, what, {"name", "type", "markers", "force"});
           model.forces.push_back(std::make_shared<mbs::AxialForce>(name, bi, ui, bj, uj, rd.number(f, "force", what)));
@@ -337,12 +355,14 @@ struct Loader {
         double k = type == "rotational_damper" ? 0.0 : rd.nonnegative(f, "k", what);
         double c = type == "rotational_spring" ? rd.number_or(f, "c", 0.0) : rd.nonnegative(f, "c", what);
         if (c < 0) rd.fail(f["c"], "c", "must be >= 0");
-        if (type == "rotational_damper" && (f["k"].IsDefined() || f["angle0"].IsDefined() || f["angle0_deg"].IsDefined()))
+        if (type == "rotational_damper" &&
+            (f["k"].IsDefined() || f["angle0"].IsDefined() || f["angle0_deg"].IsDefined()))
           rd.fail(f, what, "a rotational_damper takes only c; use rotational_spring_damper for both");
         double a_init = q_of(q_init, jt.body_j).z() - q_of(q_init, jt.body_i).z();
         double a0 = a_init;
         if (f["angle0"].IsDefined() && f["angle0"].IsScalar() && f["angle0"].Scalar() == "initial") {
-          if (f["angle0_deg"].IsDefined()) rd.fail(f["angle0_deg"], "angle0_deg", "give either angle0 or angle0_deg, not both");
+          if (f["angle0_deg"].IsDefined())
+            rd.fail(f["angle0_deg"], "angle0_deg", "give either angle0 or angle0_deg, not both");
         } else {
           a0 = rd.angle(f, "angle0", a_init);
         }
@@ -350,15 +370,17 @@ struct Loader {
       } else if (type == "point_force") {
         rd.keys(f, what, {"name", "type", "marker", "direction", "value"});
         int m = marker(rd.need(f, "marker", what), "marker");
-        if (mk(m).body < 0) rd.fail(f["marker"], "marker", "a force on a ground marker does nothing; expected a body's marker");
+        if (mk(m).body < 0)
+          rd.fail(f["marker"], "marker", "a force on a ground marker does nothing; expected a body's marker");
         Vec2 d = rd.vec2(rd.need(f, "direction", what), "direction");
         if (!(d.norm() > 0)) rd.fail(f["direction"], "direction", "must be a non-zero vector");
-        model.forces.push_back(std::make_shared<mbs::PointForce>(name, mk(m).body, mk(m).u, d,
-                                                                 time_function(rd, rd.need(f, "value", what), "value")));
+        model.forces.push_back(std::make_shared<mbs::PointForce>(
+            name, mk(m).body, mk(m).u, d, time_function(rd, rd.need(f, "value", what), "value")));
       } else {
         rd.fail(f["type"], "type",
                 fmt::format("unknown force element type '{}'; expected spring, damper, inerter, axial_force, "
-                            "rotational_spring, rotational_damper, rotational_spring_damper or point_force", type));
+                            "rotational_spring, rotational_damper, rotational_spring_damper or point_force",
+                            type));
       }
     }
   }
@@ -426,8 +448,10 @@ struct Loader {
           out.component = static_cast<int>(c);
         }
       } else {
-        rd.fail(o["type"], "type", fmt::format("unknown output type '{}'; expected coordinate, position, velocity, "
-                                               "acceleration, force, length, reaction or multiplier", type));
+        rd.fail(o["type"], "type",
+                fmt::format("unknown output type '{}'; expected coordinate, position, velocity, "
+                            "acceleration, force, length, reaction or multiplier",
+                            type));
       }
       out.scale = rd.number_or(o, "scale", 1.0);
       model.outputs.push_back(out);
@@ -462,26 +486,30 @@ mbs::Model parse_model(const std::string& text, const std::string& source) {
   }
   Loader ld{Reader(source), {}};
   const Reader& rd = ld.rd;
-  if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
-  rd.keys(root, "the model", {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly"});
-  ld.model.source = source;
-  ld.model.name = root["name"].IsDefined() ? rd.text(root["name"], "name") : source;
-  ld.options(root["options"]);
-  if (YAML::Node g = root["ground"]; g.IsDefined()) {
-    rd.keys(g, "ground", {"markers"});
-    ld.markers_of(g["markers"], mbs::kGround, "ground");
-  }
-  ld.bodies(rd.need(root, "bodies", "the model"));
-  ld.joints(root["joints"]);
-  ld.assembly(root["assembly"]);
-  ld.model.finalize();
   try {
-    mbs::State x = mbs::assemble(ld.model, 0.0);
-    ld.forces(root["forces"], x.q);
-  } catch (const NumericalError& e) {
-    throw ModelError(fmt::format("{}: {}", source, e.what()));
+    if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
+    rd.keys(root, "the model", {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly"});
+    ld.model.source = source;
+    ld.model.name = root["name"].IsDefined() ? rd.text(root["name"], "name") : source;
+    ld.options(root["options"]);
+    if (YAML::Node g = root["ground"]; g.IsDefined()) {
+      rd.keys(g, "ground", {"markers"});
+      ld.markers_of(g["markers"], mbs::kGround, "ground");
+    }
+    ld.bodies(rd.need(root, "bodies", "the model"));
+    ld.joints(root["joints"]);
+    ld.assembly(root["assembly"]);
+    ld.model.finalize();
+    try {
+      mbs::State x = mbs::assemble(ld.model, 0.0);
+      ld.forces(root["forces"], x.q);
+    } catch (const NumericalError& e) {
+      throw ModelError(fmt::format("{}: {}", source, e.what()));
+    }
+    ld.outputs(root["outputs"]);
+  } catch (const YAML::Exception& e) {  // safety net: no yaml-cpp exception leaves without file:line
+    throw ModelError(fmt::format("{}:{}: {}", source, e.mark.line + 1, e.msg));
   }
-  ld.outputs(root["outputs"]);
   return std::move(ld.model);
 }
 

@@ -49,8 +49,6 @@ double RotationalSpringDamper::power(const Model&, double, const State& x) const
 double RotationalSpringDamper::force(const Model&, double, const State& x, const Workspace&) const {
   return -k_ * (x.q_of(bj_).z() - x.q_of(bi_).z() - a0_) - c_ * (x.qd_of(bj_).z() - x.qd_of(bi_).z());
 }
-double RotationalSpringDamper::length(const Model&, const State& x) const {
-  return x.q_of(bj_).z() - x.q_of(bi_).z();
-}
+double RotationalSpringDamper::length(const Model&, const State& x) const { return x.q_of(bj_).z() - x.q_of(bi_).z(); }
 
 }  // namespace inerta::mbs

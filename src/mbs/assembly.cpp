@@ -1,8 +1,9 @@
 #include "inerta/mbs/assembly.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -45,11 +46,11 @@ State assemble(const Model& model, double t0, AssemblyReport* report) {
     if (rep.residual < tol) break;
     if (it == max_iter || !std::isfinite(rep.residual)) {
       int r = argmax_abs(ws.C);
-      throw NumericalError(fmt::format(
-          "assembly did not converge after {} Newton iterations: max |C| = {:.3g} in {}; "
-          "the tabulated positions may be too far from a configuration that satisfies the joints, "
-          "or the held coordinates over-constrain the mechanism",
-          it, rep.residual, row_name(model, r)));
+      throw NumericalError(
+          fmt::format("assembly did not converge after {} Newton iterations: max |C| = {:.3g} in {}; "
+                      "the tabulated positions may be too far from a configuration that satisfies the joints, "
+                      "or the held coordinates over-constrain the mechanism",
+                      it, rep.residual, row_name(model, r)));
     }
     for (int c = 0; c < nf; ++c) Jf.col(c) = ws.Cq.col(free[static_cast<std::size_t>(c)]);
     Eigen::VectorXd step = Jf.completeOrthogonalDecomposition().solve(-ws.C);  // minimum-norm step
@@ -110,11 +111,11 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
     if (Rn < 1e-11) break;
     if (it == max_iter || !std::isfinite(Rn)) {
       int k = argmax_abs(R.head(n));
-      throw NumericalError(fmt::format(
-          "static equilibrium did not converge after {} iterations: residual force {:.3g} on {}; "
-          "the model may have no stable equilibrium near the assembled configuration "
-          "(a free mechanism, or loads that cannot be balanced)",
-          it, rep.force_residual, model.coord_name(k)));
+      throw NumericalError(
+          fmt::format("static equilibrium did not converge after {} iterations: residual force {:.3g} on {}; "
+                      "the model may have no stable equilibrium near the assembled configuration "
+                      "(a free mechanism, or loads that cannot be balanced)",
+                      it, rep.force_residual, model.coord_name(k)));
     }
     // Jacobian: central differences in q, analytic −C_qᵀ in λ.
     for (int k = 0; k < n; ++k) {
@@ -134,10 +135,10 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
     }
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(J);
     if (qr.rank() < N) {
-      throw NumericalError(fmt::format(
-          "static equilibrium: the stiffness matrix is singular at the assembled configuration "
-          "(rank {} of {}); a coordinate has no stiffness (free mechanism) or the joints are redundant",
-          qr.rank(), N));
+      throw NumericalError(
+          fmt::format("static equilibrium: the stiffness matrix is singular at the assembled configuration "
+                      "(rank {} of {}); a coordinate has no stiffness (free mechanism) or the joints are redundant",
+                      qr.rank(), N));
     }
     Eigen::VectorXd dz = qr.solve(-R);
     // Backtracking line search on the scaled residual.

@@ -1,7 +1,8 @@
 #include "inerta/mbs/dynamics.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "inerta/error.hpp"
 
@@ -49,10 +50,10 @@ void evaluate_forces(const Model& model, double t, const State& x, Workspace& ws
 
 namespace {
 [[noreturn]] void singular(double t, const char* what, double ratio) {
-  throw NumericalError(fmt::format(
-      "t = {:.6g} s: {} is singular (pivot ratio {:.3g}); check for redundant joints, a body without "
-      "mass or inertia that is not constrained, or a mechanism in a singular position",
-      t, what, ratio));
+  throw NumericalError(
+      fmt::format("t = {:.6g} s: {} is singular (pivot ratio {:.3g}); check for redundant joints, a body without "
+                  "mass or inertia that is not constrained, or a mechanism in a singular position",
+                  t, what, ratio));
 }
 
 // Full system of eq. 4.12 by LU with partial pivoting (used when M + M_I is not positive definite).

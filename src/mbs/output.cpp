@@ -13,14 +13,18 @@ bool needs_accelerations(const Output& out) {
 double evaluate_output(const Output& out, const Model& model, double t, const State& x, const Workspace& ws) {
   double value = 0;
   switch (out.kind) {
-    case Output::Kind::Coordinate: value = x.q[3 * out.index + out.component]; break;
+    case Output::Kind::Coordinate:
+      value = x.q[3 * out.index + out.component];
+      break;
     case Output::Kind::Position:
     case Output::Kind::Velocity:
     case Output::Kind::Acceleration: {
       const Marker& mk = model.markers[static_cast<std::size_t>(out.index)];
       PointKinematics p = point_kinematics(ws.frame(mk.body), mk.u);
-      if (out.kind == Output::Kind::Position) value = p.r[out.component];
-      else if (out.kind == Output::Kind::Velocity) value = p.v[out.component];
+      if (out.kind == Output::Kind::Position)
+        value = p.r[out.component];
+      else if (out.kind == Output::Kind::Velocity)
+        value = p.v[out.component];
       else if (mk.body >= 0) {
         // r̈_P = R̈ + A_θ ū θ̈ − A ū θ̇²
         Vec3 a = ws.qdd.segment<3>(3 * mk.body);
@@ -34,7 +38,9 @@ double evaluate_output(const Output& out, const Model& model, double t, const St
     case Output::Kind::ElementLength:
       value = model.forces[static_cast<std::size_t>(out.index)]->length(model, x);
       break;
-    case Output::Kind::Reaction: value = joint_reaction(model, out.index, t, x, ws.lambda)[out.component]; break;
+    case Output::Kind::Reaction:
+      value = joint_reaction(model, out.index, t, x, ws.lambda)[out.component];
+      break;
     case Output::Kind::Multiplier:
       value = ws.lambda[model.joints[static_cast<std::size_t>(out.index)].row + out.component];
       break;

@@ -40,9 +40,7 @@ double Damper::power(const Model&, double, const State& x) const {
   double ld = kinematics(x).l_dot;
   return -c_ * ld * ld;
 }
-double Damper::force(const Model&, double, const State& x, const Workspace&) const {
-  return c_ * kinematics(x).l_dot;
-}
+double Damper::force(const Model&, double, const State& x, const Workspace&) const { return c_ * kinematics(x).l_dot; }
 
 // Inerter --------------------------------------------------------------------------------------
 bool Inerter::centripetal(const Model& model) const { return centripetal_ && model.options.centripetal; }
@@ -72,9 +70,7 @@ double Inerter::force(const Model& model, double, const State&, const Workspace&
 }
 
 // Constant axial force -------------------------------------------------------------------------
-void AxialForce::add(const Model&, double, const State&, Workspace& ws) const {
-  add_tension(F_, kinematics(ws), ws);
-}
+void AxialForce::add(const Model&, double, const State&, Workspace& ws) const { add_tension(F_, kinematics(ws), ws); }
 double AxialForce::energy(const Model&, double, const State& x) const { return F_ * kinematics(x).l; }
 
 }  // namespace inerta::mbs

@@ -33,8 +33,10 @@ std::size_t segment(const std::vector<double>& t, double time) {
 
 double TimeFunction::value(double time) const {
   switch (kind) {
-    case Kind::Constant: return offset;
-    case Kind::Sine: return offset + amplitude * std::sin(2 * std::numbers::pi * frequency * time + phase);
+    case Kind::Constant:
+      return offset;
+    case Kind::Sine:
+      return offset + amplitude * std::sin(2 * std::numbers::pi * frequency * time + phase);
     case Kind::Table: {
       if (t.size() == 1 || time <= t.front()) return v.front();
       if (time >= t.back()) return v.back();
@@ -48,7 +50,8 @@ double TimeFunction::value(double time) const {
 
 double TimeFunction::d1(double time) const {
   switch (kind) {
-    case Kind::Constant: return 0.0;
+    case Kind::Constant:
+      return 0.0;
     case Kind::Sine: {
       double w = 2 * std::numbers::pi * frequency;
       return amplitude * w * std::cos(w * time + phase);

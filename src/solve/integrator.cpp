@@ -2,6 +2,7 @@
 
 #include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
+#include <fmt/format.h>
 #include <nvector/nvector_serial.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
@@ -9,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <fmt/format.h>
 #include <memory>
 #include <stdexcept>
 #include <type_traits>
@@ -144,16 +144,20 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
   auto sample = [&](double t, const double* yv) {
     if (!observer) return;
     load_state(yv, n, x);
-    if (observer_needs_accelerations) mbs::accelerations(model, t, x, ws);
-    else ws.set_state(x);
+    if (observer_needs_accelerations)
+      mbs::accelerations(model, t, x, ws);
+    else
+      ws.set_state(x);
     observer(t, x, ws);
   };
 
   drift(t0, y);
   sample(t0, y);
   // One step at a time up to t_end; samples are interpolated inside each step (no step is forced).
-  if (opt.method == Method::Bdf) check(CVodeSetStopTime(s.mem, t_end), "CVodeSetStopTime");
-  else check(ERKStepSetStopTime(s.mem, t_end), "ERKStepSetStopTime");
+  if (opt.method == Method::Bdf)
+    check(CVodeSetStopTime(s.mem, t_end), "CVodeSetStopTime");
+  else
+    check(ERKStepSetStopTime(s.mem, t_end), "ERKStepSetStopTime");
   N_Vector yi = N_VClone(s.y);
   std::unique_ptr<std::remove_pointer_t<N_Vector>, void (*)(N_Vector)> yi_owner(yi, N_VDestroy);
   const long n_samples = std::lround(std::floor((t_end - t0) / dt_sample + 1e-9));

@@ -12,7 +12,7 @@ using namespace inerta;
 TEST(Assembly, CorrectsGapsAndHonoursHeldCoordinates) {
   mbs::Model m = io::load_model(inerta::testing::model_path("twobar.yaml"));
   m.bodies[1].q0 += mbs::Vec3(0.01, -0.02, 0.03);  // open gaps at B
-  m.held = {2};                                      // hold bar1.theta
+  m.held = {2};                                    // hold bar1.theta
   mbs::AssemblyReport rep;
   mbs::State x = mbs::assemble(m, 0.0, &rep);
   mbs::Workspace ws(m);

@@ -8,8 +8,8 @@ using namespace inerta;
 
 namespace {
 struct Balance {
-  double max_error = 0;    ///< max |E(t) − E(0) − W(t)|
-  double energy_scale = 0; ///< max |E(t) − E(0)|
+  double max_error = 0;     ///< max |E(t) − E(0) − W(t)|
+  double energy_scale = 0;  ///< max |E(t) − E(0)|
   double dissipated = 0;
 };
 

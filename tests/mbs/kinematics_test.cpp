@@ -1,12 +1,13 @@
 // Derivatives against finite differences: H and a_n of eqs. 3.18–3.19, l̈ of eq. 3.20, the
 // constraint Jacobian C_q, C_t and γ = Q_d of eqs. 4.2–4.4 for every joint type.
+#include "inerta/mbs/kinematics.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/dynamics.hpp"
-#include "inerta/mbs/kinematics.hpp"
 
 using namespace inerta;
 using namespace inerta::mbs;
@@ -84,7 +85,8 @@ Model joint_model(const std::string& joint) {
       "  - {name: b1, mass: 1, inertia: 0.1, position: [0, 0], markers: {p: [0.5, 0]}}\n"
       "  - {name: b2, mass: 1, inertia: 0.1, position: [1, 0], markers: {q: [-0.5, 0]}}\n"
       "joints:\n"
-      "  - {name: J, " + joint.substr(1) + "\n";
+      "  - {name: J, " +
+      joint.substr(1) + "\n";
   return io::parse_model(text, "joint-test.yaml");
 }
 }  // namespace

@@ -1,9 +1,9 @@
 // 1-DOF lumped mass with an inerter (spec/01 §1.2): linearised natural frequency and the
 // nonlinear response of eq. 3.14.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
 
 #include "support/reference_models.hpp"
 #include "support/run.hpp"

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "inerta/error.hpp"
-
 #include "support/reference_models.hpp"
 #include "support/run.hpp"
 

@@ -23,11 +23,12 @@ inline Series run(const mbs::Model& model, double t_end, double dt, const solve:
   Series s;
   s.out.resize(model.outputs.size());
   mbs::State x = mbs::assemble(model, 0.0);
-  s.stats = solve::integrate(model, x, 0.0, t_end, dt, opt, [&](double t, const mbs::State& xs, const mbs::Workspace& ws) {
-    s.t.push_back(t);
-    for (std::size_t k = 0; k < model.outputs.size(); ++k)
-      s.out[k].push_back(mbs::evaluate_output(model.outputs[k], model, t, xs, ws));
-  });
+  s.stats =
+      solve::integrate(model, x, 0.0, t_end, dt, opt, [&](double t, const mbs::State& xs, const mbs::Workspace& ws) {
+        s.t.push_back(t);
+        for (std::size_t k = 0; k < model.outputs.size(); ++k)
+          s.out[k].push_back(mbs::evaluate_output(model.outputs[k], model, t, xs, ws));
+      });
   return s;
 }
 

@@ -40,10 +40,10 @@ class RotationalSpringDamper : public ForceElement {
   RotationalSpringDamper(std::string name, int body_i, int body_j, double k, double angle0, double c)
       : ForceElement(std::move(name)), bi_(body_i), bj_(body_j), k_(k), a0_(angle0), c_(c) {}
   void add(const Model&, double t, const State& x, Workspace& ws) const override;
-  double energy(const Model&, double t, const State& x) const override;  // ½ k (Δθ − Δθ0)²
-  double power(const Model&, double t, const State& x) const override;   // −c Δθ̇²
+  double energy(const Model&, double t, const State& x) const override;                   // ½ k (Δθ − Δθ0)²
+  double power(const Model&, double t, const State& x) const override;                    // −c Δθ̇²
   double force(const Model&, double t, const State& x, const Workspace&) const override;  // moment on j
-  double length(const Model&, const State& x) const override;            // Δθ
+  double length(const Model&, const State& x) const override;                             // Δθ
 
  private:
   int bi_, bj_;

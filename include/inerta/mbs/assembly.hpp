@@ -10,10 +10,10 @@ namespace inerta::mbs {
 
 struct AssemblyReport {
   int iterations = 0;
-  double residual = 0;         ///< max |C| after assembly
-  double initial_residual = 0; ///< max |C| of the tabulated positions
-  Eigen::VectorXd dq;          ///< correction applied to the tabulated positions
-  int largest = -1;            ///< coordinate with the largest correction
+  double residual = 0;          ///< max |C| after assembly
+  double initial_residual = 0;  ///< max |C| of the tabulated positions
+  Eigen::VectorXd dq;           ///< correction applied to the tabulated positions
+  int largest = -1;             ///< coordinate with the largest correction
 };
 
 /// Newton solve of C(q, t0) = 0 from the tabulated positions with Model::held coordinates fixed

@@ -31,10 +31,14 @@ struct Joint {
 
   int rows() const {
     switch (type) {
-      case JointType::Revolute: return 2;
-      case JointType::Prismatic: return 2;
-      case JointType::Fixed: return 3;
-      case JointType::Driving: return 1;
+      case JointType::Revolute:
+        return 2;
+      case JointType::Prismatic:
+        return 2;
+      case JointType::Fixed:
+        return 3;
+      case JointType::Driving:
+        return 1;
     }
     return 0;
   }

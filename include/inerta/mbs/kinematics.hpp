@@ -55,9 +55,9 @@ inline PointKinematics point_kinematics(const Vec3& q, const Vec3& qd, const Vec
 struct StrutKinematics {
   Vec2 r, rd, e;
   double l = 0, l_dot = 0;
-  Vec6 J;                   ///< ∂l/∂[q_i; q_j]
-  double a_n_axial = 0;     ///< ê·a_n
-  double centripetal = 0;   ///< [ṙ·ṙ − (ṙ·ê)²]/l, the correction of eq. 3.9
+  Vec6 J;                  ///< ∂l/∂[q_i; q_j]
+  double a_n_axial = 0;    ///< ê·a_n
+  double centripetal = 0;  ///< [ṙ·ṙ − (ṙ·ê)²]/l, the correction of eq. 3.9
 };
 
 inline StrutKinematics strut_kinematics(const BodyFrame& fi, const Vec2& ui, const BodyFrame& fj, const Vec2& uj) {

@@ -16,8 +16,8 @@ namespace inerta::mbs {
 /// Rigid body; coordinates q = [x y θ] of the centre of mass (centroidal frame).
 struct Body {
   std::string name;
-  double mass = 0;     ///< kg
-  double inertia = 0;  ///< kg·m² about the centre of mass
+  double mass = 0;          ///< kg
+  double inertia = 0;       ///< kg·m² about the centre of mass
   Vec3 q0 = Vec3::Zero();   ///< tabulated initial position [x y θ]
   Vec3 qd0 = Vec3::Zero();  ///< initial velocity
 };
@@ -34,9 +34,9 @@ struct Options {
   Vec2 g = Vec2(0.0, -9.81);  ///< m/s², spec README
   double alpha = 5.0;         ///< Baumgarte, eq. 4.11
   double beta = 5.0;
-  bool centripetal = true;    ///< model-wide switch of the inerter correction (eq. 3.9)
-  double t_end = 10.0;        ///< default simulation end time, s
-  double sample = 0.01;       ///< default output sampling interval, s
+  bool centripetal = true;  ///< model-wide switch of the inerter correction (eq. 3.9)
+  double t_end = 10.0;      ///< default simulation end time, s
+  double sample = 0.01;     ///< default output sampling interval, s
 };
 
 struct Model {

@@ -21,7 +21,7 @@ struct Output {
   };
   std::string name;
   Kind kind = Kind::Coordinate;
-  int index = 0;      ///< body, marker, force element or joint index
+  int index = 0;  ///< body, marker, force element or joint index
   int component = 0;
   double scale = 1.0;  ///< multiplies the value (e.g. −1 to report a compression as positive)
 };

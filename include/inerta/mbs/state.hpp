@@ -26,19 +26,19 @@ struct Workspace {
   const BodyFrame& frame(int body) const { return body < 0 ? ground_ : frames[static_cast<std::size_t>(body)]; }
   std::vector<BodyFrame> frames;
 
-  Eigen::MatrixXd M;       ///< M + M_I (eq. 3.33), n×n
-  Eigen::VectorXd Q;       ///< Q_e + Q_Iv, n
-  Eigen::VectorXd C, Ct;   ///< constraint values and ∂C/∂t, m
-  Eigen::MatrixXd Cq;      ///< constraint Jacobian, m×n
-  Eigen::VectorXd gamma;   ///< Q_d of eq. 4.3, m
+  Eigen::MatrixXd M;      ///< M + M_I (eq. 3.33), n×n
+  Eigen::VectorXd Q;      ///< Q_e + Q_Iv, n
+  Eigen::VectorXd C, Ct;  ///< constraint values and ∂C/∂t, m
+  Eigen::MatrixXd Cq;     ///< constraint Jacobian, m×n
+  Eigen::VectorXd gamma;  ///< Q_d of eq. 4.3, m
   // Schur-complement solve of eq. 4.12 when M + M_I is positive definite (the usual case):
   Eigen::LLT<Eigen::MatrixXd> llt_M;  ///< M + M_I = L Lᵀ
   Eigen::MatrixXd Y;                  ///< L⁻¹ C_qᵀ, n×m
   Eigen::MatrixXd S;                  ///< C_q (M + M_I)⁻¹ C_qᵀ = Yᵀ Y, m×m
   Eigen::LLT<Eigen::MatrixXd> llt_S;
-  Eigen::VectorXd z, c;               ///< L⁻¹ Q (n), constraint right-hand side (m)
+  Eigen::VectorXd z, c;  ///< L⁻¹ Q (n), constraint right-hand side (m)
   // Fallback for a singular M + M_I (e.g. a body without inertia whose rotation is constrained):
-  Eigen::MatrixXd K;                  ///< system matrix of eq. 4.12, (n+m)²
+  Eigen::MatrixXd K;  ///< system matrix of eq. 4.12, (n+m)²
   Eigen::VectorXd rhs, sol;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
   Eigen::VectorXd qdd;     ///< result: accelerations

@@ -8,10 +8,10 @@ namespace inerta::mbs {
 struct TimeFunction {
   enum class Kind { Constant, Sine, Table };
   Kind kind = Kind::Constant;
-  double offset = 0.0;     ///< Constant value, or the sine's mean.
-  double amplitude = 0.0;  ///< Sine: f = offset + amplitude sin(2π frequency t + phase).
-  double frequency = 0.0;  ///< Hz.
-  double phase = 0.0;      ///< rad.
+  double offset = 0.0;       ///< Constant value, or the sine's mean.
+  double amplitude = 0.0;    ///< Sine: f = offset + amplitude sin(2π frequency t + phase).
+  double frequency = 0.0;    ///< Hz.
+  double phase = 0.0;        ///< rad.
   std::vector<double> t, v;  ///< Table: piecewise linear in t (strictly increasing), held outside.
 
   static TimeFunction constant(double value);

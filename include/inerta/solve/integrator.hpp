@@ -21,7 +21,7 @@ struct IntegratorOptions {
   Method method = Method::Rk;  ///< default chosen by measurement: see docs/integrators.md
   double rtol = 1e-6;
   double atol = 1e-8;
-  double max_step = 0;         ///< 0 = unlimited
+  double max_step = 0;  ///< 0 = unlimited
   long max_steps = 50'000'000;
 };
 
