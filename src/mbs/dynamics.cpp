@@ -94,24 +94,25 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
     solve_kkt(model, t, ws);
     return;
   }
-  const auto L = ws.llt_M.matrixL();
-  ws.z = ws.Q;
-  L.solveInPlace(ws.z);
+  // One triangular solve for [Y z] = L⁻¹ [C_qᵀ Q].
+  ws.YZ.leftCols(m) = ws.Cq.transpose();
+  ws.YZ.col(m) = ws.Q;
+  ws.llt_M.matrixL().solveInPlace(ws.YZ);
+  const auto Y = ws.YZ.leftCols(m);
+  auto z = ws.YZ.col(m);
   if (m > 0) {
-    ws.Y = ws.Cq.transpose();
-    L.solveInPlace(ws.Y);
-    ws.S.noalias() = ws.Y.transpose() * ws.Y;
+    ws.S.noalias() = Y.transpose().lazyProduct(Y);  // coefficient-based: faster than GEMM at this size
     ws.llt_S.compute(ws.S);
     const auto dS = ws.llt_S.matrixLLT().diagonal();
     if (ws.llt_S.info() != Eigen::Success) singular(t, "the constraint Jacobian C_q", 0.0);
     if (!(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
       singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? std::pow(dS.minCoeff() / dS.maxCoeff(), 2) : 0.0);
-    ws.lambda.noalias() = ws.Y.transpose() * ws.z;
+    ws.lambda.noalias() = Y.transpose() * z;
     ws.lambda -= ws.c;
     ws.llt_S.solveInPlace(ws.lambda);
-    ws.z.noalias() -= ws.Y * ws.lambda;
+    z.noalias() -= Y * ws.lambda;
   }
-  ws.qdd = ws.z;
+  ws.qdd = z;
   ws.llt_M.matrixU().solveInPlace(ws.qdd);
 }
 

@@ -65,10 +65,9 @@ Workspace::Workspace(const Model& model) {
   Cq = Eigen::MatrixXd::Zero(m, n);
   gamma = Eigen::VectorXd::Zero(m);
   llt_M = Eigen::LLT<Eigen::MatrixXd>(n);
-  Y = Eigen::MatrixXd::Zero(n, m);
+  YZ = Eigen::MatrixXd::Zero(n, m + 1);
   S = Eigen::MatrixXd::Zero(m, m);
   llt_S = Eigen::LLT<Eigen::MatrixXd>(m);
-  z = Eigen::VectorXd::Zero(n);
   c = Eigen::VectorXd::Zero(m);
   K = Eigen::MatrixXd::Zero(n + m, n + m);
   rhs = Eigen::VectorXd::Zero(n + m);

@@ -33,7 +33,7 @@ struct Workspace {
   Eigen::VectorXd gamma;  ///< Q_d of eq. 4.3, m
   // Schur-complement solve of eq. 4.12 when M + M_I is positive definite (the usual case):
   Eigen::LLT<Eigen::MatrixXd> llt_M;  ///< M + M_I = L Lᵀ
-  Eigen::MatrixXd Y;                  ///< L⁻¹ C_qᵀ, n×m
+  Eigen::MatrixXd YZ;                 ///< [Y z] = L⁻¹ [C_qᵀ Q], n×(m+1)
   Eigen::MatrixXd S;                  ///< C_q (M + M_I)⁻¹ C_qᵀ = Yᵀ Y, m×m
   Eigen::LLT<Eigen::MatrixXd> llt_S;
   Eigen::VectorXd z, c;  ///< L⁻¹ Q (n), constraint right-hand side (m)
