@@ -1,0 +1,50 @@
+#pragma once
+// Series–parallel spring (k) / damper (c) / inerter (b) networks (spec/03 §3.1), written as
+// expressions: "|" parallel, "-" series, parentheses, element names starting with k, c or b
+// ("k", "k1", "c_2", "b"). Mixing "|" and "-" at one level without parentheses is an error.
+// Element values are bound by name; 0 means open and inf rigid, simplified algebraically.
+#include <complex>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace inerta::network {
+
+/// Malformed expression or parameter set; `column` (1-based) points at the problem, 0 if none.
+struct NetworkError : std::runtime_error {
+  NetworkError(const std::string& what, int column) : std::runtime_error(what), column(column) {}
+  int column;
+};
+
+struct Network {
+  enum class Kind { Spring, Damper, Inerter, Series, Parallel, Open, Rigid };
+  Kind kind = Kind::Open;
+  std::string name;   ///< element name (leaves)
+  double value = 0;   ///< element value, SI (N/m, N·s/m, kg); set by assign()
+  std::vector<Network> children;
+  int column = 0;     ///< position in the expression, 1-based
+
+  bool is_element() const { return kind == Kind::Spring || kind == Kind::Damper || kind == Kind::Inerter; }
+};
+
+using Params = std::map<std::string, double>;
+
+/// Parses an expression such as "b-(k|c)". Throws NetworkError with the column of the error.
+Network parse(const std::string& text);
+/// Element names in order of appearance (each once).
+std::vector<std::string> parameter_names(const Network& net);
+/// Sets every element's value from `params`; throws NetworkError naming missing, unknown or
+/// negative parameters.
+Network assign(const Network& net, const Params& params);
+/// Removes open (value 0) and rigid (value ∞) elements algebraically: a parallel branch with a
+/// rigid member is rigid, a series chain with an open member is open; open parallel members and
+/// rigid series members drop out. The result is a network without 0/∞ values, or Open or Rigid.
+Network simplify(const Network& net);
+/// Readable form, e.g. "b-(k|c)", with values when `with_values`.
+std::string to_string(const Network& net, bool with_values = false);
+
+/// Admittance Y(s) = F / relative velocity (spec/03 §3.1), evaluated directly on the tree.
+std::complex<double> admittance(const Network& net, std::complex<double> s);
+
+}  // namespace inerta::network
