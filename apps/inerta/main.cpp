@@ -6,10 +6,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <complex>
 #include <memory>
+#include <sstream>
 #include <numbers>
 
 #include "inerta/error.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/network/realisation.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -29,6 +33,8 @@ const char* joint_type_name(mbs::JointType t) {
       return "fixed";
     case mbs::JointType::Driving:
       return "driving";
+    case mbs::JointType::Distance:
+      return "distance";
   }
   return "?";
 }
@@ -48,12 +54,14 @@ void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyR
 
 int cmd_check(const std::string& path) {
   mbs::Model model = io::load_model(path);
+  for (const auto& note : model.notes) fmt::print("note: {}\n", note);
   fmt::print("model: {} ({})\n", model.name, path);
   fmt::print("bodies ({}):\n", model.bodies.size());
   for (const auto& b : model.bodies)
     fmt::print("  {:<16} m = {:<10.6g} kg  I = {:<10.6g} kg·m²  x = {:<10.6g} y = {:<10.6g} θ = {:.6g} rad\n", b.name,
                b.mass, b.inertia, b.q0.x(), b.q0.y(), b.q0.z());
   fmt::print("coordinates: {}\n", model.n_coords());
+  if (model.n_states() > 0) fmt::print("internal states of network struts: {}\n", model.n_states());
   fmt::print("joints ({}), constraint equations: {}\n", model.joints.size(), model.n_constraints());
   for (const auto& j : model.joints)
     fmt::print("  {:<16} {:<10} {} - {}  ({} equation{})\n", j.name, joint_type_name(j.type),
@@ -99,6 +107,7 @@ struct SimulateArgs {
 
 int cmd_simulate(const SimulateArgs& a) {
   mbs::Model model = io::load_model(a.model);
+  for (const auto& note : model.notes) fmt::print(stderr, "note: {}\n", note);
   if (a.no_centripetal) model.options.centripetal = false;
   const double t_end = a.t_end > 0 ? a.t_end : model.options.t_end;
   const double dt = a.sample > 0 ? a.sample : model.options.sample;
@@ -181,6 +190,78 @@ int cmd_simulate(const SimulateArgs& a) {
 
 }  // namespace
 
+// "F0:DF:F1" → F0, F0 + DF, ..., F1 (inclusive within 1e-9 DF).
+std::vector<double> frequency_range(const std::string& spec) {
+  double f0 = 0, df = 0, f1 = 0;
+  char c1 = 0, c2 = 0;
+  std::istringstream in(spec);
+  if (!(in >> f0 >> c1 >> df >> c2 >> f1) || c1 != ':' || c2 != ':' || !(in >> std::ws).eof() || !(f0 >= 0) ||
+      !(df > 0) || !(f1 >= f0))
+    throw CLI::ValidationError("--freq", "expected F0:DF:F1 in Hz with 0 <= F0 <= F1 and DF > 0, got '" + spec + "'");
+  std::vector<double> f;
+  const long n = std::lround(std::floor((f1 - f0) / df + 1e-9));
+  for (long k = 0; k <= n; ++k) f.push_back(f0 + static_cast<double>(k) * df);
+  return f;
+}
+
+struct AdmittanceArgs {
+  std::string layout, freq, out;
+  std::vector<std::string> params;
+};
+
+int cmd_admittance(const AdmittanceArgs& a) {
+  network::Params params;
+  for (const auto& p : a.params) {
+    auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0) throw CLI::ValidationError("--param", "expected NAME=VALUE, got '" + p + "'");
+    std::string name = p.substr(0, eq), v = p.substr(eq + 1);
+    double value = 0;
+    if (v == "inf") value = INFINITY;
+    else if (!CLI::detail::lexical_cast(v, value)) throw CLI::ValidationError("--param", "not a number in '" + p + "'");
+    params[name] = value;
+  }
+  network::Network net;
+  try {
+    net = network::resolve(a.layout, params);
+  } catch (const network::NetworkError& e) {
+    std::string where = e.column > 0 ? fmt::format("\n  {}\n  {:>{}}", a.layout, "^", e.column) : "";
+    throw ModelError(fmt::format("network '{}': {}{}", a.layout, e.what(), where));
+  }
+  const std::vector<double> f = frequency_range(a.freq);
+  network::Network s = network::simplify(net);
+  std::FILE* info = a.out.empty() ? stderr : stdout;
+  fmt::print(info, "network: {}  →  {}\n", network::to_string(net, true), network::to_string(s, true));
+  if (s.kind == network::Network::Kind::Rigid)
+    throw ModelError(fmt::format("network '{}' is rigid with these values: its admittance is infinite", a.layout));
+  if (s.kind != network::Network::Kind::Open) {
+    network::Rational y = network::rational_admittance(s);
+    auto poly = [](const network::Poly& p) {
+      std::string t;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p[i] != 0) t += fmt::format("{}{:g}{}", t.empty() ? "" : " + ", p[i], i == 0 ? "" : i == 1 ? " s" : fmt::format(" s^{}", i));
+      return t.empty() ? std::string("0") : t;
+    };
+    fmt::print(info, "Y(s) = F/v = ({}) / ({})\n", poly(y.num), poly(y.den));
+  } else {
+    fmt::print(info, "the network is open with these values: Y = 0\n");
+  }
+  std::FILE* out = stdout;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
+  if (!a.out.empty()) {
+    file.reset(std::fopen(a.out.c_str(), "w"));
+    if (!file) throw std::runtime_error(fmt::format("cannot write '{}'", a.out));
+    out = file.get();
+  }
+  fmt::print(out, "f_hz,mag,phase_deg,re,im\n");
+  for (double fk : f) {
+    std::complex<double> y = network::admittance(s, {0.0, 2 * std::numbers::pi * fk});
+    fmt::print(out, "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", fk, std::abs(y), std::arg(y) * 180 / std::numbers::pi,
+               y.real(), y.imag());
+  }
+  if (!a.out.empty()) fmt::print(info, "wrote {} ({} frequencies)\n", a.out, f.size());
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
@@ -211,6 +292,14 @@ int main(int argc, char** argv) {
   sim->add_flag("--from-equilibrium", sa.from_equilibrium, "Start from the static equilibrium under all loads");
   sim->add_option("--steady-from", sa.steady_from, "Print min/max/peak-to-peak/mean of every output for t >= T");
 
+  AdmittanceArgs aa;
+  auto* adm = app.add_subcommand("admittance", "Admittance Y = force / relative velocity of a network (CSV)");
+  adm->add_option("layout", aa.layout, "Named layout (S2-default, S1-3, ...) or expression such as \"b-(k|c)\"")
+      ->required();
+  adm->add_option("--param", aa.params, "Element value NAME=VALUE (SI; 0 = open, inf = rigid); repeatable");
+  adm->add_option("--freq", aa.freq, "Frequencies F0:DF:F1 in Hz")->required();
+  adm->add_option("--out", aa.out, "CSV file (default: standard output)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -219,6 +308,7 @@ int main(int argc, char** argv) {
   try {
     if (check->parsed()) return cmd_check(check_model);
     if (sim->parsed()) return cmd_simulate(sa);
+    if (adm->parsed()) return cmd_admittance(aa);
   } catch (const ModelError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;

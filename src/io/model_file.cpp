@@ -12,7 +12,9 @@
 #include "inerta/error.hpp"
 #include "inerta/mbs/applied_forces.hpp"
 #include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/network_strut.hpp"
 #include "inerta/mbs/struts.hpp"
+#include "inerta/network/layouts.hpp"
 
 namespace inerta::io {
 
@@ -309,13 +311,14 @@ struct Loader {
     if (!n.IsDefined()) return;
     if (!n.IsSequence()) rd.fail(n, "forces", "expected a list of force elements");
     names_unique(n, "force element");
-    mbs::State x0{q_init, Eigen::VectorXd::Zero(q_init.size())};
+    mbs::State x0{q_init, Eigen::VectorXd::Zero(q_init.size()), {}};
     for (const auto& f : n) {
       std::string name = rd.text(f, "name", "force element");
       if (name == "gravity") rd.fail(f["name"], "name", "'gravity' is reserved (switch it in options)");
       std::string what = "force element '" + name + "'";
       std::string type = rd.text(f, "type", what);
-      if (type == "spring" || type == "damper" || type == "inerter" || type == "axial_force") {
+      if (type == "spring" || type == "damper" || type == "inerter" || type == "axial_force" || type == "network" ||
+          type == "actuator") {
         auto [mi, mj] = marker_pair(f, what);
         int bi = mk(mi).body, bj = mk(mj).body;
         Vec2 ui = mk(mi).u, uj = mk(mj).u;
@@ -323,14 +326,18 @@ struct Loader {
         double l_init = mbs::Spring("", bi, ui, bj, uj, 0, 0).length(model, x0);
         if (!(l_init > 0))
           rd.fail(f["markers"], "markers", "the terminals coincide in the initial configuration (zero length)");
-        if (type == "spring") {
-          rd.keys(f, what, {"name", "type", "markers", "k", "free_length"});
-          double L0 = l_init;
+        auto free_length = [&] {
           YAML::Node fl = f["free_length"];
-          if (fl.IsDefined() && !(fl.IsScalar() && fl.Scalar() == "initial")) {
-            L0 = rd.number(fl, "free_length");
-            if (!(L0 >= 0)) rd.fail(fl, "free_length", "must be >= 0 (m) or 'initial'");
-          }
+          if (!fl.IsDefined() || (fl.IsScalar() && fl.Scalar() == "initial")) return l_init;
+          double L0 = rd.number(fl, "free_length");
+          if (!(L0 >= 0)) rd.fail(fl, "free_length", "must be >= 0 (m) or 'initial'");
+          return L0;
+        };
+        if (type == "network" || type == "actuator") {
+          strut_network(f, name, what, type, bi, ui, bj, uj, free_length());
+        } else if (type == "spring") {
+          rd.keys(f, what, {"name", "type", "markers", "k", "free_length"});
+          double L0 = free_length();
           model.forces.push_back(std::make_shared<mbs::Spring>(name, bi, ui, bj, uj, rd.nonnegative(f, "k", what), L0));
         } else if (type == "damper") {
           rd.keys(f, what, {"name", "type", "markers", "c"});
@@ -385,6 +392,78 @@ struct Loader {
     }
   }
 
+  // A network strut or an actuator (spec/03): the network by layout name or expression, values in
+  // `params`; an open network is dropped and a rigid one becomes a distance joint (both noted).
+  void strut_network(const YAML::Node& f, const std::string& name, const std::string& what, const std::string& type,
+                     int bi, Vec2 ui, int bj, Vec2 uj, double l_ref) {
+    const bool act = type == "actuator";
+    if (act)
+      rd.keys(f, what,
+              {"name", "type", "markers", "network", "params", "free_length", "centripetal", "constant_force",
+               "piston_mass", "friction", "friction_velocity"});
+    else
+      rd.keys(f, what, {"name", "type", "markers", "network", "params", "free_length", "centripetal"});
+    YAML::Node nn = f["network"];
+    std::string text = act && !nn.IsDefined() ? "S2-default" : rd.text(rd.need(f, "network", what), "network");
+    network::Params params;
+    if (YAML::Node p = f["params"]; p.IsDefined()) {
+      if (!p.IsMap()) rd.fail(p, "params", "expected a mapping element: value, e.g. {b: 10, k: 100}");
+      for (auto it = p.begin(); it != p.end(); ++it) {
+        std::string k = rd.text(it->first, "params");
+        const YAML::Node& v = it->second;
+        double val = v.IsScalar() && (v.Scalar() == "inf" || v.Scalar() == ".inf") ? INFINITY : rd.number(v, k);
+        params[k] = val;
+      }
+    }
+    network::Network net;
+    try {
+      net = network::simplify(network::resolve(text, params));
+    } catch (const network::NetworkError& e) {
+      YAML::Node at = e.column > 0 || !f["params"].IsDefined() ? (nn.IsDefined() ? nn : f) : f["params"];
+      rd.fail(at, e.column > 0 ? "network" : "params",
+              e.column > 0 ? fmt::format("'{}': column {}: {}", text, e.column, e.what())
+                           : fmt::format("network '{}': {}", text, e.what()));
+    }
+    const bool corr = f["centripetal"].IsDefined() ? rd.boolean(f["centripetal"], "centripetal") : true;
+    mbs::Actuator::Params ap;
+    if (act) {
+      ap.constant_force = rd.number_or(f, "constant_force", 0.0);
+      ap.piston_mass = rd.number_or(f, "piston_mass", 0.0);
+      ap.friction = rd.number_or(f, "friction", 0.0);
+      ap.friction_velocity = rd.number_or(f, "friction_velocity", 1e-3);
+      if (ap.piston_mass < 0) rd.fail(f["piston_mass"], "piston_mass", "must be >= 0 (kg)");
+      if (ap.friction < 0) rd.fail(f["friction"], "friction", "must be >= 0 (N)");
+      if (!(ap.friction_velocity > 0)) rd.fail(f["friction_velocity"], "friction_velocity", "must be > 0 (m/s)");
+    }
+    if (net.kind == network::Network::Kind::Rigid) {
+      if (act)
+        rd.fail(f, what,
+                fmt::format("the actuator's network '{}' is rigid with these values; the pantograph would be locked",
+                            text));
+      mbs::Joint jt;
+      jt.name = name;
+      jt.type = mbs::JointType::Distance;
+      jt.body_i = bi, jt.body_j = bj, jt.u_i = ui, jt.u_j = uj, jt.length0 = l_ref;
+      model.joints.push_back(jt);
+      model.notes.push_back(
+          fmt::format("{}: network '{}' is rigid with these values; it is a distance joint '{}'", what, text, name));
+      return;
+    }
+    if (net.kind == network::Network::Kind::Open) {
+      model.notes.push_back(
+          fmt::format("{}: network '{}' is open with these values; it exerts {}", what, text,
+                      act ? "only the actuator's constant force, friction and piston mass" : "no force"));
+      net = network::Network{network::Network::Kind::Damper, "c", 0.0, {}, 0};  // exerts no force
+    }
+    int offset = 0;
+    for (const auto& e : model.forces) offset += e->n_states();
+    if (act) {
+      model.forces.push_back(std::make_shared<mbs::Actuator>(name, bi, ui, bj, uj, net, l_ref, offset, ap, corr));
+    } else {
+      model.forces.push_back(std::make_shared<mbs::NetworkStrut>(name, bi, ui, bj, uj, net, l_ref, offset, corr));
+    }
+  }
+
   int component(const YAML::Node& o, const std::string& what, std::initializer_list<const char*> names) const {
     std::string c = rd.text(o, "component", what);
     int k = 0;
@@ -411,6 +490,12 @@ struct Loader {
       auto element = [&] {
         std::string e = rd.text(o, "element", what);
         int k = model.find_force(e);
+        int j = model.find_joint(e);
+        if (k < 0 && j >= 0 && model.joints[static_cast<std::size_t>(j)].type == mbs::JointType::Distance)
+          rd.fail(o["element"], "element",
+                  fmt::format("'{}' is a rigid network (a distance joint); expected type: multiplier, joint: {}, "
+                              "component: 0 for its tension",
+                              e, e));
         if (k < 0) rd.fail(o["element"], "element", fmt::format("unknown force element '{}'", e));
         return k;
       };
@@ -503,6 +588,7 @@ mbs::Model parse_model(const std::string& text, const std::string& source) {
     try {
       mbs::State x = mbs::assemble(ld.model, 0.0);
       ld.forces(root["forces"], x.q);
+      ld.model.finalize();  // internal states, and distance joints of rigid networks
     } catch (const NumericalError& e) {
       throw ModelError(fmt::format("{}: {}", source, e.what()));
     }

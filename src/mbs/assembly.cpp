@@ -27,7 +27,7 @@ int argmax_abs(const Eigen::VectorXd& v) {
 
 State assemble(const Model& model, double t0, AssemblyReport* report) {
   const int n = model.n_coords(), m = model.n_constraints();
-  State x{model.q0(), model.qd0()};
+  State x{model.q0(), model.qd0(), Eigen::VectorXd::Zero(model.n_states())};
   Workspace ws(model);
   std::vector<int> free;
   for (int k = 0; k < n; ++k)
@@ -76,9 +76,14 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
   x.qd.setZero();
   const Eigen::VectorXd q_start = x.q;
 
-  // Residual R(q, λ) = [Q(q) − C_qᵀ λ; C(q)].
+  // Residual R(q, λ) = [Q(q) − C_qᵀ λ; C(q)], internal states relaxed for q.
+  auto at_rest = [&](const Eigen::VectorXd& q) {
+    State s{q, x.qd, Eigen::VectorXd::Zero(model.n_states())};
+    for (const auto& f : model.forces) f->relax(model, s);
+    return s;
+  };
   auto residual = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, Eigen::VectorXd& R) {
-    State s{q, x.qd};
+    State s = at_rest(q);
     evaluate_forces(model, t0, s, ws);
     evaluate_constraints(model, t0, s, ws);
     R.head(n) = ws.Q - ws.Cq.transpose() * lambda;
@@ -88,7 +93,7 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
   // Initial multipliers: least squares of C_qᵀ λ = Q.
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m);
   {
-    State s{x.q, x.qd};
+    State s = at_rest(x.q);
     evaluate_forces(model, t0, s, ws);
     evaluate_constraints(model, t0, s, ws);
     if (m > 0) lambda = ws.Cq.transpose().completeOrthogonalDecomposition().solve(ws.Q);
@@ -128,7 +133,7 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
       J.col(k) = (Rp - Rm) / (2 * h);
     }
     {
-      State s{x.q, x.qd};
+      State s = at_rest(x.q);
       evaluate_constraints(model, t0, s, ws);
       J.block(0, n, n, m) = -ws.Cq.transpose();
       J.block(n, n, m, m).setZero();
@@ -151,6 +156,7 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
     lambda += s * dz.tail(m);
     rep.iterations = it + 1;
   }
+  x = at_rest(x.q);
   Eigen::VectorXd move = x.q - q_start;
   rep.largest = argmax_abs(move);
   rep.max_move = n ? move.cwiseAbs().maxCoeff() : 0.0;

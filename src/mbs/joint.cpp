@@ -48,6 +48,16 @@ int evaluate_joint(const Joint& jt, double t, const BodyFrame& fi, const BodyFra
       r.gamma = -(n.dot(pj.a_bias - pi.a_bias) + 2 * wi * dd.dot(nt) - wi * wi * d.dot(n));
       break;
     }
+    case JointType::Distance: {
+      // C = l − L0, C_q = J, C̈ = J q̈ + ê·a_n + [ṙ·ṙ − l̇²]/l (eqs. 3.18–3.20).
+      StrutKinematics s = strut_kinematics(fi, jt.u_i, fj, jt.u_j);
+      ConstraintRow& r = rows[0];
+      r.C = s.l - jt.length0;
+      r.gi = s.J.head<3>();
+      r.gj = s.J.tail<3>();
+      r.gamma = -(s.a_n_axial + s.centripetal);
+      break;
+    }
     case JointType::Driving: {
       ConstraintRow& r = rows[0];
       double f = jt.value0 + jt.motion.value(t);

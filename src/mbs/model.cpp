@@ -36,6 +36,12 @@ std::string Model::coord_name(int k) const {
 }
 
 void Model::finalize() {
+  n_states_ = 0;
+  for (const auto& f : forces) {
+    if (f->n_states() > 0 && f->state_offset() != n_states_)
+      throw std::logic_error("force element '" + f->name() + "': internal-state offset out of order");
+    n_states_ += f->n_states();
+  }
   n_constraints_ = 0;
   for (Joint& j : joints) {
     j.row = n_constraints_;
@@ -75,6 +81,7 @@ Workspace::Workspace(const Model& model) {
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + m);
   frames.resize(model.bodies.size());
   qdd = Eigen::VectorXd::Zero(n);
+  zd = Eigen::VectorXd::Zero(model.n_states());
   lambda = Eigen::VectorXd::Zero(m);
 }
 

@@ -33,25 +33,27 @@ struct Problem {
   const mbs::Model& model;
   mbs::State x;
   mbs::Workspace ws;
-  int n;
+  int n, nz;
   std::exception_ptr error;
   std::string solver_message;
 };
 
-void load_state(const double* y, int n, mbs::State& x) {
+void load_state(const double* y, int n, int nz, mbs::State& x) {
   x.q = Eigen::Map<const Eigen::VectorXd>(y, n);
   x.qd = Eigen::Map<const Eigen::VectorXd>(y + n, n);
+  x.z = Eigen::Map<const Eigen::VectorXd>(y + 2 * n, nz);
 }
 
 // ẏ = [q̇; q̈(q, q̇, t)]
 int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
   auto* p = static_cast<Problem*>(user);
   try {
-    load_state(N_VGetArrayPointer(y), p->n, p->x);
+    load_state(N_VGetArrayPointer(y), p->n, p->nz, p->x);
     mbs::accelerations(p->model, t, p->x, p->ws);
     double* yd = N_VGetArrayPointer(ydot);
     Eigen::Map<Eigen::VectorXd>(yd, p->n) = p->x.qd;
     Eigen::Map<Eigen::VectorXd>(yd + p->n, p->n) = p->ws.qdd;
+    Eigen::Map<Eigen::VectorXd>(yd + 2 * p->n, p->nz) = p->ws.zd;
     return 0;
   } catch (...) {
     p->error = std::current_exception();
@@ -92,17 +94,19 @@ void check(int flag, const char* what) {
 RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_end, double dt_sample,
                    const IntegratorOptions& opt, const Observer& observer, bool observer_needs_accelerations) {
   const auto wall0 = std::chrono::steady_clock::now();
-  const int n = model.n_coords(), N = 2 * n;
+  const int n = model.n_coords(), nz = model.n_states(), N = 2 * n + nz;
   if (!(dt_sample > 0)) throw std::invalid_argument("sample interval must be > 0");
   if (!(t_end >= t0)) throw std::invalid_argument("t_end must be >= t0");
   if (!(opt.rtol > 0) || !(opt.atol > 0)) throw std::invalid_argument("rtol and atol must be > 0");
 
-  Problem p{model, x, mbs::Workspace(model), n, nullptr, {}};
+  if (x.z.size() != nz) throw std::invalid_argument("state has the wrong number of internal states");
+  Problem p{model, x, mbs::Workspace(model), n, nz, nullptr, {}};
   Sundials s(opt.method);
   s.y = N_VNew_Serial(N, s.ctx);
   double* y = N_VGetArrayPointer(s.y);
   Eigen::Map<Eigen::VectorXd>(y, n) = x.q;
   Eigen::Map<Eigen::VectorXd>(y + n, n) = x.qd;
+  Eigen::Map<Eigen::VectorXd>(y + 2 * n, nz) = x.z;
 
   if (opt.method == Method::Bdf) {
     s.mem = CVodeCreate(CV_BDF, s.ctx);
@@ -133,7 +137,7 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
   // Constraint drift of the integrator's own solution, checked after every step.
   auto drift = [&](double t, const double* yv) {
     if (model.n_constraints() == 0) return;
-    load_state(yv, n, x);
+    load_state(yv, n, nz, x);
     mbs::evaluate_constraints(model, t, x, ws);
     double v = ws.C.cwiseAbs().maxCoeff();
     if (v > stats.max_violation) stats.max_violation = v, stats.t_max_violation = t;
@@ -143,7 +147,7 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
   };
   auto sample = [&](double t, const double* yv) {
     if (!observer) return;
-    load_state(yv, n, x);
+    load_state(yv, n, nz, x);
     if (observer_needs_accelerations)
       mbs::accelerations(model, t, x, ws);
     else
@@ -189,7 +193,7 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
     }
   }
   if (t_end - t_last_sample > eps) sample(t_end, y);  // t_end off the sampling grid
-  load_state(y, n, x);
+  load_state(y, n, nz, x);
 
   if (opt.method == Method::Bdf) {
     CVodeGetNumSteps(s.mem, &stats.steps);

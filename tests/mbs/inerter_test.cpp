@@ -35,7 +35,7 @@ TEST(Inerter, ForceEqualsEquation3_10ForRandomStates) {
     Workspace ws(model);
     const auto& inerter = *model.forces[0];
     for (int trial = 0; trial < 50; ++trial) {
-      State x{Eigen::VectorXd(6), Eigen::VectorXd(6)};
+      State x{Eigen::VectorXd(6), Eigen::VectorXd(6), {}};
       x.q << u(rng), u(rng), u(rng), 3 + u(rng), u(rng), u(rng);
       for (int k = 0; k < 6; ++k) x.qd[k] = u(rng);
       Eigen::VectorXd qdd(6);
@@ -67,7 +67,7 @@ TEST(Inerter, MassTermIsRankOneAndMatchesForce) {
   // eq. 3.33: F = b l̈ must equal what the assembled M_I and Q_Iv produce for any q̈.
   Model model = two_bodies(true);
   Workspace ws(model);
-  State x{Eigen::VectorXd(6), Eigen::VectorXd(6)};
+  State x{Eigen::VectorXd(6), Eigen::VectorXd(6), {}};
   x.q << 0.1, -0.2, 0.3, 1.4, 0.6, -0.5;
   x.qd << 0.5, -1, 2, 0.3, 0.7, -1.5;
   evaluate_forces(model, 0, x, ws);

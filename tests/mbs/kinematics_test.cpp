@@ -100,7 +100,7 @@ TEST(Constraints, JacobianCtAndGammaAgainstFiniteDifferences) {
     ASSERT_GT(m, 0);
     Workspace ws(model);
     for (int trial = 0; trial < 10; ++trial) {
-      State x{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+      State x{Eigen::VectorXd(n), Eigen::VectorXd(n), {}};
       x.q << rand3(1), rand3(1) + Vec3(1, 0, 0);
       x.qd << rand3(2), rand3(2);
       Eigen::VectorXd qdd(n);
@@ -110,7 +110,7 @@ TEST(Constraints, JacobianCtAndGammaAgainstFiniteDifferences) {
       const Eigen::MatrixXd Cq = ws.Cq;
       const Eigen::VectorXd Ct = ws.Ct, gamma = ws.gamma;
       auto C_at = [&](const Eigen::VectorXd& q, double time) {
-        State s{q, Eigen::VectorXd::Zero(n)};
+        State s{q, Eigen::VectorXd::Zero(n), {}};
         Workspace w(model);
         evaluate_constraints(model, time, s, w);
         return Eigen::VectorXd(w.C);

@@ -29,7 +29,8 @@ struct EquilibriumReport {
 };
 
 /// Static equilibrium: Q(q, q̇ = 0, t0) − C_qᵀ λ = 0, C(q, t0) = 0 (damped Newton, Jacobian by
-/// central differences). x.q is the start and receives the solution; x.qd is set to zero.
+/// central differences). x.q is the start and receives the solution; x.qd is set to zero and the
+/// internal states x.z to their steady values (ForceElement::relax).
 void static_equilibrium(const Model& model, double t0, State& x, EquilibriumReport* report = nullptr);
 
 }  // namespace inerta::mbs

@@ -28,6 +28,16 @@ class ForceElement {
   /// Strut length or joint relative angle; NaN where it has no meaning.
   virtual double length(const Model& model, const State& x) const;
 
+  /// Internal states (e.g. the internal nodes of a network strut): their number and their first
+  /// index in State::z. add() writes their derivatives into Workspace::zd.
+  virtual int n_states() const { return 0; }
+  int state_offset() const { return state_offset_; }
+  /// Sets the internal states to their steady values at rest in the configuration x.q.
+  virtual void relax(const Model&, State&) const {}
+
+ protected:
+  int state_offset_ = 0;
+
  private:
   std::string name_;
 };

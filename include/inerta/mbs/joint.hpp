@@ -14,6 +14,7 @@ enum class JointType {
   Prismatic,  ///< θ_j − θ_i − θ0 = 0;  (r_Pj − r_Pi)·(A_i n̄⊥) = 0
   Fixed,      ///< r_Pi − r_Pj = 0 with P = j's centre of mass;  θ_j − θ_i − θ0 = 0 (eq. 6.28)
   Driving,    ///< coordinate(s) of body j or of point P_j = value0 + f(t)
+  Distance,   ///< |r_Pj − r_Pi| − length0 = 0 (a strut whose network is rigid)
 };
 
 struct Joint {
@@ -26,6 +27,7 @@ struct Joint {
   // Driving: component 0 = x, 1 = y of point P_j (u_j), or 2 = θ_j; value = value0 + f(t).
   int component = 0;
   double value0 = 0;
+  double length0 = 0;  ///< distance joint
   TimeFunction motion;
   int row = 0;  ///< first constraint row (set by Model::finalize)
 
@@ -38,6 +40,7 @@ struct Joint {
       case JointType::Fixed:
         return 3;
       case JointType::Driving:
+      case JointType::Distance:
         return 1;
     }
     return 0;

@@ -49,10 +49,12 @@ struct Model {
   std::vector<std::shared_ptr<const ForceElement>> forces;
   std::vector<Output> outputs;
   std::vector<int> held;  ///< coordinates held fixed during assembly
+  std::vector<std::string> notes;  ///< things the loader decided that a user should read (printed by the CLI)
 
   int n_coords() const { return 3 * static_cast<int>(bodies.size()); }
   int n_constraints() const { return n_constraints_; }
   int dof() const { return n_coords() - n_constraints_; }
+  int n_states() const { return n_states_; }  ///< internal states of force elements
 
   int find_body(const std::string& name) const;    ///< index, kGround for "ground", -2 if unknown
   int find_marker(const std::string& name) const;  ///< -1 if unknown
@@ -60,7 +62,7 @@ struct Model {
   int find_force(const std::string& name) const;
   std::string coord_name(int k) const;  ///< "bar1.theta"
 
-  /// Assigns constraint rows; call after the joints are final.
+  /// Assigns constraint rows and counts internal states; call after joints and forces are final.
   void finalize();
 
   /// Initial state from the bodies' tabulated q0, qd0 (not yet assembled).
@@ -69,6 +71,7 @@ struct Model {
 
  private:
   int n_constraints_ = 0;
+  int n_states_ = 0;
 };
 
 }  // namespace inerta::mbs

@@ -11,6 +11,7 @@ struct Model;
 
 struct State {
   Eigen::VectorXd q, qd;
+  Eigen::VectorXd z;  ///< internal states of force elements (network struts), Model::n_states()
   /// Body coordinates [x y θ] (zeros for ground, body < 0).
   Vec3 q_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(q.segment<3>(3 * body)); }
   Vec3 qd_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(qd.segment<3>(3 * body)); }
@@ -42,6 +43,7 @@ struct Workspace {
   Eigen::VectorXd rhs, sol;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
   Eigen::VectorXd qdd;     ///< result: accelerations
+  Eigen::VectorXd zd;      ///< result: derivatives of the internal states (written by their elements)
   Eigen::VectorXd lambda;  ///< result: Lagrange multipliers
 
   /// Adds f·J to Q for a 6-vector over [q_i; q_j] (ground parts skipped).

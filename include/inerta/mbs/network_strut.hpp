@@ -1,0 +1,70 @@
+#pragma once
+// A strut carrying a spring–damper–inerter network (spec/03 §3.1), and the HSX pneumatic
+// actuator built on it (spec/03 §3.3).
+//
+// Tension F = d2·l̈ + d1·l̇ + d0·(l − l_ref) + C z,  ż = A z + B (l − l_ref)   (network/realisation.hpp)
+// The d2 term is an inerter across the terminals: it uses the exact l̈ of eq. 3.20 (same
+// centripetal switches as Inerter) and enters the mass matrix as d2·JᵀJ (eq. 3.33).
+#include "inerta/mbs/struts.hpp"
+#include "inerta/network/network.hpp"
+#include "inerta/network/realisation.hpp"
+
+namespace inerta::mbs {
+
+class NetworkStrut : public Strut {
+ public:
+  /// `net` must be simplified and neither open nor rigid; z occupies State::z[state_offset ...].
+  NetworkStrut(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
+               int state_offset, bool centripetal = true);
+  const network::Network& network() const { return net_; }
+  const network::Realisation& realisation() const { return r_; }
+  double reference_length() const { return l_ref_; }
+  bool centripetal(const Model& model) const;
+
+  void add(const Model& model, double t, const State& x, Workspace& ws) const override;
+  double energy(const Model&, double t, const State& x) const override;  // ½ d2 l̇² + ½ d0 u²
+  double power(const Model& model, double t, const State& x) const override;
+  double force(const Model& model, double t, const State& x, const Workspace& ws) const override;
+  int n_states() const override { return r_.n_states(); }
+  void relax(const Model& model, State& x) const override;
+
+ protected:
+  /// Tension without the d2·l̈ part, i.e. d1 l̇ + d0 u + C z, and (into zd) ż.
+  double network_tension(const StrutKinematics& s, const State& x) const;
+
+ private:
+  network::Network net_;
+  network::Realisation r_;
+  double l_ref_;
+  bool centripetal_;
+};
+
+/// HSX base pneumatic actuator (spec/03 §3.3): tension
+///   F = F_c + F_r tanh(l̇ / v_r) + network(l)
+/// between the cylinder (marker i) and the rod end (marker j), plus the piston mass m_p carried as
+/// a point mass at the rod end (it moves with the rod end). F_c < 0 pushes. Coulomb friction F_r is
+/// regularised by tanh with v_r (default 1 mm/s); off (F_r = 0) by default as in the thesis.
+class Actuator : public NetworkStrut {
+ public:
+  struct Params {
+    double constant_force = 0;    ///< F_c, N (tension positive)
+    double piston_mass = 0;       ///< m_p, kg
+    double friction = 0;          ///< F_r, N (≥ 0)
+    double friction_velocity = 1e-3;  ///< v_r, m/s
+  };
+  Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
+           int state_offset, Params p, bool centripetal = true);
+  const Params& params() const { return p_; }
+
+  void add(const Model& model, double t, const State& x, Workspace& ws) const override;
+  double energy(const Model& model, double t, const State& x) const override;  // + F_c l, + piston ½ m v², − m_p g·r
+  double power(const Model& model, double t, const State& x) const override;   // + friction
+  double force(const Model& model, double t, const State& x, const Workspace& ws) const override;
+
+ private:
+  Params p_;
+  int rod_body_;
+  Vec2 rod_u_;
+};
+
+}  // namespace inerta::mbs

@@ -1,0 +1,119 @@
+#include "inerta/mbs/network_strut.hpp"
+
+#include <cmath>
+
+#include "inerta/mbs/model.hpp"
+#include "inerta/mbs/state.hpp"
+
+namespace inerta::mbs {
+
+NetworkStrut::NetworkStrut(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net,
+                           double l_ref, int state_offset, bool centripetal)
+    : Strut(std::move(name), bi, ui, bj, uj), net_(net), r_(network::realise(net)), l_ref_(l_ref),
+      centripetal_(centripetal) {
+  state_offset_ = state_offset;
+}
+
+bool NetworkStrut::centripetal(const Model& model) const { return centripetal_ && model.options.centripetal; }
+
+double NetworkStrut::network_tension(const StrutKinematics& s, const State& x) const {
+  double F = r_.d1 * s.l_dot + r_.d0 * (s.l - l_ref_);
+  if (r_.n_states() > 0) F += r_.C.dot(x.z.segment(state_offset_, r_.n_states()));
+  return F;
+}
+
+void NetworkStrut::add(const Model& model, double, const State& x, Workspace& ws) const {
+  StrutKinematics s = kinematics(ws);
+  const int n = r_.n_states();
+  if (n > 0) {  // ż = A z + B u
+    auto zd = ws.zd.segment(state_offset_, n);
+    zd.noalias() = r_.A * x.z.segment(state_offset_, n);
+    zd += r_.B * (s.l - l_ref_);
+  }
+  // Direct inerter d2: the q̈ part into M (eq. 3.33), the rest of d2·l̈ into Q (eq. 3.31).
+  double bias = s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0);
+  add_tension(network_tension(s, x) + r_.d2 * bias, s, ws);
+  if (r_.d2 != 0) ws.add_M(body_i(), body_j(), s.J, r_.d2);
+}
+
+double NetworkStrut::energy(const Model&, double, const State& x) const {
+  StrutKinematics s = kinematics(x);
+  double u = s.l - l_ref_;
+  return 0.5 * r_.d2 * s.l_dot * s.l_dot + 0.5 * r_.d0 * u * u;
+}
+
+double NetworkStrut::power(const Model& model, double, const State& x) const {
+  // Work rate on the bodies of everything that is not in energy(): direct damper and internal states.
+  StrutKinematics s = kinematics(x);
+  double P = -(r_.d1 * s.l_dot) * s.l_dot;
+  if (r_.n_states() > 0) P -= r_.C.dot(x.z.segment(state_offset_, r_.n_states())) * s.l_dot;
+  if (!centripetal(model)) P += r_.d2 * s.centripetal * s.l_dot;
+  return P;
+}
+
+double NetworkStrut::force(const Model& model, double, const State& x, const Workspace& ws) const {
+  StrutKinematics s = kinematics(ws);
+  Vec6 qdd = Vec6::Zero();
+  if (body_i() >= 0) qdd.head<3>() = ws.qdd.segment<3>(3 * body_i());
+  if (body_j() >= 0) qdd.tail<3>() = ws.qdd.segment<3>(3 * body_j());
+  double l_ddot = s.J.dot(qdd) + s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0);
+  return network_tension(s, x) + r_.d2 * l_ddot;
+}
+
+void NetworkStrut::relax(const Model&, State& x) const {
+  if (r_.n_states() == 0) return;
+  x.z.segment(state_offset_, r_.n_states()) = r_.steady_state(kinematics(x).l - l_ref_);
+}
+
+// Actuator -------------------------------------------------------------------------------------
+Actuator::Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
+                   int state_offset, Params p, bool centripetal)
+    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, state_offset, centripetal), p_(p), rod_body_(bj),
+      rod_u_(uj) {}
+
+void Actuator::add(const Model& model, double t, const State& x, Workspace& ws) const {
+  NetworkStrut::add(model, t, x, ws);
+  StrutKinematics s = kinematics(ws);
+  double F = p_.constant_force;
+  if (p_.friction > 0) F += p_.friction * std::tanh(s.l_dot / p_.friction_velocity);
+  add_tension(F, s, ws);
+  if (p_.piston_mass > 0 && rod_body_ >= 0) {
+    // Point mass at the rod end: M += m Gᵀ G, Q += m Gᵀ (g − a_bias), G = [I, A_θ ū].
+    PointKinematics pk = point_kinematics(ws.frame(rod_body_), rod_u_);
+    Vec6 gx, gy;  // rows of G padded to the 6-vector of (ground, rod body)
+    gx << 0, 0, 0, 1, 0, pk.Atu.x();
+    gy << 0, 0, 0, 0, 1, pk.Atu.y();
+    ws.add_M(kGround, rod_body_, gx, p_.piston_mass);
+    ws.add_M(kGround, rod_body_, gy, p_.piston_mass);
+    Vec2 f = -p_.piston_mass * pk.a_bias;
+    if (model.options.gravity) f += p_.piston_mass * model.options.g;
+    ws.add_Q(kGround, rod_body_, f.x() * gx + f.y() * gy);
+  }
+}
+
+double Actuator::energy(const Model& model, double t, const State& x) const {
+  double E = NetworkStrut::energy(model, t, x) + p_.constant_force * kinematics(x).l;
+  if (p_.piston_mass > 0 && rod_body_ >= 0) {
+    PointKinematics pk = point_kinematics(x.frame(rod_body_), rod_u_);
+    E += 0.5 * p_.piston_mass * pk.v.squaredNorm();
+    if (model.options.gravity) E -= p_.piston_mass * model.options.g.dot(pk.r);
+  }
+  return E;
+}
+
+double Actuator::power(const Model& model, double t, const State& x) const {
+  double P = NetworkStrut::power(model, t, x);
+  if (p_.friction > 0) {
+    double ld = kinematics(x).l_dot;
+    P -= p_.friction * std::tanh(ld / p_.friction_velocity) * ld;
+  }
+  return P;
+}
+
+double Actuator::force(const Model& model, double t, const State& x, const Workspace& ws) const {
+  double F = NetworkStrut::force(model, t, x, ws) + p_.constant_force;
+  if (p_.friction > 0) F += p_.friction * std::tanh(kinematics(ws).l_dot / p_.friction_velocity);
+  return F;
+}
+
+}  // namespace inerta::mbs
