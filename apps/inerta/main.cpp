@@ -5,18 +5,18 @@
 #include <CLI/CLI.hpp>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <complex>
+#include <cstdio>
 #include <memory>
-#include <sstream>
 #include <numbers>
+#include <sstream>
 
 #include "inerta/error.hpp"
-#include "inerta/network/layouts.hpp"
-#include "inerta/network/realisation.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/network/realisation.hpp"
 #include "inerta/solve/integrator.hpp"
 
 using namespace inerta;
@@ -213,11 +213,14 @@ int cmd_admittance(const AdmittanceArgs& a) {
   network::Params params;
   for (const auto& p : a.params) {
     auto eq = p.find('=');
-    if (eq == std::string::npos || eq == 0) throw CLI::ValidationError("--param", "expected NAME=VALUE, got '" + p + "'");
+    if (eq == std::string::npos || eq == 0)
+      throw CLI::ValidationError("--param", "expected NAME=VALUE, got '" + p + "'");
     std::string name = p.substr(0, eq), v = p.substr(eq + 1);
     double value = 0;
-    if (v == "inf") value = INFINITY;
-    else if (!CLI::detail::lexical_cast(v, value)) throw CLI::ValidationError("--param", "not a number in '" + p + "'");
+    if (v == "inf")
+      value = INFINITY;
+    else if (!CLI::detail::lexical_cast(v, value))
+      throw CLI::ValidationError("--param", "not a number in '" + p + "'");
     params[name] = value;
   }
   network::Network net;
@@ -238,13 +241,23 @@ int cmd_admittance(const AdmittanceArgs& a) {
     auto poly = [](const network::Poly& p) {
       std::string t;
       for (std::size_t i = 0; i < p.size(); ++i)
-        if (p[i] != 0) t += fmt::format("{}{:g}{}", t.empty() ? "" : " + ", p[i], i == 0 ? "" : i == 1 ? " s" : fmt::format(" s^{}", i));
+        if (p[i] != 0)
+          t += fmt::format("{}{:g}{}", t.empty() ? "" : " + ", p[i],
+                           i == 0   ? ""
+                           : i == 1 ? " s"
+                                    : fmt::format(" s^{}", i));
       return t.empty() ? std::string("0") : t;
     };
     fmt::print(info, "Y(s) = F/v = ({}) / ({})\n", poly(y.num), poly(y.den));
   } else {
     fmt::print(info, "the network is open with these values: Y = 0\n");
   }
+  for (double fk : f)
+    if (!std::isfinite(std::abs(network::admittance(s, {0.0, 2 * std::numbers::pi * fk}))))
+      throw ModelError(
+          fmt::format("network '{}': Y is infinite at f = {:g} Hz (a spring path gives a static "
+                      "stiffness); start --freq above 0",
+                      a.layout, fk));
   std::FILE* out = stdout;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
   if (!a.out.empty()) {
@@ -309,6 +322,8 @@ int main(int argc, char** argv) {
     if (check->parsed()) return cmd_check(check_model);
     if (sim->parsed()) return cmd_simulate(sa);
     if (adm->parsed()) return cmd_admittance(aa);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
   } catch (const ModelError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -410,8 +411,11 @@ struct Loader {
       if (!p.IsMap()) rd.fail(p, "params", "expected a mapping element: value, e.g. {b: 10, k: 100}");
       for (auto it = p.begin(); it != p.end(); ++it) {
         std::string k = rd.text(it->first, "params");
+        if (params.count(k)) rd.fail(it->first, k, "duplicate element in params; give each value once");
         const YAML::Node& v = it->second;
-        double val = v.IsScalar() && (v.Scalar() == "inf" || v.Scalar() == ".inf") ? INFINITY : rd.number(v, k);
+        std::string lower = v.IsScalar() ? v.Scalar() : "";
+        for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        double val = lower == "inf" || lower == ".inf" ? INFINITY : rd.number(v, k);
         params[k] = val;
       }
     }
@@ -421,8 +425,7 @@ struct Loader {
     } catch (const network::NetworkError& e) {
       YAML::Node at = e.column > 0 || !f["params"].IsDefined() ? (nn.IsDefined() ? nn : f) : f["params"];
       rd.fail(at, e.column > 0 ? "network" : "params",
-              e.column > 0 ? fmt::format("'{}': column {}: {}", text, e.column, e.what())
-                           : fmt::format("network '{}': {}", text, e.what()));
+              e.column > 0 ? fmt::format("'{}': {}", text, e.what()) : fmt::format("network '{}': {}", text, e.what()));
     }
     const bool corr = f["centripetal"].IsDefined() ? rd.boolean(f["centripetal"], "centripetal") : true;
     mbs::Actuator::Params ap;

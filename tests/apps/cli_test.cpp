@@ -4,10 +4,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -202,4 +205,153 @@ TEST_F(Cli, UnknownOptionFails) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
+
+// ----------------------------------------------------------------------------------------------
+// inerta admittance (network admittance Y = F / relative velocity as CSV) and network models
+// ----------------------------------------------------------------------------------------------
+
+// Checks one CSV row f_hz,mag,phase_deg,re,im against the exact Y at that frequency.
+void expect_admittance_row(const std::vector<double>& v, std::complex<double> y, const std::string& row) {
+  ASSERT_EQ(v.size(), 5u) << row;
+  const double tol = 1e-8;
+  EXPECT_NEAR(v[3], y.real(), tol * std::abs(y.real())) << row;
+  EXPECT_NEAR(v[4], y.imag(), tol * std::abs(y.imag())) << row;
+  EXPECT_NEAR(v[1], std::abs(y), tol * std::abs(y)) << row;
+  const double phase = std::arg(y) * 180.0 / std::numbers::pi;
+  EXPECT_NEAR(v[2], phase, tol * std::abs(phase)) << row;
+  // The columns agree with each other.
+  EXPECT_NEAR(v[1], std::hypot(v[3], v[4]), tol * v[1]) << row;
+  EXPECT_NEAR(v[2], std::atan2(v[4], v[3]) * 180.0 / std::numbers::pi, 1e-7) << row;
+}
+
+TEST_F(Cli, AdmittanceOfS2DefaultIsAMaxwellElement) {
+  const fs::path csv = path("s2.csv");
+  Result r = run("admittance S2-default --freq 0.5:0.5:20 --out " + quote(csv.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = lines_of(read_file(csv));
+  ASSERT_EQ(lines.size(), 41u);
+  EXPECT_EQ(lines[0], "f_hz,mag,phase_deg,re,im");
+  const double k = 141e3, c = 10.44e3;
+  for (std::size_t n = 1; n < lines.size(); ++n) {
+    const auto v = fields_of(lines[n]);
+    ASSERT_EQ(v.size(), 5u) << lines[n];
+    const double f = 0.5 * static_cast<double>(n);
+    EXPECT_NEAR(v[0], f, 1e-9) << lines[n];
+    const std::complex<double> iw(0.0, 2 * std::numbers::pi * f);
+    expect_admittance_row(v, k * c / (k + c * iw), lines[n]);
+  }
+  EXPECT_NEAR(fields_of(lines[1])[0], 0.5, 1e-12);
+  EXPECT_NEAR(fields_of(lines.back())[0], 20.0, 1e-12);
+  // A Maxwell element lags: the phase falls from 0 towards −90° as f grows.
+  EXPECT_LT(fields_of(lines.back())[2], fields_of(lines[1])[2]);
+}
+
+TEST_F(Cli, AdmittanceOfAnExpression) {
+  const fs::path csv = path("tid.csv");
+  Result r = run("admittance 'b-(k|c)' --param b=10 --param k=100 --param c=100 --freq 0.1:0.1:10 --out " +
+                 quote(csv.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = lines_of(read_file(csv));
+  ASSERT_EQ(lines.size(), 101u);
+  EXPECT_EQ(lines[0], "f_hz,mag,phase_deg,re,im");
+  const double b = 10, k = 100, c = 100;
+  for (std::size_t n : {1u, 2u, 16u, 50u, 77u, 100u}) {
+    const auto v = fields_of(lines[n]);
+    ASSERT_EQ(v.size(), 5u) << lines[n];
+    const double f = 0.1 * static_cast<double>(n);
+    EXPECT_NEAR(v[0], f, 1e-9) << lines[n];
+    const std::complex<double> s(0.0, 2 * std::numbers::pi * f);
+    expect_admittance_row(v, b * s * (k + c * s) / (k + c * s + b * s * s), lines[n]);
+  }
+  EXPECT_NEAR(fields_of(lines.back())[0], 10.0, 1e-9);
+}
+
+TEST_F(Cli, AdmittanceMalformedExpressionShowsTheColumn) {
+  Result r = run("admittance 'b-k|c' --param b=1 --param k=1 --param c=1 --freq 1:1:2");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "column 4")) << r.err;
+  EXPECT_TRUE(contains(r.err, "without parentheses")) << r.err;
+  // The expression, then a caret under its 4th character (same indentation).
+  const auto lines = lines_of(r.err);
+  bool caret = false;
+  for (std::size_t n = 0; n + 1 < lines.size(); ++n) {
+    const auto at = lines[n].find("b-k|c");
+    if (at == std::string::npos || contains(lines[n], "error")) continue;
+    caret = lines[n + 1] == std::string(at + 3, ' ') + "^";
+  }
+  EXPECT_TRUE(caret) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(Cli, AdmittanceMissingParameterNamesTheElement) {
+  Result r = run("admittance 'b-(k|c)' --param b=1 --param k=1 --freq 1:1:2");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "no value for element(s) c")) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(Cli, AdmittanceBadFrequencyRange) {
+  for (const char* freq : {"1:0:2", "abc", "2:1:1", "1:1"}) {
+    SCOPED_TRACE(freq);
+    const fs::path csv = path("f.csv");
+    Result r = run(std::string("admittance S2-default --freq ") + quote(freq) + " --out " + quote(csv.string()));
+    EXPECT_NE(r.code, 0);
+    EXPECT_NE(r.code, -1);
+    EXPECT_TRUE(contains(r.err, "--freq")) << r.err;
+    EXPECT_TRUE(contains(r.err, freq)) << r.err;
+    EXPECT_FALSE(fs::exists(csv));
+  }
+}
+
+TEST_F(Cli, AdmittanceParamWithoutValue) {
+  Result r = run("admittance 'k|c' --param k --param c=1 --freq 1:1:2");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.code, -1);
+  EXPECT_TRUE(contains(r.err, "--param")) << r.err;
+  EXPECT_TRUE(contains(r.err, "NAME=VALUE")) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+TEST_F(Cli, SimulateTwobarNetworkEqualsTwobar) {
+  const fs::path net = path("net.csv"), ref = path("ref.csv");
+  Result r = run("simulate " + quote(model_path("twobar_network.yaml")) + " --t-end 1 --sample 0.01 --out " +
+                 quote(net.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto lines = lines_of(read_file(net));
+  ASSERT_EQ(lines.size(), 102u);
+  EXPECT_EQ(lines[0], "t,C_x,C_y,F_strut");
+
+  // The network "k|c|b" is the separate spring, damper and inerter of models/twobar.yaml.
+  Result q = run("simulate " + quote(model_path("twobar.yaml")) + " --t-end 1 --sample 0.01 --out " +
+                 quote(ref.string()));
+  ASSERT_EQ(q.code, 0) << q.err;
+  const auto expected = lines_of(read_file(ref));
+  ASSERT_EQ(expected.size(), 102u);
+  for (std::size_t n = 1; n < lines.size(); ++n) {
+    const auto v = fields_of(lines[n]), w = fields_of(expected[n]);
+    ASSERT_EQ(v.size(), 4u) << lines[n];
+    ASSERT_EQ(w.size(), 3u) << expected[n];
+    EXPECT_NEAR(v[0], 0.01 * static_cast<double>(n - 1), 1e-9) << lines[n];
+    EXPECT_NEAR(v[1], w[1], 1e-7) << lines[n];
+    EXPECT_NEAR(v[2], w[2], 1e-7) << lines[n];
+    EXPECT_TRUE(std::isfinite(v[3])) << lines[n];
+  }
+  EXPECT_NEAR(fields_of(lines[1])[3], 0.0, 1e-9);  // released at rest with the free length initial
+  double peak = 0;
+  for (std::size_t n = 1; n < lines.size(); ++n) peak = std::max(peak, std::abs(fields_of(lines[n])[3]));
+  EXPECT_GT(peak, 0.1);  // the strut does carry force once F_a acts
+}
+
 }  // namespace
+
+TEST_F(Cli, AdmittanceInfiniteAtZeroFrequencyIsRefused) {
+  // A spring path makes Y = k/s infinite at 0 Hz: an error, not a row of inf/nan.
+  const fs::path csv = path("y0.csv");
+  Result r = run("admittance 'k|c' --param k=100 --param c=1 --freq 0:1:2 --out " + quote(csv.string()));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "infinite at f = 0 Hz")) << r.err;
+  EXPECT_FALSE(fs::exists(csv));
+  // Starting above 0 works.
+  r = run("admittance 'k|c' --param k=100 --param c=1 --freq 0.5:0.5:2 --out " + quote(csv.string()));
+  EXPECT_EQ(r.code, 0) << r.err;
+}

@@ -19,8 +19,10 @@
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/network_strut.hpp"
 #include "inerta/mbs/state.hpp"
 #include "inerta/mbs/struts.hpp"
+#include "inerta/network/network.hpp"
 
 namespace {
 
@@ -514,4 +516,232 @@ TEST(ModelFile, PointForceOnGroundMarker) {
     value: 5
 )",
                "marker", "a force on a ground marker does nothing; expected a body's marker");
+}
+
+// ----------------------------------------------------------------------------------------------
+// Network struts and actuators (type: network / actuator, spec/03)
+// ----------------------------------------------------------------------------------------------
+
+namespace {
+
+// One strut between bar.b and blk.cm ((1, 0) and (2, 1) after assembly), given its YAML lines
+// (each indented by four spaces, after "  - name: strut").
+std::string strut_model(const std::string& body) {
+  return kHead + kJoints + "forces:\n  - name: strut\n" + body;
+}
+
+const inerta::mbs::NetworkStrut* strut_of(const inerta::mbs::Model& m) {
+  const int k = m.find_force("strut");
+  if (k < 0) return nullptr;
+  return dynamic_cast<const inerta::mbs::NetworkStrut*>(m.forces[static_cast<std::size_t>(k)].get());
+}
+
+}  // namespace
+
+TEST(ModelFile, NetworkMalformedExpressionNamesTheColumn) {
+  const std::string text = strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "b-k|c"   # <-- here
+    params: {b: 1, k: 1, c: 1}
+)");
+  expect_error(text, "network", "column 4");
+  const std::string msg = model_error(text);
+  EXPECT_TRUE(contains(msg, "without parentheses")) << msg;
+  EXPECT_TRUE(contains(msg, "b-k|c")) << msg;
+}
+
+TEST(ModelFile, NetworkParameterThatIsNotAnElement) {
+  expect_error(strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k|c"
+    params: {k: 1, c: 1, b: 3}   # <-- here
+)"),
+               "params", "parameter 'b' is not an element of the network; its elements are: k, c");
+}
+
+TEST(ModelFile, NetworkParameterWithoutValue) {
+  expect_error(strut_model(R"y(    type: network
+    markers: [bar.b, blk.cm]
+    network: "b-(k|c)"
+    params: {k: 1}   # <-- here
+)y"),
+               "params", "no value for element(s) b, c");
+}
+
+TEST(ModelFile, NetworkNegativeParameter) {
+  expect_error(strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k|c"
+    params: {k: -2, c: 1}   # <-- here
+)"),
+               "params", "parameter 'k' = -2 must be >= 0");
+}
+
+TEST(ModelFile, NetworkLayoutFixedValueCannotBeOverridden) {
+  const std::string text = strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "S2-1*"
+    params: {b: 1, c: 5, k: 1}   # <-- here
+)");
+  expect_error(text, "params", "fixes c");
+  const std::string msg = model_error(text);
+  EXPECT_TRUE(contains(msg, "S2-1*")) << msg;
+  // Without c the same layout loads, c = 10.44 kN·s/m being the layout's.
+  std::string ok = text;
+  const std::string p = "{b: 1, c: 5, k: 1}";
+  ok.replace(ok.find(p), p.size(), "{b: 1, k: 1}");
+  inerta::mbs::Model m = parse_model(ok, "ok.yaml");
+  const auto* s = strut_of(m);
+  ASSERT_NE(s, nullptr);
+  EXPECT_DOUBLE_EQ(s->realisation().d1, 10.44e3);
+  EXPECT_DOUBLE_EQ(s->realisation().d2, 1.0);
+  EXPECT_DOUBLE_EQ(s->realisation().d0, 1.0);
+}
+
+TEST(ModelFile, NetworkWithoutNetworkKey) {
+  // A missing key is reported at the element's first line.
+  expect_error(kHead + kJoints + R"(forces:
+  - name: strut   # <-- here
+    type: network
+    markers: [bar.b, blk.cm]
+    params: {k: 1, c: 1}
+)",
+               "network", "missing in force element 'strut'");
+}
+
+TEST(ModelFile, ActuatorNegativePistonMass) {
+  expect_error(strut_model(R"(    type: actuator
+    markers: [bar.b, blk.cm]
+    piston_mass: -1   # <-- here
+)"),
+               "piston_mass", "must be >= 0 (kg)");
+}
+
+TEST(ModelFile, ActuatorZeroFrictionVelocity) {
+  expect_error(strut_model(R"(    type: actuator
+    markers: [bar.b, blk.cm]
+    friction: 20
+    friction_velocity: 0   # <-- here
+)"),
+               "friction_velocity", "must be > 0 (m/s)");
+}
+
+TEST(ModelFile, ActuatorNegativeFriction) {
+  expect_error(strut_model(R"(    type: actuator
+    markers: [bar.b, blk.cm]
+    friction: -3   # <-- here
+)"),
+               "friction", "must be >= 0 (N)");
+}
+
+TEST(ModelFile, ForceOutputOfRigidNetwork) {
+  const std::string forces = strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k|c"
+    params: {k: inf, c: 5}
+)");
+  expect_error(forces + "outputs:\n  - {name: F, type: force, element: strut}   # <-- here\n", "element",
+               "is a rigid network (a distance joint)");
+
+  // The suggested output loads: the strut became a distance joint with one equation.
+  inerta::mbs::Model m =
+      parse_model(forces + "outputs:\n  - {name: T, type: multiplier, joint: strut, component: 0}\n", "ok.yaml");
+  EXPECT_LT(m.find_force("strut"), 0);
+  const int j = m.find_joint("strut");
+  ASSERT_GE(j, 0);
+  EXPECT_EQ(m.joints[static_cast<std::size_t>(j)].type, inerta::mbs::JointType::Distance);
+  EXPECT_NEAR(m.joints[static_cast<std::size_t>(j)].length0, std::sqrt(2.0), 1e-9);
+  EXPECT_EQ(m.n_constraints(), 5);
+  EXPECT_EQ(m.n_states(), 0);
+  ASSERT_EQ(m.notes.size(), 1u);
+  EXPECT_TRUE(contains(m.notes[0], "is rigid")) << m.notes[0];
+}
+
+TEST(ModelFile, NetworkWithRigidSeriesSpringIsAPlainDamper) {
+  const std::string text = strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k-c"
+    params: {k: inf, c: 5}
+)");
+  inerta::mbs::Model m = parse_model(text, "ok.yaml");
+  EXPECT_TRUE(m.notes.empty()) << m.notes.front();
+  EXPECT_EQ(m.n_states(), 0);
+  const auto* s = strut_of(m);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->network().kind, inerta::network::Network::Kind::Damper);
+  EXPECT_DOUBLE_EQ(s->network().value, 5.0);
+  EXPECT_DOUBLE_EQ(s->realisation().d1, 5.0);
+  EXPECT_DOUBLE_EQ(s->realisation().d0, 0.0);
+
+  // With a finite k the same network is a Maxwell element with one internal state.
+  std::string finite = text;
+  finite.replace(finite.find("k: inf"), 6, "k: 100");
+  inerta::mbs::Model f = parse_model(finite, "ok.yaml");
+  EXPECT_EQ(f.n_states(), 1);
+}
+
+TEST(ModelFile, NetworkWithOpenSeriesSpringIsNotedAndExertsNoForce) {
+  inerta::mbs::Model m = parse_model(strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k-c"
+    params: {k: 0, c: 5}
+)"),
+                                     "ok.yaml");
+  ASSERT_EQ(m.notes.size(), 1u);
+  EXPECT_TRUE(contains(m.notes[0], "open")) << m.notes[0];
+  EXPECT_TRUE(contains(m.notes[0], "force element 'strut'")) << m.notes[0];
+  EXPECT_EQ(m.n_states(), 0);
+  const auto* s = strut_of(m);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->realisation().d0, 0.0);
+  EXPECT_EQ(s->realisation().d1, 0.0);
+  EXPECT_EQ(s->realisation().d2, 0.0);
+}
+
+TEST(ModelFile, ActuatorWithoutNetworkIsS2Default) {
+  inerta::mbs::Model m = parse_model(strut_model(R"(    type: actuator
+    markers: [bar.b, blk.cm]
+    constant_force: -50
+    piston_mass: 0.5
+)"),
+                                     "ok.yaml");
+  EXPECT_TRUE(m.notes.empty());
+  EXPECT_EQ(m.n_states(), 1);
+  const int k = m.find_force("strut");
+  ASSERT_GE(k, 0);
+  const auto* a = dynamic_cast<const inerta::mbs::Actuator*>(m.forces[static_cast<std::size_t>(k)].get());
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(inerta::network::to_string(a->network(), true), "k=141000-c=10440");
+  EXPECT_DOUBLE_EQ(a->params().constant_force, -50.0);
+  EXPECT_DOUBLE_EQ(a->params().piston_mass, 0.5);
+  EXPECT_DOUBLE_EQ(a->params().friction, 0.0);
+  EXPECT_DOUBLE_EQ(a->params().friction_velocity, 1e-3);
+  EXPECT_NEAR(a->reference_length(), std::sqrt(2.0), 1e-9);  // free_length defaults to the initial length
+}
+
+TEST(ModelFile, NetworkInfinityWrittenInfOrDotInf) {
+  for (const char* inf : {"inf", ".inf"}) {
+    SCOPED_TRACE(inf);
+    inerta::mbs::Model m = parse_model(strut_model(std::string(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k|c"
+    params: {k: )") + inf + ", c: 5}\n"),
+                                       "ok.yaml");
+    EXPECT_LT(m.find_force("strut"), 0);
+    const int j = m.find_joint("strut");
+    ASSERT_GE(j, 0);
+    EXPECT_EQ(m.joints[static_cast<std::size_t>(j)].type, inerta::mbs::JointType::Distance);
+  }
+}
+
+TEST(ModelFile, NetworkDuplicateParameter) {
+  expect_error(strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k|c"
+    params:
+      k: 1
+      c: 1
+      k: 2   # <-- here
+)"),
+               "k", "duplicate element in params");
 }
