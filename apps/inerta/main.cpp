@@ -35,6 +35,8 @@ const char* joint_type_name(mbs::JointType t) {
       return "driving";
     case mbs::JointType::Distance:
       return "distance";
+    case mbs::JointType::Coupling:
+      return "coupling";
   }
   return "?";
 }

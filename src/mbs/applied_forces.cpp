@@ -7,17 +7,17 @@ namespace inerta::mbs {
 
 void Gravity::add(const Model& model, double, const State&, Workspace& ws) const {
   for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    ws.Q.segment<2>(3 * static_cast<int>(b)) += model.bodies[b].mass * g_;
+    if (model.bodies[b].weighs) ws.Q.segment<2>(3 * static_cast<int>(b)) += model.bodies[b].mass * g_;
 }
 double Gravity::energy(const Model& model, double, const State& x) const {
   double V = 0;
   for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    V -= model.bodies[b].mass * g_.dot(x.q.segment<2>(3 * static_cast<int>(b)));
+    if (model.bodies[b].weighs) V -= model.bodies[b].mass * g_.dot(x.q.segment<2>(3 * static_cast<int>(b)));
   return V;
 }
 double Gravity::force(const Model& model, double, const State&, const Workspace&) const {
   double m = 0;
-  for (const Body& b : model.bodies) m += b.mass;
+  for (const Body& b : model.bodies) m += b.weighs ? b.mass : 0.0;
   return m * g_.norm();
 }
 

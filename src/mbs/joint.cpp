@@ -58,6 +58,16 @@ int evaluate_joint(const Joint& jt, double t, const BodyFrame& fi, const BodyFra
       r.gamma = -(s.a_n_axial + s.centripetal);
       break;
     }
+    case JointType::Coupling: {
+      PointKinematics pi = point_kinematics(fi, jt.u_i), pj = point_kinematics(fj, jt.u_j);
+      const int c = jt.component;
+      ConstraintRow& r = rows[0];
+      r.C = pj.r[c] - pi.r[c] - jt.value0;
+      r.gi = -Vec3(c == 0, c == 1, pi.Atu[c]);
+      r.gj = Vec3(c == 0, c == 1, pj.Atu[c]);
+      r.gamma = -(pj.a_bias[c] - pi.a_bias[c]);
+      break;
+    }
     case JointType::Driving: {
       ConstraintRow& r = rows[0];
       double f = jt.value0 + jt.motion.value(t);

@@ -15,6 +15,7 @@ enum class JointType {
   Fixed,      ///< r_Pi − r_Pj = 0 with P = j's centre of mass;  θ_j − θ_i − θ0 = 0 (eq. 6.28)
   Driving,    ///< coordinate(s) of body j or of point P_j = value0 + f(t)
   Distance,   ///< |r_Pj − r_Pi| − length0 = 0 (a strut whose network is rigid)
+  Coupling,   ///< (r_Pj − r_Pi)[component] − value0 = 0 (bilateral pantograph–catenary contact)
 };
 
 struct Joint {
@@ -41,6 +42,7 @@ struct Joint {
         return 3;
       case JointType::Driving:
       case JointType::Distance:
+      case JointType::Coupling:
         return 1;
     }
     return 0;

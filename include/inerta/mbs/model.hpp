@@ -20,6 +20,7 @@ struct Body {
   double inertia = 0;       ///< kg·m² about the centre of mass
   Vec3 q0 = Vec3::Zero();   ///< tabulated initial position [x y θ]
   Vec3 qd0 = Vec3::Zero();  ///< initial velocity
+  bool weighs = true;       ///< gravity acts on it (not on an equivalent mass such as the lumped catenary's)
 };
 
 /// Body-fixed point. body = kGround means a fixed point with u in global coordinates.
