@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <complex>
@@ -109,7 +110,7 @@ struct SimulateArgs {
 
 int cmd_simulate(const SimulateArgs& a) {
   mbs::Model model = io::load_model(a.model);
-  for (const auto& note : model.notes) fmt::print(stderr, "note: {}\n", note);
+  for (const auto& note : model.notes) fmt::print(a.out.empty() ? stderr : stdout, "note: {}\n", note);
   if (a.no_centripetal) model.options.centripetal = false;
   const double t_end = a.t_end > 0 ? a.t_end : model.options.t_end;
   const double dt = a.sample > 0 ? a.sample : model.options.sample;

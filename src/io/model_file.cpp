@@ -386,15 +386,15 @@ struct Loader {
             name, mk(m).body, mk(m).u, d, time_function(rd, rd.need(f, "value", what), "value")));
       } else {
         rd.fail(f["type"], "type",
-                fmt::format("unknown force element type '{}'; expected spring, damper, inerter, axial_force, "
-                            "rotational_spring, rotational_damper, rotational_spring_damper or point_force",
+                fmt::format("unknown force element type '{}'; expected spring, damper, inerter, axial_force, network, "
+                            "actuator, rotational_spring, rotational_damper, rotational_spring_damper or point_force",
                             type));
       }
     }
   }
 
   // A network strut or an actuator (spec/03): the network by layout name or expression, values in
-  // `params`; an open network is dropped and a rigid one becomes a distance joint (both noted).
+  // `params`; an open network stays as a zero-force strut and a rigid one becomes a distance joint (both noted).
   void strut_network(const YAML::Node& f, const std::string& name, const std::string& what, const std::string& type,
                      int bi, Vec2 ui, int bj, Vec2 uj, double l_ref) {
     const bool act = type == "actuator";
@@ -435,13 +435,15 @@ struct Loader {
       ap.friction = rd.number_or(f, "friction", 0.0);
       ap.friction_velocity = rd.number_or(f, "friction_velocity", 1e-3);
       if (ap.piston_mass < 0) rd.fail(f["piston_mass"], "piston_mass", "must be >= 0 (kg)");
+      if (ap.piston_mass > 0 && bj < 0)
+        rd.fail(f["piston_mass"], "piston_mass", "the rod end (second marker) is on ground; expected the rod end on a body");
       if (ap.friction < 0) rd.fail(f["friction"], "friction", "must be >= 0 (N)");
       if (!(ap.friction_velocity > 0)) rd.fail(f["friction_velocity"], "friction_velocity", "must be > 0 (m/s)");
     }
     if (net.kind == network::Network::Kind::Rigid) {
       if (act)
         rd.fail(f, what,
-                fmt::format("the actuator's network '{}' is rigid with these values; the pantograph would be locked",
+                fmt::format("the actuator's network '{}' is rigid with these values; expected a network with finite values (a rigid actuator would lock the mechanism)",
                             text));
       mbs::Joint jt;
       jt.name = name;
@@ -576,7 +578,8 @@ mbs::Model parse_model(const std::string& text, const std::string& source) {
   const Reader& rd = ld.rd;
   try {
     if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
-    rd.keys(root, "the model", {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly"});
+    rd.keys(root, "the model",
+          {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly", "pantograph"});
     ld.model.source = source;
     ld.model.name = root["name"].IsDefined() ? rd.text(root["name"], "name") : source;
     ld.options(root["options"]);
@@ -596,6 +599,16 @@ mbs::Model parse_model(const std::string& text, const std::string& source) {
       throw ModelError(fmt::format("{}: {}", source, e.what()));
     }
     ld.outputs(root["outputs"]);
+    if (YAML::Node p = root["pantograph"]; p.IsDefined()) {
+      rd.keys(p, "pantograph", {"contact", "rig_joint"});
+      ld.model.contact_marker = rd.text(rd.need(p, "contact", "pantograph"), "contact");
+      ld.marker(p["contact"], "contact");
+      if (p["rig_joint"].IsDefined()) {
+        ld.model.rig_joint = rd.text(p["rig_joint"], "rig_joint");
+        if (ld.model.find_joint(ld.model.rig_joint) < 0)
+          rd.fail(p["rig_joint"], "rig_joint", fmt::format("unknown joint '{}'", ld.model.rig_joint));
+      }
+    }
   } catch (const YAML::Exception& e) {  // safety net: no yaml-cpp exception leaves without file:line
     throw ModelError(fmt::format("{}:{}: {}", source, e.mark.line + 1, e.msg));
   }

@@ -50,6 +50,8 @@ struct Model {
   std::vector<std::shared_ptr<const ForceElement>> forces;
   std::vector<Output> outputs;
   std::vector<int> held;  ///< coordinates held fixed during assembly
+  std::string contact_marker;  ///< pantograph: the head's contact point with the wire ("" if none)
+  std::string rig_joint;       ///< pantograph: the joint that holds the head when no catenary is attached
   std::vector<std::string> notes;  ///< things the loader decided that a user should read (printed by the CLI)
 
   int n_coords() const { return 3 * static_cast<int>(bodies.size()); }

@@ -16,6 +16,8 @@ class Strut : public ForceElement {
   double length(const Model&, const State& x) const override;
   int body_i() const { return body_i_; }
   int body_j() const { return body_j_; }
+  const Vec2& u_i() const { return u_i_; }
+  const Vec2& u_j() const { return u_j_; }
 
  protected:
   /// Q += −F Jᵀ.

@@ -1,0 +1,45 @@
+#pragma once
+// Contact-quality statistics (spec/06 §6.1) and the speed run that produces them.
+#include <string>
+#include <vector>
+
+#include "inerta/catenary/coupling.hpp"
+#include "inerta/mbs/model.hpp"
+#include "inerta/solve/integrator.hpp"
+
+namespace inerta::analysis {
+
+/// Statistics of the contact force F (compression positive) over a window.
+struct ContactStatistics {
+  double mean = 0, std = 0, max = 0, min = 0;
+  double stat_max = 0, stat_min = 0;  ///< F_m ± 3σ
+  double loss_pct = 0;                ///< % of samples with F <= 0 (penalty contact)
+  long samples = 0;
+};
+ContactStatistics statistics(const std::vector<double>& F);
+
+struct RunOptions {
+  double speed = 0;             ///< m/s
+  int min_spans = 4;            ///< simulate at least this many spans
+  int max_spans = 40;           ///< give up converging after this many
+  double tolerance = 0.005;     ///< span-to-span relative change of σ that ends the run
+  int window_spans = 2;         ///< statistics over the last window_spans spans
+  int samples_per_span = 400;
+  solve::IntegratorOptions integrator;
+  bool fixed_spans = false;     ///< run exactly min_spans spans (no convergence test)
+};
+
+struct SpeedResult {
+  double speed = 0;
+  ContactStatistics stats;
+  int spans = 0;                ///< spans simulated
+  double sigma_change = 0;      ///< last span-to-span relative change of σ
+  std::vector<double> t, F;     ///< contact-force history (all spans)
+};
+
+/// Static equilibrium of the coupled model, then span by span until σ over one span changes by less
+/// than `tolerance` from the previous span (spec/06 §6.1); statistics over the last `window_spans`
+/// spans. A bilateral contact whose force becomes negative throws NumericalError with t and F.
+SpeedResult run_speed(const mbs::Model& coupled, const RunOptions& options, bool bilateral);
+
+}  // namespace inerta::analysis
