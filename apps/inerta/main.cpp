@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <cstdio>
@@ -12,12 +13,16 @@
 #include <numbers>
 #include <sstream>
 
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/catenary/coupling.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/network/realisation.hpp"
+#include "inerta/pantograph/suspension.hpp"
 #include "inerta/solve/integrator.hpp"
 
 using namespace inerta;
@@ -101,19 +106,102 @@ void append_number(std::string& s, double v) {
   s.append(buf, r.ptr);
 }
 
+// Options shared by simulate and sweep for a pantograph running under a catenary (issue 4).
+struct CatenaryArgs {
+  std::string catenary, unit = "ms", suspension, contact;
+  std::vector<std::string> sets, params;
+};
+
+network::Params parse_params(const std::vector<std::string>& list) {
+  network::Params params;
+  for (const auto& p : list) {
+    auto eq = p.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw CLI::ValidationError("--param", "expected NAME=VALUE, got '" + p + "'");
+    std::string name = p.substr(0, eq), v = p.substr(eq + 1);
+    double value = 0;
+    if (params.count(name)) throw CLI::ValidationError("--param", "'" + name + "' is given twice");
+    std::string lower = v;
+    for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (lower == "inf" || lower == ".inf")
+      value = INFINITY;
+    else if (!CLI::detail::lexical_cast(v, value))
+      throw CLI::ValidationError("--param", "not a number in '" + p + "'");
+    params[name] = value;
+  }
+  return params;
+}
+
+double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6 : v; }
+
+// The pantograph with the requested suspension, and the catenary file with its overrides.
+std::pair<mbs::Model, io::CatenaryFile> pantograph_setup(mbs::Model model, const CatenaryArgs& c) {
+  if (!c.suspension.empty()) {
+    network::Network net;
+    try {
+      net = network::resolve(c.suspension, parse_params(c.params));
+    } catch (const network::NetworkError& e) {
+      throw ModelError(fmt::format("--suspension '{}': {}", c.suspension, e.what()));
+    }
+    model = pantograph::with_suspension(model, net);
+  } else if (!c.params.empty()) {
+    throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
+  }
+  io::CatenaryFile cat = io::load_catenary(c.catenary, c.sets);
+  if (!c.contact.empty())
+    cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
+  if (model.contact_marker.empty())
+    throw ModelError(
+        fmt::format("{}: the model has no 'pantograph: {{contact: <marker>}}' section; a catenary needs "
+                    "the head's contact point",
+                    model.source));
+  return {model, cat};
+}
+
+void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
+  auto* o = app->add_option("--catenary", c.catenary, "Catenary file (models/catenary.yaml)");
+  if (required) o->required();
+  app->add_option("--unit", c.unit, "Speed unit: ms (m/s) or kmh")
+      ->check(CLI::IsMember({"ms", "kmh"}))
+      ->capture_default_str();
+  app->add_option("--set", c.sets, "Override a catenary value, e.g. catenary.kc0=5000 (repeatable)");
+  app->add_option("--contact", c.contact, "bilateral (thesis) or penalty; default: the catenary file's")
+      ->check(CLI::IsMember({"bilateral", "penalty"}));
+  app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
+  app->add_option("--param", c.params, "Suspension element value NAME=VALUE (repeatable)");
+}
+
 struct SimulateArgs {
   std::string model, out;
   double t_end = -1, sample = -1, rtol = 1e-6, atol = 1e-8, steady_from = -1, max_step = 0;
   bool no_centripetal = false, from_equilibrium = false;
   std::string integrator = "rk";
+  CatenaryArgs cat;
+  double speed = -1;
+  int spans = 12;
 };
 
 int cmd_simulate(const SimulateArgs& a) {
   mbs::Model model = io::load_model(a.model);
-  for (const auto& note : model.notes) fmt::print(a.out.empty() ? stderr : stdout, "note: {}\n", note);
   if (a.no_centripetal) model.options.centripetal = false;
-  const double t_end = a.t_end > 0 ? a.t_end : model.options.t_end;
-  const double dt = a.sample > 0 ? a.sample : model.options.sample;
+  double t_end = a.t_end > 0 ? a.t_end : model.options.t_end;
+  double dt = a.sample > 0 ? a.sample : model.options.sample;
+  bool from_equilibrium = a.from_equilibrium, bilateral = false;
+  double span_time = 0;
+  if (!a.cat.catenary.empty()) {
+    if (!(a.speed > 0)) throw CLI::ValidationError("--speed", "a run under a catenary needs --speed > 0");
+    auto [panto, cat] = pantograph_setup(model, a.cat);
+    const double v = to_ms(a.speed, a.cat.unit);
+    model = catenary::couple(panto, cat.catenary, cat.contact, v, panto.contact_marker, panto.rig_joint);
+    bilateral = cat.contact.kind == catenary::Contact::Kind::Bilateral;
+    span_time = cat.catenary.span / v;
+    if (a.t_end <= 0) t_end = a.spans * span_time;
+    if (a.sample <= 0) dt = span_time / 400;
+    from_equilibrium = true;  // pantograph + catenary start in static equilibrium (no start-up jolt)
+  } else if (a.speed > 0) {
+    throw CLI::ValidationError("--speed", "needs --catenary FILE");
+  }
+  for (const auto& note : model.notes) fmt::print(a.out.empty() ? stderr : stdout, "note: {}\n", note);
   solve::IntegratorOptions opt;
   opt.method = solve::parse_method(a.integrator);
   opt.rtol = a.rtol;
@@ -124,7 +212,7 @@ int cmd_simulate(const SimulateArgs& a) {
   mbs::AssemblyReport rep;
   mbs::State x = mbs::assemble(model, 0.0, &rep);
   if (rep.initial_residual > 1e-9) print_assembly(info, model, rep);
-  if (a.from_equilibrium) {
+  if (from_equilibrium) {
     mbs::EquilibriumReport eq;
     mbs::static_equilibrium(model, 0.0, x, &eq);
     fmt::print(info, "static equilibrium: {} iteration(s)", eq.iterations);
@@ -151,7 +239,20 @@ int cmd_simulate(const SimulateArgs& a) {
   const bool progress = isatty(STDERR_FILENO) && a.out.size() > 0;
   double next_report = 0;
   std::string line;
+  int f_contact = -1;
+  for (std::size_t k = 0; k < no; ++k)
+    if (model.outputs[k].name == "F_contact" && span_time > 0) f_contact = static_cast<int>(k);
+  std::vector<double> F_window;  // contact force over the last two spans
   auto observer = [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
+    if (f_contact >= 0) {
+      const double F = mbs::evaluate_output(model.outputs[static_cast<std::size_t>(f_contact)], model, t, s, ws);
+      if (bilateral && F < 0)
+        throw NumericalError(
+            fmt::format("t = {:.6g} s: the bilateral contact force is {:.4g} N < 0 (the head pulls "
+                        "the wire down); the run is invalid for a bilateral contact",
+                        t, F));
+      if (t >= t_end - 2 * span_time - 1e-9) F_window.push_back(F);
+    }
     line.clear();
     append_number(line, t);
     const bool steady = a.steady_from >= 0 && t >= a.steady_from - 1e-12;
@@ -187,6 +288,13 @@ int cmd_simulate(const SimulateArgs& a) {
       fmt::print(info, "  {:<14} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g}\n", model.outputs[k].name, first[k],
                  lo[k], hi[k], hi[k] - lo[k], sum[k] / static_cast<double>(n_steady) - first[k]);
   }
+  if (f_contact >= 0) {
+    analysis::ContactStatistics cs = analysis::statistics(F_window);
+    fmt::print(info,
+               "contact force over the last 2 spans (t >= {:.4g} s): mean {:.2f} N, std {:.2f} N, max {:.2f} N, "
+               "min {:.2f} N, mean ± 3σ {:.2f} / {:.2f} N, contact loss {:.2f} %\n",
+               t_end - 2 * span_time, cs.mean, cs.std, cs.max, cs.min, cs.stat_max, cs.stat_min, cs.loss_pct);
+  }
   if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
   return 0;
 }
@@ -194,13 +302,13 @@ int cmd_simulate(const SimulateArgs& a) {
 }  // namespace
 
 // "F0:DF:F1" → F0, F0 + DF, ..., F1 (inclusive within 1e-9 DF).
-std::vector<double> frequency_range(const std::string& spec) {
+std::vector<double> frequency_range(const std::string& spec, const char* option = "--freq") {
   double f0 = 0, df = 0, f1 = 0;
   char c1 = 0, c2 = 0;
   std::istringstream in(spec);
   if (!(in >> f0 >> c1 >> df >> c2 >> f1) || c1 != ':' || c2 != ':' || !(in >> std::ws).eof() || !(f0 >= 0) ||
       !(df > 0) || !(f1 >= f0))
-    throw CLI::ValidationError("--freq", "expected F0:DF:F1 in Hz with 0 <= F0 <= F1 and DF > 0, got '" + spec + "'");
+    throw CLI::ValidationError(option, "expected A:STEP:B with 0 <= A <= B and STEP > 0, got '" + spec + "'");
   std::vector<double> f;
   const long n = std::lround(std::floor((f1 - f0) / df + 1e-9));
   for (long k = 0; k <= n; ++k) f.push_back(f0 + static_cast<double>(k) * df);
@@ -213,19 +321,7 @@ struct AdmittanceArgs {
 };
 
 int cmd_admittance(const AdmittanceArgs& a) {
-  network::Params params;
-  for (const auto& p : a.params) {
-    auto eq = p.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw CLI::ValidationError("--param", "expected NAME=VALUE, got '" + p + "'");
-    std::string name = p.substr(0, eq), v = p.substr(eq + 1);
-    double value = 0;
-    if (v == "inf")
-      value = INFINITY;
-    else if (!CLI::detail::lexical_cast(v, value))
-      throw CLI::ValidationError("--param", "not a number in '" + p + "'");
-    params[name] = value;
-  }
+  network::Params params = parse_params(a.params);
   network::Network net;
   try {
     net = network::resolve(a.layout, params);
@@ -278,6 +374,66 @@ int cmd_admittance(const AdmittanceArgs& a) {
   return 0;
 }
 
+struct SweepArgs {
+  std::string model, out, speeds, integrator = "rk";
+  CatenaryArgs cat;
+  double rtol = 1e-6, atol = 1e-8;
+  bool no_centripetal = false;
+};
+
+int cmd_sweep(const SweepArgs& a) {
+  mbs::Model model = io::load_model(a.model);
+  if (a.no_centripetal) model.options.centripetal = false;
+  auto [panto, cat] = pantograph_setup(model, a.cat);
+  for (const auto& note : panto.notes) fmt::print("note: {}\n", note);
+  std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
+  for (double s : v_user) {
+    if (!(s > 0)) throw CLI::ValidationError("--speeds", "speeds must be > 0");
+    v.push_back(to_ms(s, a.cat.unit));
+  }
+  analysis::RunOptions o;
+  o.integrator.method = solve::parse_method(a.integrator);
+  o.integrator.rtol = a.rtol;
+  o.integrator.atol = a.atol;
+  const bool tty = isatty(STDOUT_FILENO);
+  const auto wall0 = std::chrono::steady_clock::now();
+  fmt::print("sweep: {} speeds, {} contact, k_c0 = {:g} N/m, span {:g} m, suspension {}\n", v.size(),
+             cat.contact.kind == catenary::Contact::Kind::Bilateral ? "bilateral" : "penalty", cat.catenary.k[0],
+             cat.catenary.span, a.cat.suspension.empty() ? "from the model" : a.cat.suspension);
+  auto results = analysis::sweep(panto, cat.catenary, cat.contact, v, o, [&](int done, int total) {
+    if (!tty) return;
+    const int width = 40, filled = width * done / total;
+    fmt::print("\r  [{}{}] {}/{} speeds", std::string(static_cast<std::size_t>(filled), '#'),
+               std::string(static_cast<std::size_t>(width - filled), '.'), done, total);
+    std::fflush(stdout);
+  });
+  if (tty) fmt::print("\r{:70}\r", "");
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  std::FILE* out = stdout;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
+  if (!a.out.empty()) {
+    file.reset(std::fopen(a.out.c_str(), "w"));
+    if (!file) throw std::runtime_error(fmt::format("cannot write '{}'", a.out));
+    out = file.get();
+  }
+  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct\n");
+  std::size_t worst = 0;
+  int spans_max = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& s = results[i].stats;
+    fmt::print(out, "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}\n", v[i] * 3.6, v[i], s.mean, s.std,
+               s.max, s.min, s.stat_max, s.stat_min, s.loss_pct);
+    if (s.std > results[worst].stats.std) worst = i;
+    spans_max = std::max(spans_max, results[i].spans);
+  }
+  if (!a.out.empty()) fmt::print("wrote {}\n", a.out);
+  fmt::print("wall {:.2f} s; statistics over the last 2 spans once σ changed < 0.5 % span to span (up to {} spans)\n",
+             wall, spans_max);
+  fmt::print("sigma_max = {:.3f} N at {:.4g} km/h ({:.4g} m/s); mean contact force there {:.2f} N\n",
+             results[worst].stats.std, v[worst] * 3.6, v[worst], results[worst].stats.mean);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
@@ -307,6 +463,10 @@ int main(int argc, char** argv) {
   sim->add_option("--max-step", sa.max_step, "Largest integrator step, s (0 = unlimited)");
   sim->add_flag("--from-equilibrium", sa.from_equilibrium, "Start from the static equilibrium under all loads");
   sim->add_option("--steady-from", sa.steady_from, "Print min/max/peak-to-peak/mean of every output for t >= T");
+  add_catenary_options(sim, sa.cat, false);
+  sim->add_option("--speed", sa.speed, "Train speed (with --catenary), in --unit");
+  sim->add_option("--spans", sa.spans, "Spans to simulate under a catenary (t_end = spans · L / v)")
+      ->capture_default_str();
 
   AdmittanceArgs aa;
   auto* adm = app.add_subcommand("admittance", "Admittance Y = force / relative velocity of a network (CSV)");
@@ -315,6 +475,19 @@ int main(int argc, char** argv) {
   adm->add_option("--param", aa.params, "Element value NAME=VALUE (SI; 0 = open, inf = rigid); repeatable");
   adm->add_option("--freq", aa.freq, "Frequencies F0:DF:F1 in Hz")->required();
   adm->add_option("--out", aa.out, "CSV file (default: standard output)");
+
+  SweepArgs wa;
+  auto* swp = app.add_subcommand("sweep", "Contact-force statistics over a range of speeds under a catenary (CSV)");
+  swp->add_option("model", wa.model, "Pantograph model file (YAML)")->required();
+  swp->add_option("--speeds", wa.speeds, "Speeds V0:DV:V1 in --unit")->required();
+  swp->add_option("--out", wa.out, "CSV file (default: standard output)");
+  add_catenary_options(swp, wa.cat, true);
+  swp->add_option("--integrator", wa.integrator, "rk or bdf")
+      ->check(CLI::IsMember({"rk", "bdf"}))
+      ->capture_default_str();
+  swp->add_option("--rtol", wa.rtol, "Relative tolerance")->capture_default_str();
+  swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str();
+  swp->add_flag("--no-centripetal", wa.no_centripetal, "Switch off the inerter centripetal correction");
 
   try {
     app.parse(argc, argv);
@@ -325,6 +498,7 @@ int main(int argc, char** argv) {
     if (check->parsed()) return cmd_check(check_model);
     if (sim->parsed()) return cmd_simulate(sa);
     if (adm->parsed()) return cmd_admittance(aa);
+    if (swp->parsed()) return cmd_sweep(wa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const ModelError& e) {

@@ -1,8 +1,13 @@
 #include "inerta/analysis/contact_statistics.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <mutex>
 
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
@@ -78,6 +83,35 @@ SpeedResult run_speed(const mbs::Model& m, const RunOptions& o, bool bilateral) 
   const long n = std::min<long>(static_cast<long>(r.F.size()), per * o.window_spans);
   r.stats = statistics(std::vector<double>(r.F.end() - n, r.F.end()));
   return r;
+}
+
+std::vector<SpeedResult> sweep(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+                               const catenary::Contact& contact, const std::vector<double>& speeds,
+                               const RunOptions& options, const std::function<void(int, int)>& progress) {
+  std::vector<SpeedResult> results(speeds.size());
+  std::exception_ptr error;
+  std::mutex mutex;
+  int done = 0;
+  const bool bilateral = contact.kind == catenary::Contact::Kind::Bilateral;
+  tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t i) {
+    try {
+      mbs::Model m =
+          catenary::couple(pantograph, cat, contact, speeds[i], pantograph.contact_marker, pantograph.rig_joint);
+      RunOptions o = options;
+      o.speed = speeds[i];
+      SpeedResult r = run_speed(m, o, bilateral);
+      r.t.clear(), r.F.clear();  // keep sweeps light
+      results[i] = std::move(r);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (progress) progress(done, static_cast<int>(speeds.size()));
+  });
+  if (error) std::rethrow_exception(error);
+  return results;
 }
 
 }  // namespace inerta::analysis

@@ -1,7 +1,8 @@
 #include "inerta/catenary/coupling.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/assembly.hpp"
@@ -12,8 +13,8 @@ int add_catenary(mbs::Model& model, const LumpedCatenary& cat, double speed, dou
   mbs::Body wire;
   wire.name = "catenary";
   wire.mass = cat.m[0];
-  wire.inertia = 1.0;    // irrelevant: rotation locked
-  wire.weighs = false;   // y is measured from the unloaded (statically balanced) wire height
+  wire.inertia = 1.0;   // irrelevant: rotation locked
+  wire.weighs = false;  // y is measured from the unloaded (statically balanced) wire height
   wire.q0 = mbs::Vec3(x, y_unloaded, 0.0);
   model.bodies.push_back(wire);
   const int b = static_cast<int>(model.bodies.size()) - 1;

@@ -56,15 +56,22 @@ double CatenaryElement::power(const mbs::Model&, double t, const mbs::State& x) 
 double CatenaryElement::force(const mbs::Model&, double t, const mbs::State& x, const mbs::Workspace&) const {
   const double fp = pumping_frequency();
   const int iy = 3 * body_ + 1;
-  return -LumpedCatenary::harmonic(cat_.c, fp, t) * x.qd[iy] - LumpedCatenary::harmonic(cat_.k, fp, t) * (x.q[iy] - y0_);
+  return -LumpedCatenary::harmonic(cat_.c, fp, t) * x.qd[iy] -
+         LumpedCatenary::harmonic(cat_.k, fp, t) * (x.q[iy] - y0_);
 }
 
 double CatenaryElement::length(const mbs::Model&, const mbs::State& x) const { return x.q[3 * body_ + 1] - y0_; }
 
 // Penalty contact ----------------------------------------------------------------------------
-PenaltyContact::PenaltyContact(std::string name, int body_i, mbs::Vec2 u_i, int body_j, mbs::Vec2 u_j,
-                               double stiffness, double damping, double overlap0)
-    : ForceElement(std::move(name)), bi_(body_i), bj_(body_j), ui_(u_i), uj_(u_j), ks_(stiffness), cs_(damping),
+PenaltyContact::PenaltyContact(std::string name, int body_i, mbs::Vec2 u_i, int body_j, mbs::Vec2 u_j, double stiffness,
+                               double damping, double overlap0)
+    : ForceElement(std::move(name)),
+      bi_(body_i),
+      bj_(body_j),
+      ui_(u_i),
+      uj_(u_j),
+      ks_(stiffness),
+      cs_(damping),
       d0_(overlap0) {}
 
 PenaltyContact::Eval PenaltyContact::evaluate(const mbs::BodyFrame& fi, const mbs::BodyFrame& fj) const {

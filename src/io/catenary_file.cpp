@@ -1,9 +1,9 @@
 #include "inerta/io/catenary_file.hpp"
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fmt/format.h>
 
 #include "inerta/error.hpp"
 
@@ -41,9 +41,13 @@ void check(const CatenaryFile& c, const std::string& where) {
   if (!(c.catenary.k[0] > 0)) throw ModelError(fmt::format("{}: kc0 must be > 0 (N/m)", where));
   if (c.catenary.c[0] < 0) throw ModelError(fmt::format("{}: cc0 must be >= 0 (N·s/m)", where));
   // The coefficients must stay positive over a span (|first harmonics| bounded by the mean).
-  auto positive = [](const std::array<double, 4>& a) { return a[0] > std::abs(a[1]) + std::abs(a[2]) + std::abs(a[3]); };
-  if (!positive(c.catenary.k)) throw ModelError(fmt::format("{}: kc0 must exceed |kc1| + |kc2| + |kc3| (stiffness stays positive)", where));
-  if (!positive(c.catenary.m)) throw ModelError(fmt::format("{}: mc0 must exceed |mc1| + |mc2| + |mc3| (mass stays positive)", where));
+  auto positive = [](const std::array<double, 4>& a) {
+    return a[0] > std::abs(a[1]) + std::abs(a[2]) + std::abs(a[3]);
+  };
+  if (!positive(c.catenary.k))
+    throw ModelError(fmt::format("{}: kc0 must exceed |kc1| + |kc2| + |kc3| (stiffness stays positive)", where));
+  if (!positive(c.catenary.m))
+    throw ModelError(fmt::format("{}: mc0 must exceed |mc1| + |mc2| + |mc3| (mass stays positive)", where));
   if (c.catenary.c[0] + 1e-300 < std::abs(c.catenary.c[1]) + std::abs(c.catenary.c[2]) + std::abs(c.catenary.c[3]))
     throw ModelError(fmt::format("{}: cc0 must be at least |cc1| + |cc2| + |cc3| (damping stays non-negative)", where));
   if (!(c.contact.stiffness > 0) || c.contact.damping < 0)
@@ -130,9 +134,10 @@ CatenaryFile load_catenary(const std::string& path, const std::vector<std::strin
       c.contact.damping = v;
       continue;
     }
-    throw ModelError(fmt::format("--set '{}': unknown key; expected catenary.kc0..kc3, mc0..mc3, cc0..cc3, span, "
-                                 "contact.type, contact.stiffness, contact.damping",
-                                 o));
+    throw ModelError(
+        fmt::format("--set '{}': unknown key; expected catenary.kc0..kc3, mc0..mc3, cc0..cc3, span, "
+                    "contact.type, contact.stiffness, contact.damping",
+                    o));
   }
   check(c, path + " (after --set)");
   return c;

@@ -1,5 +1,6 @@
 #pragma once
 // Contact-quality statistics (spec/06 §6.1) and the speed run that produces them.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,27 +20,34 @@ struct ContactStatistics {
 ContactStatistics statistics(const std::vector<double>& F);
 
 struct RunOptions {
-  double speed = 0;             ///< m/s
-  int min_spans = 4;            ///< simulate at least this many spans
-  int max_spans = 40;           ///< give up converging after this many
-  double tolerance = 0.005;     ///< span-to-span relative change of σ that ends the run
-  int window_spans = 2;         ///< statistics over the last window_spans spans
+  double speed = 0;          ///< m/s
+  int min_spans = 4;         ///< simulate at least this many spans
+  int max_spans = 40;        ///< give up converging after this many
+  double tolerance = 0.005;  ///< span-to-span relative change of σ that ends the run
+  int window_spans = 2;      ///< statistics over the last window_spans spans
   int samples_per_span = 400;
   solve::IntegratorOptions integrator;
-  bool fixed_spans = false;     ///< run exactly min_spans spans (no convergence test)
+  bool fixed_spans = false;  ///< run exactly min_spans spans (no convergence test)
 };
 
 struct SpeedResult {
   double speed = 0;
   ContactStatistics stats;
-  int spans = 0;                ///< spans simulated
-  double sigma_change = 0;      ///< last span-to-span relative change of σ
-  std::vector<double> t, F;     ///< contact-force history (all spans)
+  int spans = 0;             ///< spans simulated
+  double sigma_change = 0;   ///< last span-to-span relative change of σ
+  std::vector<double> t, F;  ///< contact-force history (all spans)
 };
 
 /// Static equilibrium of the coupled model, then span by span until σ over one span changes by less
 /// than `tolerance` from the previous span (spec/06 §6.1); statistics over the last `window_spans`
 /// spans. A bilateral contact whose force becomes negative throws NumericalError with t and F.
 SpeedResult run_speed(const mbs::Model& coupled, const RunOptions& options, bool bilateral);
+
+/// Speed sweep (spec/06 §6.1): couples `pantograph` to the catenary at every speed and runs them in
+/// parallel (oneTBB). `progress(done, total)` is called after each speed (from worker threads,
+/// serialised). Results are in the order of `speeds`; the first failure is rethrown.
+std::vector<SpeedResult> sweep(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+                               const catenary::Contact& contact, const std::vector<double>& speeds,
+                               const RunOptions& options, const std::function<void(int, int)>& progress = {});
 
 }  // namespace inerta::analysis

@@ -16,10 +16,10 @@
 namespace inerta::catenary {
 
 struct LumpedCatenary {
-  double span = 60.0;                                   ///< L, m
-  std::array<double, 4> m{177.3, 0.0, 0.0, 0.0};        ///< m_c0..m_c3, kg
-  std::array<double, 4> c{111.0, 0.0, 0.0, 0.0};        ///< c_c0..c_c3, N·s/m
-  std::array<double, 4> k{7000.0, 2100.0, 350.0, 140.0};///< k_c0..k_c3, N/m
+  double span = 60.0;                                     ///< L, m
+  std::array<double, 4> m{177.3, 0.0, 0.0, 0.0};          ///< m_c0..m_c3, kg
+  std::array<double, 4> c{111.0, 0.0, 0.0, 0.0};          ///< c_c0..c_c3, N·s/m
+  std::array<double, 4> k{7000.0, 2100.0, 350.0, 140.0};  ///< k_c0..k_c3, N/m
 
   /// Σ x_i cos(2π i f_p t) and its time derivative.
   static double harmonic(const std::array<double, 4>& x, double fp, double t);

@@ -20,6 +20,7 @@ class NetworkStrut : public Strut {
   const network::Realisation& realisation() const { return r_; }
   double reference_length() const { return l_ref_; }
   bool centripetal(const Model& model) const;
+  bool centripetal_switch() const { return centripetal_; }  ///< this element's own switch
 
   void add(const Model& model, double t, const State& x, Workspace& ws) const override;
   double energy(const Model&, double t, const State& x) const override;  // ½ d2 l̇² + ½ d0 u²

@@ -1,0 +1,42 @@
+#include "inerta/pantograph/suspension.hpp"
+
+#include <fmt/format.h>
+
+#include "inerta/error.hpp"
+#include "inerta/mbs/network_strut.hpp"
+
+namespace inerta::pantograph {
+
+mbs::Model with_suspension(const mbs::Model& model, const network::Network& bound) {
+  using network::Network;
+  mbs::Model m = model;
+  Network net = network::simplify(bound);
+  if (net.kind == Network::Kind::Rigid)
+    throw ModelError(fmt::format("suspension '{}' is rigid with these values; it would lock the pantograph",
+                                 network::to_string(bound, true)));
+  if (net.kind == Network::Kind::Open) {
+    m.notes.push_back(fmt::format("suspension '{}' is open: only the actuator's constant force and piston mass act",
+                                  network::to_string(bound, true)));
+    net = Network{Network::Kind::Damper, "c", 0.0, {}, 0};
+  }
+  bool found = false;
+  int offset = 0;
+  for (auto& f : m.forces) {
+    if (auto a = std::dynamic_pointer_cast<const mbs::Actuator>(f)) {
+      if (found) throw ModelError(fmt::format("{}: more than one actuator; the suspension is ambiguous", m.source));
+      found = true;
+      f = std::make_shared<mbs::Actuator>(a->name(), a->body_i(), a->u_i(), a->body_j(), a->u_j(), net,
+                                          a->reference_length(), offset, a->params(), a->centripetal_switch());
+    } else if (auto s = std::dynamic_pointer_cast<const mbs::NetworkStrut>(f); s && s->state_offset() != offset) {
+      f = std::make_shared<mbs::NetworkStrut>(s->name(), s->body_i(), s->u_i(), s->body_j(), s->u_j(), s->network(),
+                                              s->reference_length(), offset, s->centripetal_switch());
+    }
+    offset += f->n_states();
+  }
+  if (!found)
+    throw ModelError(fmt::format("{}: the model has no actuator whose suspension could be replaced", m.source));
+  m.finalize();
+  return m;
+}
+
+}  // namespace inerta::pantograph
