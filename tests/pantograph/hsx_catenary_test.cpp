@@ -62,3 +62,20 @@ TEST(HsxCatenary, BilateralSignCheckTriggersWhenTheActuatorIsWeak) {
     EXPECT_NE(std::string(e.what()).find("bilateral contact force"), std::string::npos) << e.what();
   }
 }
+
+TEST(HsxCatenary, StatisticsAreConvergedOverTheWindow) {
+  // Doubling the statistics window changes σ by less than 1 % (issue 4).
+  io::CatenaryFile c = io::load_catenary(kCatenary);
+  for (double v : {100 / 3.6, 210 / 3.6}) {
+    mbs::Model m = catenary::couple(hsx(), c.catenary, c.contact, v, "head.cm", "contact");
+    analysis::RunOptions o;
+    o.speed = v;
+    analysis::SpeedResult r = analysis::run_speed(m, o, true);
+    const long per = static_cast<long>(r.F.size()) / r.spans;
+    auto last = [&](int spans) {
+      return analysis::statistics(std::vector<double>(r.F.end() - per * spans, r.F.end())).std;
+    };
+    ASSERT_GE(r.spans, 4);
+    EXPECT_LT(std::abs(last(4) - last(2)) / last(2), 0.01) << "v = " << v * 3.6 << " km/h";
+  }
+}

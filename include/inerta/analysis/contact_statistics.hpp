@@ -21,7 +21,7 @@ ContactStatistics statistics(const std::vector<double>& F);
 
 struct RunOptions {
   double speed = 0;          ///< m/s
-  int min_spans = 4;         ///< simulate at least this many spans
+  int min_spans = 6;         ///< at least this many spans (a doubled window then misses the start)
   int max_spans = 40;        ///< give up converging after this many
   double tolerance = 0.005;  ///< span-to-span relative change of σ that ends the run
   int window_spans = 2;      ///< statistics over the last window_spans spans
