@@ -99,6 +99,20 @@ int cmd_check(const std::string& path) {
   return 0;
 }
 
+// A CSV destination: the file given with --out (created or replaced), or standard output.
+class OutputFile {
+ public:
+  explicit OutputFile(const std::string& path) {
+    if (path.empty()) return;
+    file_.reset(std::fopen(path.c_str(), "w"));
+    if (!file_) throw std::runtime_error(fmt::format("cannot write '{}'", path));
+  }
+  std::FILE* get() const { return file_ ? file_.get() : stdout; }
+
+ private:
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, &std::fclose};
+};
+
 // CSV numbers: 10 significant digits, shortest general form.
 void append_number(std::string& s, double v) {
   char buf[32];
@@ -220,15 +234,8 @@ int cmd_simulate(const SimulateArgs& a) {
     fmt::print(info, "\n");
   }
 
-  std::FILE* out = nullptr;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
-  if (!a.out.empty()) {
-    file.reset(std::fopen(a.out.c_str(), "w"));
-    if (!file) throw std::runtime_error(fmt::format("cannot write '{}'", a.out));
-    out = file.get();
-  } else {
-    out = stdout;
-  }
+  OutputFile file(a.out);
+  std::FILE* out = file.get();
   fmt::print(out, "t");
   for (const auto& o : model.outputs) fmt::print(out, ",{}", o.name);
   fmt::print(out, "\n");
@@ -357,13 +364,8 @@ int cmd_admittance(const AdmittanceArgs& a) {
           fmt::format("network '{}': Y is infinite at f = {:g} Hz (a spring path gives a static "
                       "stiffness); start --freq above 0",
                       a.layout, fk));
-  std::FILE* out = stdout;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
-  if (!a.out.empty()) {
-    file.reset(std::fopen(a.out.c_str(), "w"));
-    if (!file) throw std::runtime_error(fmt::format("cannot write '{}'", a.out));
-    out = file.get();
-  }
+  OutputFile file(a.out);
+  std::FILE* out = file.get();
   fmt::print(out, "f_hz,mag,phase_deg,re,im\n");
   for (double fk : f) {
     std::complex<double> y = network::admittance(s, {0.0, 2 * std::numbers::pi * fk});
@@ -409,13 +411,8 @@ int cmd_sweep(const SweepArgs& a) {
   });
   if (tty) fmt::print("\r{:70}\r", "");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  std::FILE* out = stdout;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
-  if (!a.out.empty()) {
-    file.reset(std::fopen(a.out.c_str(), "w"));
-    if (!file) throw std::runtime_error(fmt::format("cannot write '{}'", a.out));
-    out = file.get();
-  }
+  OutputFile file(a.out);
+  std::FILE* out = file.get();
   fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct\n");
   std::size_t worst = 0;
   int spans_max = 0;
