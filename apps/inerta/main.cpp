@@ -20,6 +20,7 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
+#include "inerta/mbs/linearisation.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/network/realisation.hpp"
 #include "inerta/pantograph/suspension.hpp"
@@ -431,6 +432,53 @@ int cmd_sweep(const SweepArgs& a) {
   return 0;
 }
 
+struct ModesArgs {
+  std::string model, out;
+  CatenaryArgs cat;
+};
+
+// Modes of the linearised model about its static equilibrium (spec/02 §2.5, spec/06 §6.3).
+int cmd_modes(const ModesArgs& a) {
+  mbs::Model model = io::load_model(a.model);
+  std::string setting;
+  if (!a.cat.catenary.empty()) {
+    auto [panto, cat] = pantograph_setup(model, a.cat);
+    for (int i = 1; i <= 3; ++i) cat.catenary.k[i] = cat.catenary.m[i] = cat.catenary.c[i] = 0;  // mean catenary
+    model = catenary::couple(panto, cat.catenary, cat.contact, 1.0, panto.contact_marker, panto.rig_joint);
+    setting =
+        fmt::format("with the mean catenary (k_c0 = {:g} N/m, m_c0 = {:g} kg)", cat.catenary.k[0], cat.catenary.m[0]);
+  } else if (!model.rig_joint.empty()) {
+    double F = 0;
+    model = pantograph::release_head(model, &F);
+    setting = fmt::format("head free under its static contact force {:.2f} N", F);
+  }
+  mbs::State x = mbs::assemble(model, 0.0);
+  mbs::static_equilibrium(model, 0.0, x);
+  mbs::LinearModel lin = mbs::linearise(model, x, 0.0);
+  std::vector<mbs::Mode> ms = mbs::modes(model, lin);
+  fmt::print("modes of {} about its static equilibrium{}{}: {} independent coordinates, {} internal states\n",
+             model.name, setting.empty() ? "" : ", ", setting, lin.dof, lin.nz);
+  fmt::print("  {:>3} {:>10} {:>10}  {}\n", "#", "f [Hz]", "zeta",
+             "dominant coordinates (mode shape, body coordinates)");
+  for (std::size_t i = 0; i < ms.size(); ++i)
+    fmt::print("  {:>3} {:>10.4f} {:>10.4f}  {}{}\n", i + 1, ms[i].frequency_hz, ms[i].damping_ratio,
+               ms[i].eigenvalue.imag() == 0 ? "(real, non-oscillatory) " : "", ms[i].description);
+  if (!a.out.empty()) {
+    OutputFile file(a.out);
+    fmt::print(file.get(), "mode,f_hz,zeta,re_lambda,im_lambda");
+    for (int k = 0; k < model.n_coords(); ++k) fmt::print(file.get(), ",{}", model.coord_name(k));
+    fmt::print(file.get(), "\n");
+    for (std::size_t i = 0; i < ms.size(); ++i) {
+      fmt::print(file.get(), "{},{:.10g},{:.10g},{:.10g},{:.10g}", i + 1, ms[i].frequency_hz, ms[i].damping_ratio,
+                 ms[i].eigenvalue.real(), ms[i].eigenvalue.imag());
+      for (int k = 0; k < ms[i].shape.size(); ++k) fmt::print(file.get(), ",{:.6g}", ms[i].shape[k]);
+      fmt::print(file.get(), "\n");
+    }
+    fmt::print("wrote {}\n", a.out);
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
@@ -486,6 +534,14 @@ int main(int argc, char** argv) {
   swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str();
   swp->add_flag("--no-centripetal", wa.no_centripetal, "Switch off the inerter centripetal correction");
 
+  ModesArgs ma;
+  auto* mds =
+      app.add_subcommand("modes", "Natural frequencies, damping ratios and mode shapes about the static equilibrium");
+  mds->add_option("model", ma.model, "Model file (YAML)")->required();
+  mds->add_option("--out", ma.out, "CSV of the modes and their shapes");
+  mds->add_option("--catenary", ma.cat.catenary, "Couple to this catenary (its mean, time-invariant part)");
+  mds->add_option("--set", ma.cat.sets, "Override a catenary value (repeatable)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -496,6 +552,7 @@ int main(int argc, char** argv) {
     if (sim->parsed()) return cmd_simulate(sa);
     if (adm->parsed()) return cmd_admittance(aa);
     if (swp->parsed()) return cmd_sweep(wa);
+    if (mds->parsed()) return cmd_modes(ma);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const ModelError& e) {

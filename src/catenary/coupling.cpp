@@ -37,17 +37,9 @@ mbs::Model couple(const mbs::Model& pantograph, const LumpedCatenary& cat, const
   mbs::Model m = pantograph;
   const int mk = m.find_marker(contact_marker);
   if (mk < 0) throw ModelError(fmt::format("{}: unknown contact marker '{}'", m.source, contact_marker));
-  // Remove the rig's hold of the head; outputs of that joint go, the others are re-indexed.
-  const int removed = m.find_joint(rig_joint);
-  if (removed >= 0) m.joints.erase(m.joints.begin() + removed);
-  std::vector<mbs::Output> outputs;
-  for (mbs::Output o : m.outputs) {
-    const bool of_joint = o.kind == mbs::Output::Kind::Reaction || o.kind == mbs::Output::Kind::Multiplier;
-    if (o.name == "F_contact" || (of_joint && o.index == removed)) continue;
-    if (of_joint && removed >= 0 && o.index > removed) --o.index;
-    outputs.push_back(o);
-  }
-  m.outputs = outputs;
+  // Remove the rig's hold of the head (and its outputs) and any earlier F_contact.
+  m.remove_joint(rig_joint);
+  std::erase_if(m.outputs, [](const mbs::Output& o) { return o.name == "F_contact"; });
   m.finalize();
   // The wire starts unloaded at the contact point's assembled position.
   mbs::State x = mbs::assemble(m, 0.0);

@@ -49,6 +49,22 @@ void Model::finalize() {
   }
 }
 
+bool Model::remove_joint(const std::string& name) {
+  const int removed = find_joint(name);
+  if (removed < 0) return false;
+  joints.erase(joints.begin() + removed);
+  std::vector<Output> kept;
+  for (Output o : outputs) {
+    const bool of_joint = o.kind == Output::Kind::Reaction || o.kind == Output::Kind::Multiplier;
+    if (of_joint && o.index == removed) continue;
+    if (of_joint && o.index > removed) --o.index;
+    kept.push_back(o);
+  }
+  outputs = kept;
+  finalize();
+  return true;
+}
+
 Eigen::VectorXd Model::q0() const {
   Eigen::VectorXd q(n_coords());
   for (std::size_t b = 0; b < bodies.size(); ++b) q.segment<3>(3 * static_cast<int>(b)) = bodies[b].q0;

@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include "inerta/error.hpp"
+#include "inerta/mbs/applied_forces.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/dynamics.hpp"
 #include "inerta/mbs/network_strut.hpp"
 
 namespace inerta::pantograph {
@@ -36,6 +39,27 @@ mbs::Model with_suspension(const mbs::Model& model, const network::Network& boun
   if (!found)
     throw ModelError(fmt::format("{}: the model has no actuator whose suspension could be replaced", m.source));
   m.finalize();
+  return m;
+}
+
+mbs::Model release_head(const mbs::Model& model, double* static_force) {
+  const int j = model.find_joint(model.rig_joint);
+  if (model.rig_joint.empty() || j < 0)
+    throw ModelError(fmt::format("{}: no rig joint (pantograph: rig_joint) to release", model.source));
+  mbs::State x = mbs::assemble(model, 0.0);
+  mbs::static_equilibrium(model, 0.0, x);
+  mbs::Workspace ws(model);
+  mbs::accelerations(model, 0.0, x, ws);
+  const mbs::Vec3 r = mbs::joint_reaction(model, j, 0.0, x, ws.lambda);  // on the held body
+  const int head = model.joints[static_cast<std::size_t>(j)].body_j;
+  mbs::Model m = model;
+  m.remove_joint(model.rig_joint);
+  const mbs::Vec2 F = r.head<2>();
+  if (F.norm() > 0)
+    m.forces.push_back(std::make_shared<mbs::PointForce>("static_contact", head, mbs::Vec2::Zero(), F / F.norm(),
+                                                         mbs::TimeFunction::constant(F.norm())));
+  m.finalize();
+  if (static_force) *static_force = -r.y();
   return m;
 }
 

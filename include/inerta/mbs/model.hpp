@@ -68,6 +68,10 @@ struct Model {
   /// Assigns constraint rows and counts internal states; call after joints and forces are final.
   void finalize();
 
+  /// Removes joint `name` if present (outputs of that joint go, the others are re-indexed) and
+  /// refinalizes; returns whether it was there.
+  bool remove_joint(const std::string& name);
+
   /// Initial state from the bodies' tabulated q0, qd0 (not yet assembled).
   Eigen::VectorXd q0() const;
   Eigen::VectorXd qd0() const;

@@ -11,4 +11,10 @@ namespace inerta::pantograph {
 /// model has no actuator, or if `net` is rigid.
 mbs::Model with_suspension(const mbs::Model& model, const network::Network& net);
 
+/// The pantograph with its head released from the rig joint and loaded instead by a constant force
+/// equal to the joint's static reaction (the static contact force), so the static equilibrium is
+/// unchanged and the head is free (modes of the free pantograph, spec/06 §6.3). `static_force`
+/// receives that force (N, compression positive). Throws ModelError without a rig joint.
+mbs::Model release_head(const mbs::Model& model, double* static_force = nullptr);
+
 }  // namespace inerta::pantograph
