@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/frf.hpp"
 #include "inerta/catenary/coupling.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
@@ -479,6 +480,60 @@ int cmd_modes(const ModesArgs& a) {
   return 0;
 }
 
+struct FrfArgs {
+  std::string model, outputs, freq, method = "linear", out;
+  double vc = 0.06;
+  int cycles = 100, analysed = 50;
+};
+
+// Test-rig FRF (spec/04 §4.2, eq. 6.25): acceleration over contact force.
+int cmd_frf(const FrfArgs& a) {
+  mbs::Model model = io::load_model(a.model);
+  std::vector<std::string> outputs;
+  std::stringstream ss(a.outputs);
+  for (std::string o; std::getline(ss, o, ',');)
+    if (!o.empty()) outputs.push_back(o);
+  if (outputs.empty()) throw CLI::ValidationError("--outputs", "expected a comma-separated list, e.g. P_ay,E_ay,B_ay");
+  const std::vector<double> f = frequency_range(a.freq);
+  for (double fk : f)
+    if (!(fk > 0)) throw CLI::ValidationError("--freq", "frequencies must be > 0");
+  const auto wall0 = std::chrono::steady_clock::now();
+  analysis::Frf r;
+  if (a.method == "linear") {
+    r = analysis::frf_linear(model, outputs, f);
+  } else {
+    analysis::SteppedSine o;
+    o.vc = a.vc;
+    o.cycles = a.cycles;
+    o.analysed = a.analysed;
+    if (!(o.analysed > 0 && o.analysed <= o.cycles))
+      throw CLI::ValidationError("--analysed", "must be between 1 and --cycles");
+    r = analysis::frf_stepped_sine(model, outputs, f, o);
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  OutputFile file(a.out);
+  fmt::print(file.get(), "f_hz");
+  for (const auto& o : outputs) fmt::print(file.get(), ",{}_mag,{}_phase_deg", o, o);
+  fmt::print(file.get(), "\n");
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    fmt::print(file.get(), "{:.10g}", f[k]);
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+      fmt::print(file.get(), ",{:.10g},{:.10g}", std::abs(r.H[i][k]), std::arg(r.H[i][k]) * 180 / std::numbers::pi);
+    fmt::print(file.get(), "\n");
+  }
+  std::FILE* info = a.out.empty() ? stderr : stdout;
+  fmt::print(info, "FRF ({}) of {}: {} frequencies, {} output(s) per N of contact force (m/s²/N), wall {:.2f} s\n",
+             a.method, model.name, f.size(), outputs.size(), wall);
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    std::size_t kmax = 0;
+    for (std::size_t k = 0; k < f.size(); ++k)
+      if (std::abs(r.H[i][k]) > std::abs(r.H[i][kmax])) kmax = k;
+    fmt::print(info, "  {}: peak |FRF| = {:.4g} at {:.4g} Hz\n", outputs[i], std::abs(r.H[i][kmax]), f[kmax]);
+  }
+  if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
@@ -542,6 +597,19 @@ int main(int argc, char** argv) {
   mds->add_option("--catenary", ma.cat.catenary, "Couple to this catenary (its mean, time-invariant part)");
   mds->add_option("--set", ma.cat.sets, "Override a catenary value (repeatable)");
 
+  FrfArgs fa;
+  auto* frf = app.add_subcommand("frf", "Test-rig FRF: vertical accelerations over contact force (spec/04 §4.2)");
+  frf->add_option("model", fa.model, "Pantograph model with a rig joint (YAML)")->required();
+  frf->add_option("--outputs", fa.outputs, "Acceleration outputs, comma-separated (e.g. P_ay,E_ay,B_ay)")->required();
+  frf->add_option("--freq", fa.freq, "Frequencies F0:DF:F1 in Hz")->required();
+  frf->add_option("--method", fa.method, "linear or stepped-sine")
+      ->check(CLI::IsMember({"linear", "stepped-sine"}))
+      ->capture_default_str();
+  frf->add_option("--vc", fa.vc, "Stepped sine: mean velocity amplitude V_c, m/s")->capture_default_str();
+  frf->add_option("--cycles", fa.cycles, "Stepped sine: cycles per frequency")->capture_default_str();
+  frf->add_option("--analysed", fa.analysed, "Stepped sine: last cycles analysed")->capture_default_str();
+  frf->add_option("--out", fa.out, "CSV file (default: standard output)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -553,6 +621,7 @@ int main(int argc, char** argv) {
     if (adm->parsed()) return cmd_admittance(aa);
     if (swp->parsed()) return cmd_sweep(wa);
     if (mds->parsed()) return cmd_modes(ma);
+    if (frf->parsed()) return cmd_frf(fa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const ModelError& e) {

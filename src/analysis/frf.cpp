@@ -1,0 +1,193 @@
+#include "inerta/analysis/frf.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <numbers>
+
+#include "inerta/error.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/dynamics.hpp"
+
+namespace inerta::analysis {
+
+using cd = std::complex<double>;
+using std::numbers::pi;
+
+namespace {
+
+int output_index(const mbs::Model& m, const std::string& name) {
+  for (std::size_t k = 0; k < m.outputs.size(); ++k)
+    if (m.outputs[k].name == name) return static_cast<int>(k);
+  throw ModelError(fmt::format("{}: no output '{}'", m.source, name));
+}
+
+int rig_joint(const mbs::Model& m) {
+  const int j = m.find_joint(m.rig_joint);
+  if (m.rig_joint.empty() || j < 0 || m.joints[static_cast<std::size_t>(j)].type != mbs::JointType::Driving)
+    throw ModelError(
+        fmt::format("{}: the FRF needs the pantograph's rig joint (pantograph: rig_joint), a driving joint", m.source));
+  return j;
+}
+
+}  // namespace
+
+Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, const std::vector<double>& f) {
+  const int n = rig.n_coords(), m = rig.n_constraints(), nz = rig.n_states();
+  const int jr = rig_joint(rig), row = rig.joints[static_cast<std::size_t>(jr)].row;
+  const int fc = output_index(rig, "F_contact");
+  std::vector<int> outs;
+  for (const auto& o : outputs) {
+    outs.push_back(output_index(rig, o));
+    if (rig.outputs[static_cast<std::size_t>(outs.back())].kind != mbs::Output::Kind::Acceleration)
+      throw ModelError(fmt::format("output '{}' is not an acceleration", o));
+  }
+  const auto& Fo = rig.outputs[static_cast<std::size_t>(fc)];
+  if (Fo.kind != mbs::Output::Kind::Reaction && Fo.kind != mbs::Output::Kind::Multiplier)
+    throw ModelError("F_contact must be the rig joint's reaction or multiplier for an FRF");
+
+  // Equilibrium with the head held, and its multipliers.
+  mbs::State x = mbs::assemble(rig, 0.0);
+  mbs::static_equilibrium(rig, 0.0, x);
+  mbs::Workspace ws(rig);
+  mbs::accelerations(rig, 0.0, x, ws);
+  const Eigen::VectorXd lambda0 = ws.lambda;
+  const Eigen::MatrixXd M = ws.M, Cq = ws.Cq;
+  // Central differences of Q − C_qᵀλ0 and ż in q, q̇ and z (t = 0: the rig's motion is the input).
+  auto eval = [&](const mbs::State& s, Eigen::VectorXd& R, Eigen::VectorXd& zd) {
+    mbs::evaluate_forces(rig, 0.0, s, ws);
+    mbs::evaluate_constraints(rig, 0.0, s, ws);
+    R = ws.Q - ws.Cq.transpose() * lambda0;
+    zd = ws.zd;
+  };
+  Eigen::MatrixXd K(n, n), D(n, n), Qz(n, nz), Zq(nz, n), Zqd(nz, n), Az(nz, nz);
+  Eigen::VectorXd Rp, Rm, zp, zm;
+  const double h = 1e-6;
+  for (int k = 0; k < 2 * n + nz; ++k) {
+    mbs::State p = x, q = x;
+    if (k < n)
+      p.q[k] += h, q.q[k] -= h;
+    else if (k < 2 * n)
+      p.qd[k - n] += h, q.qd[k - n] -= h;
+    else
+      p.z[k - 2 * n] += h, q.z[k - 2 * n] -= h;
+    eval(p, Rp, zp);
+    eval(q, Rm, zm);
+    Eigen::VectorXd dR = (Rp - Rm) / (2 * h), dz = (zp - zm) / (2 * h);
+    if (k < n)
+      K.col(k) = -dR, Zq.col(k) = dz;
+    else if (k < 2 * n)
+      D.col(k - n) = -dR, Zqd.col(k - n) = dz;
+    else
+      Qz.col(k - 2 * n) = dR, Az.col(k - 2 * n) = dz;
+  }
+  Frf out;
+  out.f = f;
+  out.outputs = outputs;
+  out.H.assign(outputs.size(), std::vector<cd>(f.size()));
+  Eigen::MatrixXcd S(n + m, n + m);
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n + m);
+  rhs[n + row] = 1.0;  // C_q δq = unit displacement of the rig joint
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    const double w = 2 * pi * f[k];
+    const cd iw(0, w);
+    Eigen::MatrixXcd dyn = -w * w * M.cast<cd>() + iw * D.cast<cd>() + K.cast<cd>();
+    if (nz > 0) {
+      Eigen::MatrixXcd G = (iw * Eigen::MatrixXcd::Identity(nz, nz) - Az.cast<cd>())
+                               .partialPivLu()
+                               .solve((Zq.cast<cd>() + iw * Zqd.cast<cd>()));
+      dyn -= Qz.cast<cd>() * G;
+    }
+    S.topLeftCorner(n, n) = dyn;
+    S.topRightCorner(n, m) = Cq.transpose().cast<cd>();
+    S.bottomLeftCorner(m, n) = Cq.cast<cd>();
+    S.bottomRightCorner(m, m).setZero();
+    Eigen::VectorXcd sol = S.fullPivLu().solve(rhs);
+    const Eigen::VectorXcd dq = sol.head(n), dl = sol.tail(m);
+    // Contact force: the output's linear part in δλ (reaction on the held body, or the multiplier).
+    cd F = 0;
+    const auto& jt = rig.joints[static_cast<std::size_t>(Fo.index)];
+    if (Fo.kind == mbs::Output::Kind::Multiplier) {
+      F = dl[jt.row + Fo.component];
+    } else {
+      mbs::ConstraintRow rows[3];
+      const int nr = mbs::evaluate_joint(jt, 0.0, x.frame(jt.body_i), x.frame(jt.body_j), rows);
+      for (int r = 0; r < nr; ++r) F -= rows[r].gj[Fo.component] * dl[jt.row + r];
+    }
+    F *= Fo.scale;
+    for (std::size_t i = 0; i < outs.size(); ++i) {
+      const auto& o = rig.outputs[static_cast<std::size_t>(outs[i])];
+      const auto& mk = rig.markers[static_cast<std::size_t>(o.index)];
+      cd r = 0;
+      if (mk.body >= 0) {
+        const mbs::PointKinematics p = mbs::point_kinematics(x.frame(mk.body), mk.u);
+        r = dq[3 * mk.body + o.component] + p.Atu[o.component] * dq[3 * mk.body + 2];
+      }
+      out.H[i][k] = -w * w * r * o.scale / F;
+    }
+  }
+  return out;
+}
+
+Frf frf_stepped_sine(const mbs::Model& rig, const std::vector<std::string>& outputs, const std::vector<double>& f,
+                     const SteppedSine& o) {
+  const int jr = rig_joint(rig);
+  const int fc = output_index(rig, "F_contact");
+  std::vector<int> outs;
+  for (const auto& name : outputs) outs.push_back(output_index(rig, name));
+  mbs::State x0 = mbs::assemble(rig, 0.0);
+  mbs::static_equilibrium(rig, 0.0, x0);
+  Frf out;
+  out.f = f;
+  out.outputs = outputs;
+  out.H.assign(outputs.size(), std::vector<cd>(f.size()));
+  std::exception_ptr error;
+  std::mutex mutex;
+  tbb::parallel_for(std::size_t{0}, f.size(), [&](std::size_t k) {
+    try {
+      mbs::Model m = rig;
+      const double w = 2 * pi * f[k], T = 1 / f[k];
+      m.joints[static_cast<std::size_t>(jr)].motion = mbs::TimeFunction::sine(o.vc / w, f[k]);
+      // From the static equilibrium, with velocities consistent with the imposed motion (V_c at t = 0).
+      mbs::State x = x0;
+      {
+        mbs::Workspace ws(m);
+        mbs::evaluate_constraints(m, 0.0, x, ws);
+        x.qd = -ws.Cq.completeOrthogonalDecomposition().solve(ws.Ct);
+      }
+      const double t0 = (o.cycles - o.analysed) * T;
+      std::vector<cd> acc(outs.size(), 0.0);
+      cd F = 0;
+      double last_t = -1;
+      std::vector<double> prev(outs.size() + 1, 0.0);
+      solve::integrate(
+          m, x, 0.0, o.cycles * T, T / o.samples_per_cycle, o.integrator,
+          [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
+            std::vector<double> v(outs.size() + 1);
+            for (std::size_t i = 0; i < outs.size(); ++i)
+              v[i] = mbs::evaluate_output(m.outputs[static_cast<std::size_t>(outs[i])], m, t, s, ws);
+            v.back() = mbs::evaluate_output(m.outputs[static_cast<std::size_t>(fc)], m, t, s, ws);
+            if (last_t >= t0 - 1e-12) {  // trapezoid of v e^{−iωt} over whole analysed cycles
+              const double dt = t - last_t;
+              const cd e1 = std::exp(cd(0, -w * last_t)), e2 = std::exp(cd(0, -w * t));
+              for (std::size_t i = 0; i < outs.size(); ++i) acc[i] += 0.5 * dt * (prev[i] * e1 + v[i] * e2);
+              F += 0.5 * dt * (prev.back() * e1 + v.back() * e2);
+            }
+            prev = v;
+            last_t = t;
+          },
+          true);
+      for (std::size_t i = 0; i < outs.size(); ++i) out.H[i][k] = acc[i] / F;
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+  });
+  if (error) std::rethrow_exception(error);
+  return out;
+}
+
+}  // namespace inerta::analysis
