@@ -16,6 +16,7 @@
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
+#include "inerta/analysis/periodic.hpp"
 #include "inerta/catenary/coupling.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
@@ -380,7 +381,8 @@ int cmd_admittance(const AdmittanceArgs& a) {
 }
 
 struct SweepArgs {
-  std::string model, out, speeds, integrator = "rk";
+  std::string model, out, speeds, integrator = "rk", method = "time";
+  int harmonics = 8;
   CatenaryArgs cat;
   double rtol = 1e-6, atol = 1e-8;
   bool no_centripetal = false;
@@ -405,13 +407,17 @@ int cmd_sweep(const SweepArgs& a) {
   fmt::print("sweep: {} speeds, {} contact, k_c0 = {:g} N/m, span {:g} m, suspension {}\n", v.size(),
              cat.contact.kind == catenary::Contact::Kind::Bilateral ? "bilateral" : "penalty", cat.catenary.k[0],
              cat.catenary.span, a.cat.suspension.empty() ? "from the model" : a.cat.suspension);
-  auto results = analysis::sweep(panto, cat.catenary, cat.contact, v, o, [&](int done, int total) {
-    if (!tty) return;
-    const int width = 40, filled = width * done / total;
-    fmt::print("\r  [{}{}] {}/{} speeds", std::string(static_cast<std::size_t>(filled), '#'),
-               std::string(static_cast<std::size_t>(width - filled), '.'), done, total);
-    std::fflush(stdout);
-  });
+  std::vector<analysis::SpeedResult> results;
+  if (a.method == "periodic")
+    results = analysis::sweep_periodic(panto, cat.catenary, cat.contact, v, a.harmonics);
+  else
+    results = analysis::sweep(panto, cat.catenary, cat.contact, v, o, [&](int done, int total) {
+      if (!tty) return;
+      const int width = 40, filled = width * done / total;
+      fmt::print("\r  [{}{}] {}/{} speeds", std::string(static_cast<std::size_t>(filled), '#'),
+                 std::string(static_cast<std::size_t>(width - filled), '.'), done, total);
+      std::fflush(stdout);
+    });
   if (tty) fmt::print("\r{:70}\r", "");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   OutputFile file(a.out);
@@ -427,8 +433,12 @@ int cmd_sweep(const SweepArgs& a) {
     spans_max = std::max(spans_max, results[i].spans);
   }
   if (!a.out.empty()) fmt::print("wrote {}\n", a.out);
-  fmt::print("wall {:.2f} s; statistics over the last 2 spans once σ changed < 0.5 % span to span (up to {} spans)\n",
-             wall, spans_max);
+  if (a.method == "periodic")
+    fmt::print("wall {:.3f} s; periodic steady state by harmonic balance ({} harmonics of the pumping frequency)\n",
+               wall, a.harmonics);
+  else
+    fmt::print("wall {:.2f} s; statistics over the last 2 spans once σ changed < 0.5 % span to span (up to {} spans)\n",
+               wall, spans_max);
   fmt::print("sigma_max = {:.3f} N at {:.4g} km/h ({:.4g} m/s); mean contact force there {:.2f} N\n",
              results[worst].stats.std, v[worst] * 3.6, v[worst], results[worst].stats.mean);
   return 0;
@@ -626,6 +636,11 @@ int main(int argc, char** argv) {
   swp->add_option("--rtol", wa.rtol, "Relative tolerance")->capture_default_str();
   swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str();
   swp->add_flag("--no-centripetal", wa.no_centripetal, "Switch off the inerter centripetal correction");
+  swp->add_option("--method", wa.method, "time (simulation, the reference) or periodic (harmonic balance, fast)")
+      ->check(CLI::IsMember({"time", "periodic"}))
+      ->capture_default_str();
+  swp->add_option("--harmonics", wa.harmonics, "Periodic method: harmonics of the pumping frequency")
+      ->capture_default_str();
 
   ModesArgs ma;
   auto* mds =

@@ -72,9 +72,15 @@ SpeedResult run_speed(const mbs::Model& m, const RunOptions& o, bool bilateral) 
       if (r.spans >= o.min_spans) break;
       continue;
     }
-    if (k >= 1) {
-      const double a = span_sigma[span_sigma.size() - 2], b = span_sigma.back();
-      r.sigma_change = std::abs(b - a) / std::max(b, 1e-12);
+    // Converged when σ changed by less than the tolerance over each of the last `settled_spans` spans
+    // (one small change can happen in a slow beat near a resonance).
+    if (k >= o.settled_spans) {
+      r.sigma_change = 0;
+      for (int j = 0; j < o.settled_spans; ++j) {
+        const double a = span_sigma[span_sigma.size() - 2 - static_cast<std::size_t>(j)],
+                     b = span_sigma[span_sigma.size() - 1 - static_cast<std::size_t>(j)];
+        r.sigma_change = std::max(r.sigma_change, std::abs(b - a) / std::max(b, 1e-12));
+      }
       if (r.spans >= o.min_spans && r.sigma_change < o.tolerance) break;
     }
   }

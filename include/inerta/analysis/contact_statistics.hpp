@@ -24,6 +24,7 @@ struct RunOptions {
   int min_spans = 6;         ///< at least this many spans (a doubled window then misses the start)
   int max_spans = 40;        ///< give up converging after this many
   double tolerance = 0.005;  ///< span-to-span relative change of σ that ends the run
+  int settled_spans = 3;     ///< the change must stay below tolerance over this many consecutive spans
   int window_spans = 2;      ///< statistics over the last window_spans spans
   int samples_per_span = 400;
   solve::IntegratorOptions integrator;
@@ -39,8 +40,8 @@ struct SpeedResult {
 };
 
 /// Static equilibrium of the coupled model, then span by span until σ over one span changes by less
-/// than `tolerance` from the previous span (spec/06 §6.1); statistics over the last `window_spans`
-/// spans. A bilateral contact whose force becomes negative throws NumericalError with t and F.
+/// than `tolerance` from the previous span, for `settled_spans` spans in a row (spec/06 §6.1); statistics over the last
+/// `window_spans` spans. A bilateral contact whose force becomes negative throws NumericalError with t and F.
 SpeedResult run_speed(const mbs::Model& coupled, const RunOptions& options, bool bilateral);
 
 /// Speed sweep (spec/06 §6.1): couples `pantograph` to the catenary at every speed and runs them in

@@ -1,0 +1,22 @@
+#pragma once
+// Fast periodic steady state (issue 5): harmonic balance (Hill's method) on the pantograph
+// linearised about its static equilibrium under the mean catenary, coupled with the linear
+// time-periodic catenary. With the wire uplift y = y_s + δy (y_s: static uplift), the harmonics
+// Δk(t) = Σ k_i cos(iΩt), Δc(t) = Σ c_i cos(iΩt) (Ω = 2π v/L) act on the wire as the force
+//   f(t) = −Δk(t) (y_s + δy) − Δc(t) δẏ,
+// so the periodic response X(t) = Σ_{|h|≤H} X_h e^{ihΩt} of Ẋ = A X + B f(t) solves one complex
+// linear system per speed; the contact force F = F_s + Λ X + Λ_f f follows harmonic by harmonic.
+#include <vector>
+
+#include "inerta/analysis/contact_statistics.hpp"
+
+namespace inerta::analysis {
+
+/// Contact statistics of the periodic steady state at each speed (m/s), H harmonics of the pumping
+/// frequency. Mass harmonics m_c1..m_c3 must be zero (ModelError otherwise). The linearisation is
+/// done once; speeds are independent solves.
+std::vector<SpeedResult> sweep_periodic(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+                                        const catenary::Contact& contact, const std::vector<double>& speeds,
+                                        int harmonics = 8);
+
+}  // namespace inerta::analysis

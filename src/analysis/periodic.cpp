@@ -1,0 +1,126 @@
+#include "inerta/analysis/periodic.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "inerta/error.hpp"
+#include "inerta/mbs/applied_forces.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/dynamics.hpp"
+#include "inerta/mbs/linearisation.hpp"
+
+namespace inerta::analysis {
+
+using cd = std::complex<double>;
+
+std::vector<SpeedResult> sweep_periodic(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+                                        const catenary::Contact& contact, const std::vector<double>& speeds, int H) {
+  if (cat.m[1] != 0 || cat.m[2] != 0 || cat.m[3] != 0)
+    throw ModelError("the periodic method supports stiffness and damping harmonics only (mc1..mc3 must be 0)");
+  catenary::LumpedCatenary mean = cat;
+  for (int i = 1; i <= 3; ++i) mean.k[static_cast<std::size_t>(i)] = mean.c[static_cast<std::size_t>(i)] = 0;
+  mbs::Model m = catenary::couple(pantograph, mean, contact, 1.0, pantograph.contact_marker, pantograph.rig_joint);
+  const int wire = m.find_body("catenary"), wy = 3 * wire + 1;
+  int fo = -1, ce = -1;
+  for (std::size_t k = 0; k < m.outputs.size(); ++k)
+    if (m.outputs[k].name == "F_contact") fo = static_cast<int>(k);
+  for (std::size_t k = 0; k < m.forces.size(); ++k)
+    if (m.forces[k]->name() == "catenary") ce = static_cast<int>(k);
+  // The same model with a unit upward probe force on the wire: the input direction B and Λ_f.
+  mbs::Model probe = m;
+  probe.forces.push_back(std::make_shared<mbs::PointForce>("probe", wire, mbs::Vec2::Zero(), mbs::Vec2(0, 1),
+                                                           mbs::TimeFunction::constant(1.0)));
+  probe.finalize();
+
+  mbs::State xe = mbs::assemble(m, 0.0);
+  mbs::static_equilibrium(m, 0.0, xe);
+  const mbs::LinearModel L = mbs::linearise(m, xe);
+  const int d = L.dof, nz = L.nz, S = 2 * d + nz;
+  const double ys = m.forces[static_cast<std::size_t>(ce)]->length(m, xe);  // static uplift
+
+  mbs::Workspace ws(m), wp(probe);
+  auto state_of = [&](const Eigen::VectorXd& X) {
+    return mbs::State{xe.q + L.N * X.head(d), L.N * X.segment(d, d), xe.z + X.tail(nz)};
+  };
+  auto F_of = [&](const mbs::Model& model, mbs::Workspace& w, const mbs::State& s) {
+    mbs::accelerations(model, 0.0, s, w);
+    return mbs::evaluate_output(model.outputs[static_cast<std::size_t>(fo)], model, 0.0, s, w);
+  };
+  const Eigen::VectorXd X0 = Eigen::VectorXd::Zero(S);
+  const double F_s = F_of(m, ws, state_of(X0));
+  const Eigen::VectorXd qdd0 = ws.qdd, zd0 = ws.zd;
+  const double F_p = F_of(probe, wp, state_of(X0));
+  Eigen::VectorXd B(S);  // response of [ξ̇; ξ̈; ż] to a unit wire force
+  B << Eigen::VectorXd::Zero(d), L.N.transpose() * (wp.qdd - qdd0), wp.zd - zd0;
+  const double Lf = F_p - F_s;
+  Eigen::RowVectorXd LX(S);
+  for (int k = 0; k < S; ++k) {
+    const double h = 1e-6;
+    Eigen::VectorXd Xp = X0, Xm = X0;
+    Xp[k] = h, Xm[k] = -h;
+    LX[k] = (F_of(m, ws, state_of(Xp)) - F_of(m, ws, state_of(Xm))) / (2 * h);
+  }
+  // Wire displacement and velocity as rows over X.
+  Eigen::RowVectorXd P = Eigen::RowVectorXd::Zero(S), Pd = Eigen::RowVectorXd::Zero(S);
+  P.head(d) = L.N.row(wy);
+  Pd.segment(d, d) = L.N.row(wy);
+
+  auto coeff = [](const std::array<double, 4>& a, int m) {  // Fourier coefficient of Σ a_i cos(iΩt)
+    const int k = std::abs(m);
+    return (k >= 1 && k <= 3) ? 0.5 * a[static_cast<std::size_t>(k)] : 0.0;
+  };
+  // Hill's method reduced to the wire force: X_h = (ihΩ − A)⁻¹ B f_h, so with the transfer
+  // functions g_h = P(ihΩ − A)⁻¹B (uplift), gd_h (its rate) and gF_h = Λ(ihΩ − A)⁻¹B + Λ_f (contact
+  // force), the harmonics f_h of the wire force solve a (2H+1)² system:
+  //   f_h + Σ_j (Δk_{h−j} g_j + Δc_{h−j} gd_j) f_j = −y_s Δk_h,   F_h = gF_h f_h (+ F_s at h = 0).
+  const int nh = 2 * H + 1;
+  std::vector<SpeedResult> out(speeds.size());
+  tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t s) {
+    const double W = 2 * std::numbers::pi * speeds[s] / cat.span;
+    std::vector<cd> g(static_cast<std::size_t>(nh)), gd(g), gF(g);
+    for (int a = 0; a < nh; ++a) {
+      const Eigen::VectorXcd x =
+          (cd(0, (a - H) * W) * Eigen::MatrixXcd::Identity(S, S) - L.A.cast<cd>()).partialPivLu().solve(B.cast<cd>());
+      g[static_cast<std::size_t>(a)] = (P.cast<cd>() * x)(0);
+      gd[static_cast<std::size_t>(a)] = (Pd.cast<cd>() * x)(0);
+      gF[static_cast<std::size_t>(a)] = (LX.cast<cd>() * x)(0) + Lf;
+    }
+    Eigen::MatrixXcd Sys = Eigen::MatrixXcd::Identity(nh, nh);
+    Eigen::VectorXcd rhs(nh);
+    for (int a = 0; a < nh; ++a) {
+      const int h = a - H;
+      rhs[a] = -ys * coeff(cat.k, h);
+      for (int b = 0; b < nh; ++b) {
+        const int j = b - H;
+        Sys(a, b) += coeff(cat.k, h - j) * g[static_cast<std::size_t>(b)] +
+                     coeff(cat.c, h - j) * gd[static_cast<std::size_t>(b)];
+      }
+    }
+    const Eigen::VectorXcd f = Sys.partialPivLu().solve(rhs);
+    std::vector<cd> Fh(static_cast<std::size_t>(nh));
+    for (int a = 0; a < nh; ++a)
+      Fh[static_cast<std::size_t>(a)] = gF[static_cast<std::size_t>(a)] * f[a] + (a == H ? F_s : 0.0);
+    // Time history over one period and its statistics.
+    SpeedResult r;
+    r.speed = speeds[s];
+    r.spans = 1;
+    const int np = 400;
+    std::vector<double> F(np);
+    for (int k = 0; k < np; ++k) {
+      const double t = k * (2 * std::numbers::pi / W) / np;
+      cd v = 0;
+      for (int a = 0; a < nh; ++a) v += Fh[static_cast<std::size_t>(a)] * std::exp(cd(0, (a - H) * W * t));
+      F[static_cast<std::size_t>(k)] = v.real();
+    }
+    r.stats = statistics(F);
+    r.F = F;
+    out[s] = std::move(r);
+  });
+  return out;
+}
+
+}  // namespace inerta::analysis
