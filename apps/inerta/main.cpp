@@ -445,7 +445,7 @@ int cmd_sweep(const SweepArgs& a) {
 }
 
 struct ModesArgs {
-  std::string model, out;
+  std::string model, out, export_json;
   CatenaryArgs cat;
 };
 
@@ -468,6 +468,28 @@ int cmd_modes(const ModesArgs& a) {
   mbs::static_equilibrium(model, 0.0, x);
   mbs::LinearModel lin = mbs::linearise(model, x, 0.0);
   std::vector<mbs::Mode> ms = mbs::modes(model, lin);
+  if (!a.export_json.empty()) {
+    // The linear model for MATLAB/Python: Ẋ = A X, X = [ξ; ξ̇; z], q = q_e + N ξ; M, C, K reduced.
+    OutputFile file(a.export_json);
+    auto matrix = [&](const Eigen::MatrixXd& m) {
+      std::string s = "[";
+      for (Eigen::Index i = 0; i < m.rows(); ++i) {
+        s += i ? ",\n    [" : "\n    [";
+        for (Eigen::Index j = 0; j < m.cols(); ++j) s += fmt::format("{}{:.17g}", j ? ", " : "", m(i, j));
+        s += "]";
+      }
+      return s + "]";
+    };
+    std::string coords;
+    for (int k = 0; k < model.n_coords(); ++k) coords += fmt::format("{}\"{}\"", k ? ", " : "", model.coord_name(k));
+    fmt::print(file.get(),
+               "{{\n  \"model\": \"{}\",\n  \"state\": \"X = [xi; xi_dot; z], q = q_e + N xi, dX/dt = A X\",\n"
+               "  \"coordinates\": [{}],\n  \"dof\": {},\n  \"internal_states\": {},\n  \"q_e\": {},\n"
+               "  \"N\": {},\n  \"A\": {},\n  \"M\": {},\n  \"C\": {},\n  \"K\": {}\n}}\n",
+               model.name, coords, lin.dof, lin.nz, matrix(x.q.transpose()), matrix(lin.N), matrix(lin.A),
+               matrix(lin.M), matrix(lin.C), matrix(lin.K));
+    fmt::print("wrote {} (linear model: A, N, M, C, K)\n", a.export_json);
+  }
   fmt::print("modes of {} about its static equilibrium{}{}: {} independent coordinates, {} internal states\n",
              model.name, setting.empty() ? "" : ", ", setting, lin.dof, lin.nz);
   fmt::print("  {:>3} {:>10} {:>10}  {}\n", "#", "f [Hz]", "zeta",
@@ -647,6 +669,7 @@ int main(int argc, char** argv) {
       app.add_subcommand("modes", "Natural frequencies, damping ratios and mode shapes about the static equilibrium");
   mds->add_option("model", ma.model, "Model file (YAML)")->required();
   mds->add_option("--out", ma.out, "CSV of the modes and their shapes");
+  mds->add_option("--export", ma.export_json, "JSON file with the linear model (A, N, M, C, K) for MATLAB/Python");
   mds->add_option("--catenary", ma.cat.catenary, "Couple to this catenary (its mean, time-invariant part)");
   mds->add_option("--set", ma.cat.sets, "Override a catenary value (repeatable)");
 

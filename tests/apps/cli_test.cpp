@@ -205,7 +205,6 @@ TEST_F(Cli, UnknownOptionFails) {
   EXPECT_FALSE(fs::exists(csv));
 }
 
-
 // ----------------------------------------------------------------------------------------------
 // inerta admittance (network admittance Y = F / relative velocity as CSV) and network models
 // ----------------------------------------------------------------------------------------------
@@ -322,8 +321,8 @@ TEST_F(Cli, SimulateTwobarNetworkEqualsTwobar) {
   EXPECT_EQ(lines[0], "t,C_x,C_y,F_strut");
 
   // The network "k|c|b" is the separate spring, damper and inerter of models/twobar.yaml.
-  Result q = run("simulate " + quote(model_path("twobar.yaml")) + " --t-end 1 --sample 0.01 --out " +
-                 quote(ref.string()));
+  Result q =
+      run("simulate " + quote(model_path("twobar.yaml")) + " --t-end 1 --sample 0.01 --out " + quote(ref.string()));
   ASSERT_EQ(q.code, 0) << q.err;
   const auto expected = lines_of(read_file(ref));
   ASSERT_EQ(expected.size(), 102u);
@@ -354,4 +353,20 @@ TEST_F(Cli, AdmittanceInfiniteAtZeroFrequencyIsRefused) {
   // Starting above 0 works.
   r = run("admittance 'k|c' --param k=100 --param c=1 --freq 0.5:0.5:2 --out " + quote(csv.string()));
   EXPECT_EQ(r.code, 0) << r.err;
+}
+
+TEST_F(Cli, ModesOfOneDofAndLinearModelExport) {
+  // The 1-DOF's single mode at the linearised natural frequency (spec/01 §1.2) and its JSON export
+  // with the reduced mass m + (Lb/L0)² b = 55 kg and stiffness k (Lb/L0)² = 5000 N/m.
+  const fs::path json = path("lin.json"), csv = path("modes.csv");
+  Result r = run("modes " + quote(model_path("onedof.yaml")) + " --export " + quote(json.string()) + " --out " +
+                 quote(csv.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "1.5175")) << r.out;
+  const std::string j = read_file(json);
+  EXPECT_TRUE(contains(j, "\"M\": [\n    [55.0000000")) << j;
+  EXPECT_TRUE(contains(j, "\"K\": [\n    [5000.000")) << j;
+  const auto lines = lines_of(read_file(csv));
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_TRUE(contains(lines[0], "mode,f_hz,zeta,re_lambda,im_lambda,mass.x,mass.y,mass.theta")) << lines[0];
 }

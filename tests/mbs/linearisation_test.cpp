@@ -80,3 +80,32 @@ TEST(Modes, HsxHasFrameHeadAndFlexibleModesInTheThesisBands) {
   EXPECT_GT(f[2], 8.0);
   EXPECT_LT(f[2], 14.0);  // upper-arm flexibility
 }
+
+TEST(Linearisation, JacobianPredictsTheNonlinearRightHandSide) {
+  // HSX (free head) with its actuator's network state: for random directions X, the change of the
+  // nonlinear right-hand side over ±εX (ε independent of the linearisation's own step) is ε A X.
+  mbs::Model m = pantograph::release_head(io::load_model(inerta::testing::model_path("hsx.yaml")));
+  mbs::State x = mbs::assemble(m, 0.0);
+  mbs::static_equilibrium(m, 0.0, x);
+  mbs::LinearModel lin = mbs::linearise(m, x);
+  ASSERT_EQ(lin.nz, 1);
+  const int d = lin.dof, S = static_cast<int>(lin.A.rows());
+  mbs::Workspace ws(m);
+  auto g = [&](const Eigen::VectorXd& X) {
+    mbs::State s{x.q + lin.N * X.head(d), lin.N * X.segment(d, d), x.z + X.tail(lin.nz)};
+    mbs::accelerations(m, 0.0, s, ws);
+    Eigen::VectorXd out(S);
+    out << X.segment(d, d), lin.N.transpose() * ws.qdd, ws.zd;
+    return out;
+  };
+  std::srand(3);
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::VectorXd X = Eigen::VectorXd::Random(S);
+    const double eps = 1e-4;
+    Eigen::VectorXd fd = (g(eps * X) - g(-eps * X)) / (2 * eps), lin_pred = lin.A * X;
+    EXPECT_LT((fd - lin_pred).norm(), 1e-4 * lin_pred.norm());
+  }
+  // The reduced mass includes the actuator's piston (a point mass) and is symmetric positive definite.
+  EXPECT_LT((lin.M - lin.M.transpose()).norm(), 1e-9 * lin.M.norm());
+  EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(lin.M).info(), Eigen::Success);
+}
