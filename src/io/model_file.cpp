@@ -412,7 +412,7 @@ struct Loader {
       for (auto it = p.begin(); it != p.end(); ++it) {
         std::string k = rd.text(it->first, "params");
         if (params.count(k)) rd.fail(it->first, k, "duplicate element in params; give each value once");
-        const YAML::Node& v = it->second;
+        const YAML::Node v = it->second;
         std::string lower = v.IsScalar() ? v.Scalar() : "";
         for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
         double val = lower == "inf" || lower == ".inf" ? INFINITY : rd.number(v, k);

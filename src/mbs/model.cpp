@@ -86,10 +86,10 @@ Workspace::Workspace(const Model& model) {
   Ct = Eigen::VectorXd::Zero(m);
   Cq = Eigen::MatrixXd::Zero(m, n);
   gamma = Eigen::VectorXd::Zero(m);
-  llt_M = Eigen::LLT<Eigen::MatrixXd>(n);
+  llt_M.compute(Eigen::MatrixXd::Identity(n, n));  // sized, and with a defined info()
   YZ = Eigen::MatrixXd::Zero(n, m + 1);
   S = Eigen::MatrixXd::Zero(m, m);
-  llt_S = Eigen::LLT<Eigen::MatrixXd>(m);
+  llt_S.compute(Eigen::MatrixXd::Identity(m, m));
   c = Eigen::VectorXd::Zero(m);
   K = Eigen::MatrixXd::Zero(n + m, n + m);
   rhs = Eigen::VectorXd::Zero(n + m);
