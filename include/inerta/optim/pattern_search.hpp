@@ -1,0 +1,52 @@
+#pragma once
+// Pattern search over element values (spec/07; in the spirit of MATLAB's patternsearch): a
+// generalised pattern search (compass poll ±Δ along each coordinate, mesh halved on failure) on
+// log10-scaled values, so that ten decades are searched evenly, with random multi-start
+// (deterministic for a seed) and the poll points evaluated in parallel (oneTBB).
+//
+// Each variable lives in a box [log10 lo − 1, log10 hi + 1] of decades: the last half decade below
+// lo means "0" (open) and the last half decade above hi means "∞" (rigid), when allowed — so the
+// limits are reachable and reported as such (the thesis reads values at its bounds as rigid).
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace inerta::optim {
+
+struct Variable {
+  std::string name;
+  double lo = 1e-3, hi = 1e9;  ///< finite range, > 0 (SI)
+  bool can_open = true;        ///< value 0 reachable
+  bool can_rigid = true;       ///< value ∞ reachable
+};
+
+/// Value of a variable at the search coordinate u (decades).
+double decode(const Variable& v, double u);
+/// "open", "rigid" or the number.
+std::string describe(double value);
+
+struct Options {
+  int starts = 4;  ///< random starts (the first at the box centre)
+  unsigned seed = 1;
+  double initial_step = 1.0;   ///< decades
+  double min_step = 1e-3;      ///< decades: stop when the mesh is finer
+  int max_evaluations = 5000;  ///< per start
+};
+
+struct Result {
+  std::vector<double> values;  ///< decoded (0 and ∞ possible)
+  std::vector<double> u;       ///< search coordinates
+  double cost = 0;
+  int evaluations = 0;  ///< all starts
+  int best_start = 0;
+};
+
+using Cost = std::function<double(const std::vector<double>& values)>;
+/// progress(start, evaluations so far, best cost so far)
+using Progress = std::function<void(int, int, double)>;
+
+/// Minimises cost(values). Deterministic for a given seed (ties broken by poll order).
+Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& options = {},
+                      const Progress& progress = {});
+
+}  // namespace inerta::optim

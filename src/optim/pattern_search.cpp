@@ -1,0 +1,104 @@
+#include "inerta/optim/pattern_search.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <stdexcept>
+
+namespace inerta::optim {
+
+namespace {
+double box_lo(const Variable& v) { return std::log10(v.lo) - (v.can_open ? 1.0 : 0.0); }
+double box_hi(const Variable& v) { return std::log10(v.hi) + (v.can_rigid ? 1.0 : 0.0); }
+}  // namespace
+
+double decode(const Variable& v, double u) {
+  const double a = std::log10(v.lo), b = std::log10(v.hi);
+  if (v.can_open && u < a - 0.5) return 0.0;
+  if (v.can_rigid && u > b + 0.5) return INFINITY;
+  return std::pow(10.0, std::clamp(u, a, b));
+}
+
+std::string describe(double value) {
+  if (value == 0) return "open";
+  if (std::isinf(value)) return "rigid";
+  return fmt::format("{:.4g}", value);
+}
+
+Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& o, const Progress& progress) {
+  const std::size_t n = vars.size();
+  for (const auto& v : vars)
+    if (!(v.lo > 0) || !(v.hi > v.lo)) throw std::invalid_argument("variable '" + v.name + "': need 0 < lo < hi");
+  std::mt19937 rng(o.seed);
+  Result best;
+  best.cost = INFINITY;
+  int total = 0;
+  for (int start = 0; start < std::max(1, o.starts); ++start) {
+    std::vector<double> u(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = box_lo(vars[i]), b = box_hi(vars[i]);
+      u[i] = start == 0 ? 0.5 * (a + b) : std::uniform_real_distribution<double>(a, b)(rng);
+    }
+    // Cache of evaluated points: decoded values identify a design (0/∞ cells and clamped ends repeat).
+    std::map<std::vector<double>, double> cache;
+    int evals = 0;
+    auto values_of = [&](const std::vector<double>& x) {
+      std::vector<double> v(n);
+      for (std::size_t i = 0; i < n; ++i) v[i] = decode(vars[i], x[i]);
+      return v;
+    };
+    auto evaluate_all = [&](const std::vector<std::vector<double>>& pts) {
+      std::vector<std::vector<double>> vals(pts.size());
+      std::vector<double> c(pts.size(), NAN);
+      std::vector<char> todo(pts.size(), 0);
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        vals[k] = values_of(pts[k]);
+        auto it = cache.find(vals[k]);
+        if (it != cache.end())
+          c[k] = it->second;
+        else
+          todo[k] = 1;
+      }
+      tbb::parallel_for(std::size_t{0}, pts.size(), [&](std::size_t k) {
+        if (todo[k]) c[k] = cost(vals[k]);
+      });
+      for (std::size_t k = 0; k < pts.size(); ++k)
+        if (todo[k]) cache[vals[k]] = c[k], ++evals;
+      return c;
+    };
+    double fu = evaluate_all({u})[0];
+    double step = o.initial_step;
+    while (step >= o.min_step && evals < o.max_evaluations) {
+      std::vector<std::vector<double>> poll;
+      for (std::size_t i = 0; i < n; ++i)
+        for (double s : {+1.0, -1.0}) {
+          std::vector<double> p = u;
+          p[i] = std::clamp(p[i] + s * step, box_lo(vars[i]), box_hi(vars[i]));
+          poll.push_back(p);
+        }
+      std::vector<double> c = evaluate_all(poll);
+      std::size_t k = 0;
+      for (std::size_t j = 1; j < c.size(); ++j)
+        if (c[j] < c[k]) k = j;  // first of equals: deterministic
+      if (c[k] < fu) {
+        u = poll[k], fu = c[k];
+        step = std::min(2 * step, o.initial_step);  // expand after a success
+      } else {
+        step *= 0.5;
+      }
+      if (progress) progress(start, total + evals, std::min(best.cost, fu));
+    }
+    total += evals;
+    if (fu < best.cost) {
+      best.cost = fu, best.u = u, best.values = values_of(u), best.best_start = start;
+    }
+  }
+  best.evaluations = total;
+  return best;
+}
+
+}  // namespace inerta::optim
