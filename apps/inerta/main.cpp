@@ -9,6 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -26,6 +27,7 @@
 #include "inerta/mbs/linearisation.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/network/realisation.hpp"
+#include "inerta/optim/study.hpp"
 #include "inerta/pantograph/suspension.hpp"
 #include "inerta/solve/integrator.hpp"
 
@@ -604,6 +606,74 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
   return 0;
 }
 
+struct OptimiseArgs {
+  std::string study, out;
+};
+
+// Structure-based design (spec/07): optimise every layout of the study, print and write the table.
+int cmd_optimise(const OptimiseArgs& a) {
+  optim::Study study = optim::load_study(a.study);
+  const bool tty = isatty(STDOUT_FILENO);
+  fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), periodic fast path\n", study.name,
+             study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts,
+             study.search.seed);
+  const auto wall0 = std::chrono::steady_clock::now();
+  const network::Network baseline = optim::default_suspension(study);
+  const optim::StudyCost def = optim::evaluate(study, baseline);
+  std::vector<optim::LayoutResult> results;
+  for (const auto& layout : study.layouts) {
+    results.push_back(optim::optimise_layout(study, layout, [&](int start, int evals, double best) {
+      if (tty)
+        fmt::print("\r  {:<12} start {}/{}  evaluations {:>5}  best J {:.4f} N   ", layout, start + 1,
+                   study.search.starts, evals, best);
+      std::fflush(stdout);
+    }));
+    if (tty) fmt::print("\r{:80}\r", "");
+    const auto& r = results.back();
+    fmt::print("  {:<12} J = {:.4f} N after {} evaluations\n", layout, r.cost.J, r.evaluations);
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  auto value = [](const network::Params& p, const char* k) {
+    auto it = p.find(k);
+    return it == p.end() ? std::string("-") : optim::describe(it->second);
+  };
+  fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
+             "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
+  for (const auto& r : results)
+    fmt::print("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}\n", r.layout, r.expression,
+               value(r.values, "b"), value(r.values, "c"), value(r.values, "k"), r.cost.J,
+               100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean);
+  fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
+             network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
+  if (!a.out.empty()) {
+    std::filesystem::create_directories(a.out);
+    OutputFile csv((std::filesystem::path(a.out) / "results.csv").string());
+    fmt::print(csv.get(), "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations\n");
+    for (const auto& r : results)
+      fmt::print(csv.get(), "{},{},{},{},{},{:.6g},{:.4g},{:.6g},{:.6g},{}\n", r.layout, r.expression,
+                 value(r.values, "b"), value(r.values, "c"), value(r.values, "k"), r.cost.J,
+                 100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean, r.evaluations);
+    OutputFile json((std::filesystem::path(a.out) / "results.json").string());
+    fmt::print(json.get(), "{{\n  \"study\": \"{}\",\n  \"default_J2\": {:.10g},\n  \"layouts\": [", study.name, def.J);
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const auto& r = results[i];
+      std::string vals;
+      for (const auto& [k, v] : r.values)
+        vals += fmt::format("{}\"{}\": {}", vals.empty() ? "" : ", ", k,
+                            v == 0          ? std::string("0")
+                            : std::isinf(v) ? std::string("\"inf\"")
+                                            : fmt::format("{:.10g}", v));
+      fmt::print(json.get(),
+                 "{}\n    {{\"layout\": \"{}\", \"network\": \"{}\", \"values\": {{{}}}, \"J2\": {:.10g}, "
+                 "\"v_kmh\": {:.6g}, \"mean_N\": {:.6g}, \"evaluations\": {}}}",
+                 i ? "," : "", r.layout, r.expression, vals, r.cost.J, r.cost.speed * 3.6, r.cost.mean, r.evaluations);
+    }
+    fmt::print(json.get(), "\n  ]\n}}\n");
+    fmt::print("wrote {}/results.csv and {}/results.json\n", a.out, a.out);
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
@@ -695,6 +765,11 @@ int main(int argc, char** argv) {
   crs->add_option("--set", ca.sets, "Override a catenary value (repeatable)");
   crs->add_option("--out", ca.out, "CSV file (default: standard output)");
 
+  OptimiseArgs oa;
+  auto* opt = app.add_subcommand("optimise", "Optimise the suspension layouts of a study file (spec/07)");
+  opt->add_option("study", oa.study, "Study file (YAML)")->required();
+  opt->add_option("--out", oa.out, "Directory for results.csv and results.json");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -708,6 +783,7 @@ int main(int argc, char** argv) {
     if (mds->parsed()) return cmd_modes(ma);
     if (frf->parsed()) return cmd_frf(fa);
     if (crs->parsed()) return cmd_catenary_response(ca);
+    if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const ModelError& e) {

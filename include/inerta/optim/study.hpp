@@ -1,0 +1,53 @@
+#pragma once
+// Structure-based suspension design (spec/07): for each candidate layout, optimise its free element
+// values by pattern search to minimise J2 = max over catenary variants of σ_max over the speeds.
+#include <string>
+#include <vector>
+
+#include "inerta/catenary/coupling.hpp"
+#include "inerta/mbs/model.hpp"
+#include "inerta/network/network.hpp"
+#include "inerta/optim/pattern_search.hpp"
+
+namespace inerta::optim {
+
+struct Study {
+  std::string name, source;
+  mbs::Model pantograph;
+  std::vector<catenary::LumpedCatenary> catenaries;  ///< the variants (J1: one)
+  std::vector<std::string> catenary_labels;
+  catenary::Contact contact;
+  std::vector<double> speeds;        ///< m/s
+  std::vector<std::string> layouts;  ///< named layouts or expressions
+  Options search;
+  double lo = 0.1, hi = 1e9;  ///< bounds of every free value (SI), 0 and ∞ reachable
+  int harmonics = 8;
+};
+
+/// Reads a study file (docs/model-format.md#study-files); paths are relative to the file.
+Study load_study(const std::string& path);
+
+struct StudyCost {
+  double J = 0;      ///< max over catenaries of σ_max, N
+  double speed = 0;  ///< speed of the worst σ, m/s
+  double mean = 0;   ///< mean contact force there, N
+  int catenary = 0;  ///< index of the worst catenary
+};
+
+/// The pantograph's own suspension network (its actuator's), the baseline of the study.
+network::Network default_suspension(const Study& study);
+
+/// J2 of the pantograph with its suspension replaced by `net` (bound), by the periodic fast path.
+StudyCost evaluate(const Study& study, const network::Network& net);
+
+struct LayoutResult {
+  std::string layout, expression;
+  network::Params values;  ///< all element values (fixed and optimised; 0 = open, inf = rigid)
+  StudyCost cost;
+  int evaluations = 0;
+};
+
+/// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress = {});
+
+}  // namespace inerta::optim

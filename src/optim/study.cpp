@@ -1,0 +1,185 @@
+#include "inerta/optim/study.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "inerta/analysis/periodic.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/io/model_file.hpp"
+#include "inerta/mbs/network_strut.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/pantograph/suspension.hpp"
+
+namespace inerta::optim {
+
+namespace {
+[[noreturn]] void fail(const std::string& file, const YAML::Node& at, const std::string& key, const std::string& what) {
+  std::string where = file;
+  if (at.IsDefined() && at.Mark().line >= 0) where += fmt::format(":{}", at.Mark().line + 1);
+  throw ModelError(fmt::format("{}: '{}': {}", where, key, what));
+}
+double number(const std::string& file, const YAML::Node& n, const std::string& key) {
+  try {
+    return n.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(file, n, key, "expected a number");
+  }
+}
+}  // namespace
+
+Study load_study(const std::string& path) {
+  YAML::Node loaded;
+  try {
+    loaded = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw ModelError(fmt::format("{}: cannot open the study file", path));
+  } catch (const YAML::ParserException& e) {
+    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+  }
+  const YAML::Node& root = loaded;
+  if (!root.IsMap()) fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    static const char* allowed[] = {"name",   "model",   "catenary", "catenaries",
+                                    "speeds", "layouts", "search",   "harmonics"};
+    if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
+        std::end(allowed))
+      fail(path, it->first, k,
+           "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics");
+  }
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  auto rel = [&](const YAML::Node& n, const char* key) {
+    if (!n.IsDefined() || !n.IsScalar()) fail(path, n.IsDefined() ? n : root, key, "missing; expected a file path");
+    return (dir / n.Scalar()).string();
+  };
+  Study s;
+  s.source = path;
+  s.name = root["name"].IsDefined() ? root["name"].as<std::string>() : path;
+  s.pantograph = io::load_model(rel(root["model"], "model"));
+  const std::string cat_path = rel(root["catenary"], "catenary");
+  const YAML::Node cats = root["catenaries"];
+  if (cats.IsDefined()) {
+    if (!cats.IsSequence() || cats.size() == 0) fail(path, cats, "catenaries", "expected a list of override lists");
+    for (const auto& c : cats) {
+      std::vector<std::string> sets;
+      if (!c.IsSequence()) fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
+      for (const auto& x : c) sets.push_back(x.as<std::string>());
+      io::CatenaryFile f = io::load_catenary(cat_path, sets);
+      s.catenaries.push_back(f.catenary);
+      s.contact = f.contact;
+      std::string label;
+      for (const auto& x : sets) label += (label.empty() ? "" : " ") + x;
+      s.catenary_labels.push_back(label.empty() ? "default" : label);
+    }
+  } else {
+    io::CatenaryFile f = io::load_catenary(cat_path);
+    s.catenaries.push_back(f.catenary), s.contact = f.contact, s.catenary_labels.push_back("default");
+  }
+  const YAML::Node sp = root["speeds"];
+  if (!sp.IsMap()) fail(path, sp.IsDefined() ? sp : root, "speeds", "expected {from, to, step, unit: kmh|ms}");
+  const double from = number(path, sp["from"], "from"), to = number(path, sp["to"], "to"),
+               step = number(path, sp["step"], "step");
+  const std::string unit = sp["unit"].IsDefined() ? sp["unit"].as<std::string>() : "ms";
+  if (unit != "kmh" && unit != "ms") fail(path, sp["unit"], "unit", "expected kmh or ms");
+  if (!(from > 0) || !(to >= from) || !(step > 0)) fail(path, sp, "speeds", "expected 0 < from <= to and step > 0");
+  for (long k = 0; from + k * step <= to + 1e-9 * step; ++k)
+    s.speeds.push_back((from + k * step) / (unit == "kmh" ? 3.6 : 1.0));
+  const YAML::Node ls = root["layouts"];
+  if (!ls.IsSequence() || ls.size() == 0)
+    fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts");
+  for (const auto& l : ls) {
+    const std::string name = l.as<std::string>();
+    try {
+      network::parse(network::find_layout(name) ? network::find_layout(name)->expression : name);
+    } catch (const network::NetworkError& e) {
+      fail(path, l, "layouts", fmt::format("'{}': {}", name, e.what()));
+    }
+    s.layouts.push_back(name);
+  }
+  if (const YAML::Node se = root["search"]; se.IsDefined()) {
+    for (auto it = se.begin(); it != se.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      const YAML::Node v = it->second;
+      if (k == "starts")
+        s.search.starts = static_cast<int>(number(path, v, k));
+      else if (k == "seed")
+        s.search.seed = static_cast<unsigned>(number(path, v, k));
+      else if (k == "lo")
+        s.lo = number(path, v, k);
+      else if (k == "hi")
+        s.hi = number(path, v, k);
+      else if (k == "min_step")
+        s.search.min_step = number(path, v, k);
+      else if (k == "max_evaluations")
+        s.search.max_evaluations = static_cast<int>(number(path, v, k));
+      else
+        fail(path, it->first, k, "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
+    }
+    if (!(s.lo > 0) || !(s.hi > s.lo)) fail(path, se, "search", "expected 0 < lo < hi");
+    if (s.search.starts < 1) fail(path, se["starts"], "starts", "must be >= 1");
+  }
+  if (root["harmonics"].IsDefined()) s.harmonics = static_cast<int>(number(path, root["harmonics"], "harmonics"));
+  return s;
+}
+
+network::Network default_suspension(const Study& study) {
+  for (const auto& f : study.pantograph.forces)
+    if (auto a = std::dynamic_pointer_cast<const mbs::Actuator>(f)) return a->network();
+  throw ModelError(
+      fmt::format("{}: the pantograph has no actuator whose suspension the study could replace", study.source));
+}
+
+StudyCost evaluate(const Study& study, const network::Network& net) {
+  mbs::Model m = pantograph::with_suspension(study.pantograph, net);
+  StudyCost c;
+  c.J = -1;
+  for (std::size_t i = 0; i < study.catenaries.size(); ++i) {
+    auto r = analysis::sweep_periodic(m, study.catenaries[i], study.contact, study.speeds, study.harmonics);
+    for (const auto& x : r)
+      if (x.stats.std > c.J)
+        c.J = x.stats.std, c.speed = x.speed, c.mean = x.stats.mean, c.catenary = static_cast<int>(i);
+  }
+  return c;
+}
+
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress) {
+  LayoutResult r;
+  r.layout = layout;
+  auto named = network::find_layout(layout);
+  r.expression = named ? named->expression : layout;
+  const network::Params fixed = named ? named->fixed : network::Params{};
+  std::vector<Variable> vars;
+  for (const auto& name : network::parameter_names(network::parse(r.expression)))
+    if (!fixed.count(name)) vars.push_back({name, study.lo, study.hi, true, true});
+  auto params_of = [&](const std::vector<double>& values) {
+    network::Params p;
+    for (std::size_t i = 0; i < vars.size(); ++i) p[vars[i].name] = values[i];
+    return p;
+  };
+  auto J = [&](const std::vector<double>& values) {
+    try {
+      return evaluate(study, network::resolve(layout, params_of(values))).J;
+    } catch (const std::exception&) {
+      return static_cast<double>(INFINITY);  // a rigid suspension, or no valid steady state
+    }
+  };
+  std::vector<double> best;
+  if (vars.empty()) {
+    r.evaluations = 1;
+  } else {
+    Result s = pattern_search(vars, J, study.search, progress);
+    best = s.values;
+    r.evaluations = s.evaluations;
+  }
+  r.values = fixed;
+  for (const auto& [k, v] : params_of(best)) r.values[k] = v;
+  r.cost = evaluate(study, network::resolve(layout, params_of(best)));
+  return r;
+}
+
+}  // namespace inerta::optim

@@ -1,0 +1,54 @@
+// Study files and layout optimisation (spec/07) on a reduced HSX study (one catenary, 5 speeds).
+#include "inerta/optim/study.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "inerta/error.hpp"
+#include "inerta/network/layouts.hpp"
+
+using namespace inerta;
+
+namespace {
+std::string write_study(const std::string& name, const std::string& text) {
+  const auto p = std::filesystem::temp_directory_path() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+const std::string kStudy = std::string("name: small\nmodel: ") + INERTA_SOURCE_DIR +
+                           "/models/hsx.yaml\ncatenary: " + INERTA_SOURCE_DIR +
+                           "/models/catenary.yaml\n"
+                           "catenaries: [[catenary.kc0=7000]]\n"
+                           "speeds: {from: 100, to: 300, step: 50, unit: kmh}\n"
+                           "search: {starts: 2, seed: 7, min_step: 0.05}\n"
+                           "layouts: [S2-default, k-c]\n";
+}  // namespace
+
+TEST(Study, OptimisingTheDefaultLayoutNeverDoesWorseAndIsDeterministic) {
+  optim::Study s = optim::load_study(write_study("small_study.yaml", kStudy));
+  ASSERT_EQ(s.speeds.size(), 5u);
+  EXPECT_NEAR(s.speeds.front(), 100 / 3.6, 1e-12);
+  const optim::StudyCost def = optim::evaluate(s, optim::default_suspension(s));
+  EXPECT_GT(def.J, 0.5);
+  optim::LayoutResult fixed = optim::optimise_layout(s, "S2-default");
+  EXPECT_NEAR(fixed.cost.J, def.J, 1e-9);  // S2-default is the model's own suspension
+  optim::LayoutResult a = optim::optimise_layout(s, "k-c"), b = optim::optimise_layout(s, "k-c");
+  EXPECT_LE(a.cost.J, def.J + 1e-9);  // the free Maxwell element includes the default
+  EXPECT_EQ(a.values, b.values);      // same seed, same result
+  EXPECT_EQ(a.cost.J, b.cost.J);
+}
+
+TEST(Study, FileErrorsNameTheLineAndKey) {
+  std::string bad = kStudy;
+  bad.replace(bad.find("layouts: [S2-default, k-c]"), 26, "layouts: [S2-default, b-k|c]");
+  try {
+    optim::load_study(write_study("bad_study.yaml", bad));
+    FAIL();
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad_study.yaml:7: 'layouts': 'b-k|c'"), std::string::npos) << e.what();
+  }
+  std::string unknown = kStudy + "colour: red\n";
+  EXPECT_THROW(optim::load_study(write_study("bad_study2.yaml", unknown)), ModelError);
+}
