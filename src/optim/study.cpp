@@ -11,6 +11,7 @@
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
@@ -124,6 +125,17 @@ Study load_study(const std::string& path) {
     if (s.search.starts < 1) fail(path, se["starts"], "starts", "must be >= 1");
   }
   if (root["harmonics"].IsDefined()) s.harmonics = static_cast<int>(number(path, root["harmonics"], "harmonics"));
+  int act = -1;
+  for (std::size_t k = 0; k < s.pantograph.forces.size(); ++k)
+    if (std::dynamic_pointer_cast<const mbs::Actuator>(s.pantograph.forces[k])) act = static_cast<int>(k);
+  if (act < 0) fail(path, root["model"], "model", "the pantograph has no actuator whose suspension the study replaces");
+  for (const auto& cat : s.catenaries) {
+    mbs::Model m =
+        catenary::couple(s.pantograph, cat, s.contact, 1.0, s.pantograph.contact_marker, s.pantograph.rig_joint);
+    mbs::State x = mbs::assemble(m, 0.0);
+    mbs::static_equilibrium(m, 0.0, x);
+    s.operating_length.push_back(m.forces[static_cast<std::size_t>(act)]->length(m, x));
+  }
   return s;
 }
 
@@ -135,10 +147,10 @@ network::Network default_suspension(const Study& study) {
 }
 
 StudyCost evaluate(const Study& study, const network::Network& net) {
-  mbs::Model m = pantograph::with_suspension(study.pantograph, net);
   StudyCost c;
   c.J = -1;
   for (std::size_t i = 0; i < study.catenaries.size(); ++i) {
+    mbs::Model m = pantograph::with_suspension(study.pantograph, net, study.operating_length[i]);
     auto r = analysis::sweep_periodic(m, study.catenaries[i], study.contact, study.speeds, study.harmonics);
     for (const auto& x : r)
       if (x.stats.std > c.J)

@@ -10,7 +10,7 @@
 
 namespace inerta::pantograph {
 
-mbs::Model with_suspension(const mbs::Model& model, const network::Network& bound) {
+mbs::Model with_suspension(const mbs::Model& model, const network::Network& bound, double reference_length) {
   using network::Network;
   mbs::Model m = model;
   Network net = network::simplify(bound);
@@ -29,7 +29,8 @@ mbs::Model with_suspension(const mbs::Model& model, const network::Network& boun
       if (found) throw ModelError(fmt::format("{}: more than one actuator; the suspension is ambiguous", m.source));
       found = true;
       f = std::make_shared<mbs::Actuator>(a->name(), a->body_i(), a->u_i(), a->body_j(), a->u_j(), net,
-                                          a->reference_length(), offset, a->params(), a->centripetal_switch());
+                                          reference_length > 0 ? reference_length : a->reference_length(), offset,
+                                          a->params(), a->centripetal_switch());
     } else if (auto s = std::dynamic_pointer_cast<const mbs::NetworkStrut>(f); s && s->state_offset() != offset) {
       f = std::make_shared<mbs::NetworkStrut>(s->name(), s->body_i(), s->u_i(), s->body_j(), s->u_j(), s->network(),
                                               s->reference_length(), offset, s->centripetal_switch());

@@ -22,6 +22,10 @@ struct Study {
   Options search;
   double lo = 0.1, hi = 1e9;  ///< bounds of every free value (SI), 0 and ∞ reachable
   int harmonics = 8;
+  /// Per catenary: the actuator's length at the static equilibrium of the pantograph with its own
+  /// suspension under that catenary. Candidate networks are relaxed there, so they carry no static
+  /// load and the static (≈ mean) contact force stays the design's, as the thesis requires.
+  std::vector<double> operating_length;
 };
 
 /// Reads a study file (docs/model-format.md#study-files); paths are relative to the file.

@@ -9,7 +9,8 @@ namespace inerta::pantograph {
 /// The model with its (single) actuator's network replaced by `net` (bound, not yet simplified).
 /// Internal-state offsets of the following network struts are renumbered. Throws ModelError if the
 /// model has no actuator, or if `net` is rigid.
-mbs::Model with_suspension(const mbs::Model& model, const network::Network& net);
+/// `reference_length` > 0 sets the length at which the new network is relaxed (default: the old one's).
+mbs::Model with_suspension(const mbs::Model& model, const network::Network& net, double reference_length = -1);
 
 /// The pantograph with its head released from the rig joint and loaded instead by a constant force
 /// equal to the joint's static reaction (the static contact force), so the static equilibrium is
