@@ -6,23 +6,11 @@
 #include <cmath>
 
 #include "inerta/error.hpp"
+#include "inerta/io/yaml_errors.hpp"
 
 namespace inerta::io {
 
 namespace {
-[[noreturn]] void fail(const std::string& file, const YAML::Node& at, const std::string& key, const std::string& what) {
-  std::string where = file;
-  if (at.IsDefined() && at.Mark().line >= 0) where += fmt::format(":{}", at.Mark().line + 1);
-  throw ModelError(fmt::format("{}: '{}': {}", where, key, what));
-}
-
-double number(const std::string& file, const YAML::Node& n, const std::string& key) {
-  try {
-    return n.as<double>();
-  } catch (const YAML::Exception&) {
-    fail(file, n, key, "expected a number");
-  }
-}
 
 // Sets one named coefficient; returns false if the key is unknown.
 bool set(CatenaryFile& c, const std::string& key, double v) {
@@ -66,25 +54,25 @@ CatenaryFile load_catenary(const std::string& path, const std::vector<std::strin
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
   }
   const YAML::Node& root = loaded;
-  if (!root.IsMap()) fail(path, root, "", "expected a mapping with 'catenary' and optional 'contact'");
+  if (!root.IsMap()) yaml_fail(path, root, "", "expected a mapping with 'catenary' and optional 'contact'");
   for (auto it = root.begin(); it != root.end(); ++it) {
     std::string k = it->first.as<std::string>();
     if (k != "name" && k != "catenary" && k != "contact")
-      fail(path, it->first, k, "unknown key; expected name, catenary, contact");
+      yaml_fail(path, it->first, k, "unknown key; expected name, catenary, contact");
   }
   const YAML::Node cat = root["catenary"];
-  if (!cat.IsMap()) fail(path, root, "catenary", "missing; expected span, kc, mc, cc");
+  if (!cat.IsMap()) yaml_fail(path, root, "catenary", "missing; expected span, kc, mc, cc");
   for (auto it = cat.begin(); it != cat.end(); ++it) {
     std::string k = it->first.as<std::string>();
     const YAML::Node v = it->second;
     if (k == "span") {
-      c.catenary.span = number(path, v, k);
+      c.catenary.span = yaml_number(path, v, k);
     } else if (k == "kc" || k == "mc" || k == "cc") {
-      if (!v.IsSequence() || v.size() != 4) fail(path, v, k, "expected four coefficients [x0, x1, x2, x3]");
+      if (!v.IsSequence() || v.size() != 4) yaml_fail(path, v, k, "expected four coefficients [x0, x1, x2, x3]");
       auto& a = k == "kc" ? c.catenary.k : k == "mc" ? c.catenary.m : c.catenary.c;
-      for (std::size_t i = 0; i < 4; ++i) a[i] = number(path, v[i], k);
+      for (std::size_t i = 0; i < 4; ++i) a[i] = yaml_number(path, v[i], k);
     } else {
-      fail(path, it->first, k, "unknown key in catenary; expected span, kc, mc, cc");
+      yaml_fail(path, it->first, k, "unknown key in catenary; expected span, kc, mc, cc");
     }
   }
   if (const YAML::Node ct = root["contact"]; ct.IsDefined()) {
@@ -92,14 +80,14 @@ CatenaryFile load_catenary(const std::string& path, const std::vector<std::strin
       std::string k = it->first.as<std::string>();
       if (k == "type") {
         std::string t = it->second.as<std::string>();
-        if (t != "bilateral" && t != "penalty") fail(path, it->second, k, "expected bilateral or penalty");
+        if (t != "bilateral" && t != "penalty") yaml_fail(path, it->second, k, "expected bilateral or penalty");
         c.contact.kind = t == "bilateral" ? catenary::Contact::Kind::Bilateral : catenary::Contact::Kind::Penalty;
       } else if (k == "stiffness") {
-        c.contact.stiffness = number(path, it->second, k);
+        c.contact.stiffness = yaml_number(path, it->second, k);
       } else if (k == "damping") {
-        c.contact.damping = number(path, it->second, k);
+        c.contact.damping = yaml_number(path, it->second, k);
       } else {
-        fail(path, it->first, k, "unknown key in contact; expected type, stiffness, damping");
+        yaml_fail(path, it->first, k, "unknown key in contact; expected type, stiffness, damping");
       }
     }
   }

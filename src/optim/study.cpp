@@ -11,27 +11,13 @@
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/io/yaml_errors.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
 
 namespace inerta::optim {
-
-namespace {
-[[noreturn]] void fail(const std::string& file, const YAML::Node& at, const std::string& key, const std::string& what) {
-  std::string where = file;
-  if (at.IsDefined() && at.Mark().line >= 0) where += fmt::format(":{}", at.Mark().line + 1);
-  throw ModelError(fmt::format("{}: '{}': {}", where, key, what));
-}
-double number(const std::string& file, const YAML::Node& n, const std::string& key) {
-  try {
-    return n.as<double>();
-  } catch (const YAML::Exception&) {
-    fail(file, n, key, "expected a number");
-  }
-}
-}  // namespace
 
 Study load_study(const std::string& path) {
   YAML::Node loaded;
@@ -43,19 +29,20 @@ Study load_study(const std::string& path) {
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
   }
   const YAML::Node& root = loaded;
-  if (!root.IsMap()) fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
+  if (!root.IsMap()) io::yaml_fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string k = it->first.as<std::string>();
     static const char* allowed[] = {"name",   "model",   "catenary", "catenaries",
                                     "speeds", "layouts", "search",   "harmonics"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
-      fail(path, it->first, k,
-           "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics");
+      io::yaml_fail(path, it->first, k,
+                    "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics");
   }
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   auto rel = [&](const YAML::Node& n, const char* key) {
-    if (!n.IsDefined() || !n.IsScalar()) fail(path, n.IsDefined() ? n : root, key, "missing; expected a file path");
+    if (!n.IsDefined() || !n.IsScalar())
+      io::yaml_fail(path, n.IsDefined() ? n : root, key, "missing; expected a file path");
     return (dir / n.Scalar()).string();
   };
   Study s;
@@ -65,10 +52,11 @@ Study load_study(const std::string& path) {
   const std::string cat_path = rel(root["catenary"], "catenary");
   const YAML::Node cats = root["catenaries"];
   if (cats.IsDefined()) {
-    if (!cats.IsSequence() || cats.size() == 0) fail(path, cats, "catenaries", "expected a list of override lists");
+    if (!cats.IsSequence() || cats.size() == 0)
+      io::yaml_fail(path, cats, "catenaries", "expected a list of override lists");
     for (const auto& c : cats) {
       std::vector<std::string> sets;
-      if (!c.IsSequence()) fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
+      if (!c.IsSequence()) io::yaml_fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
       for (const auto& x : c) sets.push_back(x.as<std::string>());
       io::CatenaryFile f = io::load_catenary(cat_path, sets);
       s.catenaries.push_back(f.catenary);
@@ -82,23 +70,24 @@ Study load_study(const std::string& path) {
     s.catenaries.push_back(f.catenary), s.contact = f.contact, s.catenary_labels.push_back("default");
   }
   const YAML::Node sp = root["speeds"];
-  if (!sp.IsMap()) fail(path, sp.IsDefined() ? sp : root, "speeds", "expected {from, to, step, unit: kmh|ms}");
-  const double from = number(path, sp["from"], "from"), to = number(path, sp["to"], "to"),
-               step = number(path, sp["step"], "step");
+  if (!sp.IsMap()) io::yaml_fail(path, sp.IsDefined() ? sp : root, "speeds", "expected {from, to, step, unit: kmh|ms}");
+  const double from = io::yaml_number(path, sp["from"], "from"), to = io::yaml_number(path, sp["to"], "to"),
+               step = io::yaml_number(path, sp["step"], "step");
   const std::string unit = sp["unit"].IsDefined() ? sp["unit"].as<std::string>() : "ms";
-  if (unit != "kmh" && unit != "ms") fail(path, sp["unit"], "unit", "expected kmh or ms");
-  if (!(from > 0) || !(to >= from) || !(step > 0)) fail(path, sp, "speeds", "expected 0 < from <= to and step > 0");
+  if (unit != "kmh" && unit != "ms") io::yaml_fail(path, sp["unit"], "unit", "expected kmh or ms");
+  if (!(from > 0) || !(to >= from) || !(step > 0))
+    io::yaml_fail(path, sp, "speeds", "expected 0 < from <= to and step > 0");
   for (long k = 0; from + k * step <= to + 1e-9 * step; ++k)
     s.speeds.push_back((from + k * step) / (unit == "kmh" ? 3.6 : 1.0));
   const YAML::Node ls = root["layouts"];
   if (!ls.IsSequence() || ls.size() == 0)
-    fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts");
+    io::yaml_fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts");
   for (const auto& l : ls) {
     const std::string name = l.as<std::string>();
     try {
       network::parse(network::find_layout(name) ? network::find_layout(name)->expression : name);
     } catch (const network::NetworkError& e) {
-      fail(path, l, "layouts", fmt::format("'{}': {}", name, e.what()));
+      io::yaml_fail(path, l, "layouts", fmt::format("'{}': {}", name, e.what()));
     }
     s.layouts.push_back(name);
   }
@@ -107,28 +96,31 @@ Study load_study(const std::string& path) {
       const std::string k = it->first.as<std::string>();
       const YAML::Node v = it->second;
       if (k == "starts")
-        s.search.starts = static_cast<int>(number(path, v, k));
+        s.search.starts = static_cast<int>(io::yaml_number(path, v, k));
       else if (k == "seed")
-        s.search.seed = static_cast<unsigned>(number(path, v, k));
+        s.search.seed = static_cast<unsigned>(io::yaml_number(path, v, k));
       else if (k == "lo")
-        s.lo = number(path, v, k);
+        s.lo = io::yaml_number(path, v, k);
       else if (k == "hi")
-        s.hi = number(path, v, k);
+        s.hi = io::yaml_number(path, v, k);
       else if (k == "min_step")
-        s.search.min_step = number(path, v, k);
+        s.search.min_step = io::yaml_number(path, v, k);
       else if (k == "max_evaluations")
-        s.search.max_evaluations = static_cast<int>(number(path, v, k));
+        s.search.max_evaluations = static_cast<int>(io::yaml_number(path, v, k));
       else
-        fail(path, it->first, k, "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
+        io::yaml_fail(path, it->first, k,
+                      "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
     }
-    if (!(s.lo > 0) || !(s.hi > s.lo)) fail(path, se, "search", "expected 0 < lo < hi");
-    if (s.search.starts < 1) fail(path, se["starts"], "starts", "must be >= 1");
+    if (!(s.lo > 0) || !(s.hi > s.lo)) io::yaml_fail(path, se, "search", "expected 0 < lo < hi");
+    if (s.search.starts < 1) io::yaml_fail(path, se["starts"], "starts", "must be >= 1");
   }
-  if (root["harmonics"].IsDefined()) s.harmonics = static_cast<int>(number(path, root["harmonics"], "harmonics"));
+  if (root["harmonics"].IsDefined())
+    s.harmonics = static_cast<int>(io::yaml_number(path, root["harmonics"], "harmonics"));
   int act = -1;
   for (std::size_t k = 0; k < s.pantograph.forces.size(); ++k)
     if (std::dynamic_pointer_cast<const mbs::Actuator>(s.pantograph.forces[k])) act = static_cast<int>(k);
-  if (act < 0) fail(path, root["model"], "model", "the pantograph has no actuator whose suspension the study replaces");
+  if (act < 0)
+    io::yaml_fail(path, root["model"], "model", "the pantograph has no actuator whose suspension the study replaces");
   for (const auto& cat : s.catenaries) {
     mbs::Model m =
         catenary::couple(s.pantograph, cat, s.contact, 1.0, s.pantograph.contact_marker, s.pantograph.rig_joint);
