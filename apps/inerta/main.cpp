@@ -645,6 +645,15 @@ int cmd_optimise(const OptimiseArgs& a) {
                100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean);
   fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
              network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
+  // Re-check the winner in the time domain (the reference method).
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (results[i].cost.J < results[best].cost.J) best = i;
+  const optim::StudyCost check =
+      optim::evaluate_time(study, network::resolve(results[best].layout, results[best].values));
+  fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
+             results[best].layout, results[best].expression, check.J, check.speed * 3.6, results[best].cost.J,
+             100 * (results[best].cost.J - check.J) / check.J);
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
     OutputFile csv((std::filesystem::path(a.out) / "results.csv").string());

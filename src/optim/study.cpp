@@ -151,6 +151,19 @@ StudyCost evaluate(const Study& study, const network::Network& net) {
   return c;
 }
 
+StudyCost evaluate_time(const Study& study, const network::Network& net) {
+  StudyCost c;
+  c.J = -1;
+  for (std::size_t i = 0; i < study.catenaries.size(); ++i) {
+    mbs::Model m = pantograph::with_suspension(study.pantograph, net, study.operating_length[i]);
+    auto r = analysis::sweep(m, study.catenaries[i], study.contact, study.speeds, analysis::RunOptions{});
+    for (const auto& x : r)
+      if (x.stats.std > c.J)
+        c.J = x.stats.std, c.speed = x.speed, c.mean = x.stats.mean, c.catenary = static_cast<int>(i);
+  }
+  return c;
+}
+
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress) {
   LayoutResult r;
   r.layout = layout;

@@ -51,6 +51,9 @@ struct LayoutResult {
   int evaluations = 0;
 };
 
+/// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner.
+StudyCost evaluate_time(const Study& study, const network::Network& net);
+
 /// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress = {});
 
