@@ -43,7 +43,8 @@ void check(const CatenaryFile& c, const std::string& where) {
 }
 }  // namespace
 
-CatenaryFile load_catenary(const std::string& path, const std::vector<std::string>& overrides) {
+namespace {
+CatenaryFile read_catenary(const std::string& path, const std::vector<std::string>& overrides) {
   CatenaryFile c;
   YAML::Node loaded;
   try {
@@ -129,6 +130,16 @@ CatenaryFile load_catenary(const std::string& path, const std::vector<std::strin
   }
   check(c, path + " (after --set)");
   return c;
+}
+}  // namespace
+
+CatenaryFile load_catenary(const std::string& path, const std::vector<std::string>& overrides) {
+  try {
+    return read_catenary(path, overrides);
+  } catch (const YAML::Exception& e) {  // a wrong node type (a list where a name belongs, ...)
+    throw ModelError(fmt::format("{}:{}: {}; expected the catenary file format of docs/model-format.md", path,
+                                 e.mark.line + 1, e.msg));
+  }
 }
 
 }  // namespace inerta::io

@@ -19,7 +19,8 @@
 
 namespace inerta::optim {
 
-Study load_study(const std::string& path) {
+namespace {
+Study read_study(const std::string& path) {
   YAML::Node loaded;
   try {
     loaded = YAML::LoadFile(path);
@@ -129,6 +130,16 @@ Study load_study(const std::string& path) {
     s.operating_length.push_back(m.forces[static_cast<std::size_t>(act)]->length(m, x));
   }
   return s;
+}
+}  // namespace
+
+Study load_study(const std::string& path) {
+  try {
+    return read_study(path);
+  } catch (const YAML::Exception& e) {  // a wrong node type (a map where a layout name belongs, ...)
+    throw ModelError(
+        fmt::format("{}:{}: {}; expected the study file format of docs/model-format.md", path, e.mark.line + 1, e.msg));
+  }
 }
 
 network::Network default_suspension(const Study& study) {

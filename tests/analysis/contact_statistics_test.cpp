@@ -2,11 +2,10 @@
 // lifted by an actuator (constant force + S2-default network) against a spring.
 #include "inerta/analysis/contact_statistics.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fmt/format.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -142,5 +141,17 @@ TEST(CatenaryFile, ErrorsNameTheFileLineOrOverride) {
     FAIL();
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find(bad + ":3: 'kc': expected four coefficients"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CatenaryFile, WrongNodeTypeIsAModelErrorWithTheLine) {
+  const std::string bad = (std::filesystem::temp_directory_path() / "bad_catenary2.yaml").string();
+  std::ofstream(bad) << "catenary:\n  span: 60\n  kc: [7000, 0, 0, 0]\n  mc: [177, 0, 0, 0]\n  cc: [1, 0, 0, 0]\n"
+                        "contact:\n  type: [penalty]\n";
+  try {
+    io::load_catenary(bad);
+    FAIL();
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find(bad + ":7: "), std::string::npos) << e.what();
   }
 }

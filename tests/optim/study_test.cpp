@@ -68,3 +68,14 @@ TEST(Study, CandidateSuspensionsCarryNoStaticLoad) {
     EXPECT_LT(c.J, 1e-6);
   }
 }
+
+TEST(Study, WrongNodeTypesAreModelErrorsWithTheLine) {
+  std::string bad = kStudy;
+  bad.replace(bad.find("layouts: [S2-default, k-c]"), 26, "layouts: [{S2-default: 1}]");
+  try {
+    optim::load_study(write_study("bad_study4.yaml", bad));
+    FAIL();
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad_study4.yaml:7: "), std::string::npos) << e.what();
+  }
+}
