@@ -1,6 +1,7 @@
-# The README's two commands: `make demo` and `make test`.
+# The README's two commands: `make demo` and `make test`. `make demo FULL=1`: the complete study 2.
 BUILD ?= build
 JOBS ?= $(shell nproc)
+FULL ?= 0
 
 .PHONY: all deps build test demo bench clean
 
@@ -17,7 +18,7 @@ test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 demo: build
-	@scripts/demo
+	@FULL=$(FULL) BUILD=$(BUILD) scripts/demo
 
 bench: build
 	@$(BUILD)/bench/inerta_bench

@@ -9,11 +9,13 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <numbers>
 #include <sstream>
 
+#include "identify.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
@@ -27,6 +29,7 @@
 #include "inerta/mbs/linearisation.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/network/realisation.hpp"
+#include "inerta/optim/report.hpp"
 #include "inerta/optim/study.hpp"
 #include "inerta/pantograph/suspension.hpp"
 #include "inerta/solve/integrator.hpp"
@@ -608,7 +611,32 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
 
 struct OptimiseArgs {
   std::string study, out;
+  int map = 15;
+  bool no_plots = false;
 };
+
+// Draws the PNGs of an `optimise --out DIR` with scripts/plot-study (python3 + matplotlib); without
+// them, a note: the CSV files are complete either way.
+void draw_plots(const std::string& dir) {
+  const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / "plot-study";
+  auto q = [](const std::string& s) {
+    std::string r = "'";
+    for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return r + "'";
+  };
+  if (!std::filesystem::exists(script)) {
+    fmt::print("note: no plots: {} not found; the CSV files in {} are complete\n", script.string(), dir);
+    return;
+  }
+  std::fflush(stdout);
+  const int status = std::system((q(script.string()) + " " + q(dir)).c_str());
+  if (status != 0)
+    fmt::print(
+        "note: no plots (scripts/plot-study needs python3 with matplotlib and numpy: Debian's python3-matplotlib, "
+        "python3-numpy, installed by scripts/install-deps); the CSV files in {} are complete, draw them later with "
+        "`scripts/plot-study {}`\n",
+        dir, dir);
+}
 
 // Structure-based design (spec/07): optimise every layout of the study, print and write the table.
 int cmd_optimise(const OptimiseArgs& a) {
@@ -645,15 +673,9 @@ int cmd_optimise(const OptimiseArgs& a) {
                100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean);
   fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
              network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
-  // Re-check the winner in the time domain (the reference method).
   std::size_t best = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].cost.J < results[best].cost.J) best = i;
-  const optim::StudyCost check =
-      optim::evaluate_time(study, network::resolve(results[best].layout, results[best].values));
-  fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
-             results[best].layout, results[best].expression, check.J, check.speed * 3.6, results[best].cost.J,
-             100 * (results[best].cost.J - check.J) / check.J);
   if (!a.out.empty()) {
     std::filesystem::create_directories(a.out);
     OutputFile csv((std::filesystem::path(a.out) / "results.csv").string());
@@ -680,6 +702,52 @@ int cmd_optimise(const OptimiseArgs& a) {
     fmt::print(json.get(), "\n  ]\n}}\n");
     fmt::print("wrote {}/results.csv and {}/results.json\n", a.out, a.out);
   }
+  // The winner re-checked in the time domain (the reference method): with --out, as part of the
+  // figures' post-processing (its σ(v) with the centripetal correction on).
+  optim::StudyCost check;
+  if (!a.out.empty()) {
+    fmt::print("post-processing for the figures:\n");
+    auto t0 = std::chrono::steady_clock::now();
+    std::string current;
+    optim::ReportOptions ro;
+    ro.map_size = a.map;
+    const optim::Report report =
+        optim::make_report(study, results, ro, [&](int step, int steps, const std::string& what, int done, int total) {
+          if (!what.empty()) {
+            current = fmt::format("  [{}/{}] {}", step, steps, what);
+            t0 = std::chrono::steady_clock::now();
+            fmt::print("{}{}", current, tty ? "" : " ...");
+          }
+          if (tty && done < total && total > 1) fmt::print("\r{}: {}/{}", current, done, total);
+          if (done == total) {
+            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            if (tty)
+              fmt::print("\r{}: {:.1f} s{:12}\n", current, s, "");
+            else
+              fmt::print(" {:.1f} s\n", s);
+          }
+          std::fflush(stdout);
+        });
+    check = report.time_check;
+    const auto files = optim::write_report(report, a.out);
+    fmt::print("wrote");
+    for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
+    fmt::print(" in {}\n", a.out);
+    for (const auto& c : report.centripetal) {
+      const optim::StudyCost on = optim::worst_of(c.on), off = optim::worst_of(c.off);
+      if (c.off_simulated)
+        fmt::print("centripetal correction, {}: J2 = {:.4f} N on, {:.4f} N off ({:+.3f} %)\n", c.design.label, on.J,
+                   off.J, 100 * (off.J - on.J) / on.J);
+      else
+        fmt::print("centripetal correction, {}: no inerter, nothing to correct\n", c.design.label);
+    }
+    if (!a.no_plots) draw_plots(a.out);
+  } else {
+    check = optim::evaluate_time(study, network::resolve(results[best].layout, results[best].values));
+  }
+  fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
+             results[best].layout, results[best].expression, check.J, check.speed * 3.6, results[best].cost.J,
+             100 * (results[best].cost.J - check.J) / check.J);
   return 0;
 }
 
@@ -774,10 +842,15 @@ int main(int argc, char** argv) {
   crs->add_option("--set", ca.sets, "Override a catenary value (repeatable)");
   crs->add_option("--out", ca.out, "CSV file (default: standard output)");
 
+  CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
+
   OptimiseArgs oa;
   auto* opt = app.add_subcommand("optimise", "Optimise the suspension layouts of a study file (spec/07)");
   opt->add_option("study", oa.study, "Study file (YAML)")->required();
-  opt->add_option("--out", oa.out, "Directory for results.csv and results.json");
+  opt->add_option("--out", oa.out,
+                  "Directory for results.csv/json, the figures' data (CSV) and their PNGs (scripts/plot-study)");
+  opt->add_option("--map", oa.map, "J2 map over (b, k): N×N points (0: none)")->capture_default_str();
+  opt->add_flag("--no-plots", oa.no_plots, "Write the figures' CSV files but do not draw the PNGs");
 
   try {
     app.parse(argc, argv);
@@ -792,6 +865,7 @@ int main(int argc, char** argv) {
     if (mds->parsed()) return cmd_modes(ma);
     if (frf->parsed()) return cmd_frf(fa);
     if (crs->parsed()) return cmd_catenary_response(ca);
+    if (idn->parsed()) return inerta::cli::run_identify();
     if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);

@@ -175,6 +175,14 @@ StudyCost evaluate_time(const Study& study, const network::Network& net) {
   return c;
 }
 
+std::vector<std::string> free_parameters(const std::string& layout) {
+  auto named = network::find_layout(layout);
+  std::vector<std::string> names;
+  for (const auto& name : network::parameter_names(network::parse(named ? named->expression : layout)))
+    if (!named || !named->fixed.count(name)) names.push_back(name);
+  return names;
+}
+
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress) {
   LayoutResult r;
   r.layout = layout;
@@ -182,8 +190,7 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   r.expression = named ? named->expression : layout;
   const network::Params fixed = named ? named->fixed : network::Params{};
   std::vector<Variable> vars;
-  for (const auto& name : network::parameter_names(network::parse(r.expression)))
-    if (!fixed.count(name)) vars.push_back({name, study.lo, study.hi, true, true});
+  for (const auto& name : free_parameters(layout)) vars.push_back({name, study.lo, study.hi, true, true});
   auto params_of = [&](const std::vector<double>& values) {
     network::Params p;
     for (std::size_t i = 0; i < vars.size(); ++i) p[vars[i].name] = values[i];

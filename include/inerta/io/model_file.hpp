@@ -1,7 +1,9 @@
 #pragma once
 // YAML model files (docs/model-format.md). Every error names the file, line, key and what was
 // expected, as an inerta::ModelError.
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "inerta/mbs/model.hpp"
 
@@ -9,9 +11,17 @@ namespace inerta::io {
 
 /// Reads and validates a model file. "initial" free lengths and angles are measured in the
 /// assembled initial configuration (so the model is assembled once while loading).
-mbs::Model load_model(const std::string& path);
+/// `overrides` ("NAME.KEY=VALUE", docs/model-format.md#overrides) replace numbers in the file
+/// before it is read: NAME is a force element or a body, KEY a numeric key of it (a dotted path
+/// for nested keys, e.g. actuator.params.k); e.g. c2.c=70, kf_cf.k=700, head.mass=5.5.
+mbs::Model load_model(const std::string& path, const std::vector<std::string>& overrides = {});
 
 /// Same, from text; `source` names the text in messages.
-mbs::Model parse_model(const std::string& text, const std::string& source);
+mbs::Model parse_model(const std::string& text, const std::string& source,
+                       const std::vector<std::string>& overrides = {});
+
+/// The number at an override key ("c2.c", "kf_cf.k", "actuator.params.k") in model text, or
+/// nullopt for a `params` value the file leaves to its layout's default. ModelError as for overrides.
+std::optional<double> model_value(const std::string& text, const std::string& source, const std::string& key);
 
 }  // namespace inerta::io

@@ -54,6 +54,10 @@ struct LayoutResult {
 /// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner.
 StudyCost evaluate_time(const Study& study, const network::Network& net);
 
+/// The element names of a layout (name or expression) that the optimiser varies: all but those the
+/// named layout fixes, in order of appearance.
+std::vector<std::string> free_parameters(const std::string& layout);
+
 /// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress = {});
 

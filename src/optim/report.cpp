@@ -1,0 +1,421 @@
+#include "inerta/optim/report.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <utility>
+
+#include "inerta/analysis/periodic.hpp"
+#include "inerta/error.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/network_strut.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/pantograph/suspension.hpp"
+
+namespace inerta::optim {
+
+namespace {
+
+SpeedCurve curve_of(const std::string& label, const std::vector<analysis::SpeedResult>& r) {
+  SpeedCurve c;
+  c.catenary = label;
+  for (const auto& x : r) c.speed.push_back(x.speed), c.sigma.push_back(x.stats.std), c.mean.push_back(x.stats.mean);
+  return c;
+}
+
+// The pantograph with `net` in place of its suspension, relaxed at catenary i's operating length.
+mbs::Model candidate(const Study& study, const network::Network& net, std::size_t i) {
+  return pantograph::with_suspension(study.pantograph, net, study.operating_length[i]);
+}
+
+}  // namespace
+
+std::vector<SpeedCurve> sigma_curves(const Study& study, const network::Network& net) {
+  std::vector<SpeedCurve> curves;
+  for (std::size_t i = 0; i < study.catenaries.size(); ++i)
+    curves.push_back(
+        curve_of(study.catenary_labels[i], analysis::sweep_periodic(candidate(study, net, i), study.catenaries[i],
+                                                                    study.contact, study.speeds, study.harmonics)));
+  return curves;
+}
+
+std::vector<SpeedCurve> sigma_curves_time(const Study& study, const network::Network& net, bool centripetal,
+                                          const std::function<void(int, int)>& progress) {
+  // The catenaries' sweeps run concurrently (nested oneTBB loops), so one sweep's slowest speeds
+  // overlap the others' instead of idling a core.
+  std::vector<SpeedCurve> curves(study.catenaries.size());
+  const int total = static_cast<int>(study.catenaries.size() * study.speeds.size());
+  std::mutex mutex;
+  int done = 0;
+  tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
+    mbs::Model m = candidate(study, net, i);
+    m.options.centripetal = centripetal;
+    curves[i] = curve_of(study.catenary_labels[i], analysis::sweep(m, study.catenaries[i], study.contact, study.speeds,
+                                                                   analysis::RunOptions{}, [&](int, int) {
+                                                                     std::lock_guard<std::mutex> lock(mutex);
+                                                                     ++done;
+                                                                     if (progress) progress(done, total);
+                                                                   }));
+  });
+  return curves;
+}
+
+StudyCost worst_of(const std::vector<SpeedCurve>& curves) {
+  StudyCost c;
+  c.J = -1;
+  for (std::size_t i = 0; i < curves.size(); ++i)
+    for (std::size_t k = 0; k < curves[i].sigma.size(); ++k)
+      if (curves[i].sigma[k] > c.J)
+        c.J = curves[i].sigma[k], c.speed = curves[i].speed[k], c.mean = curves[i].mean[k],
+        c.catenary = static_cast<int>(i);
+  return c;
+}
+
+mbs::Model rig_model(const Study& study, const network::Network& net) {
+  const mbs::Model& p = study.pantograph;
+  mbs::State x = mbs::assemble(p, 0.0);
+  mbs::static_equilibrium(p, 0.0, x);
+  for (const auto& f : p.forces)
+    if (std::dynamic_pointer_cast<const mbs::Actuator>(f)) return pantograph::with_suspension(p, net, f->length(p, x));
+  throw ModelError(fmt::format("{}: the pantograph has no actuator", study.source));
+}
+
+std::vector<ForceHistory> contact_histories(const Study& study, const network::Network& net, double speed) {
+  const std::size_t n = study.catenaries.size();
+  std::vector<ForceHistory> h(n);
+  std::exception_ptr error;
+  std::mutex mutex;
+  const analysis::RunOptions defaults;
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    try {
+      const mbs::Model p = candidate(study, net, i);
+      const mbs::Model m =
+          catenary::couple(p, study.catenaries[i], study.contact, speed, p.contact_marker, p.rig_joint);
+      analysis::RunOptions o = defaults;
+      o.speed = speed;
+      analysis::SpeedResult r = analysis::run_speed(m, o, study.contact.kind == catenary::Contact::Kind::Bilateral);
+      const std::size_t per = r.F.size() / static_cast<std::size_t>(r.spans),
+                        keep = std::min(r.F.size(), per * static_cast<std::size_t>(o.window_spans));
+      h[i].catenary = study.catenary_labels[i];
+      h[i].speed = speed;
+      h[i].t.assign(r.t.end() - static_cast<long>(keep), r.t.end());
+      h[i].F.assign(r.F.end() - static_cast<long>(keep), r.F.end());
+      h[i].stats = r.stats;
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+  });
+  if (error) std::rethrow_exception(error);
+  return h;
+}
+
+CostMap cost_map(const Study& study, const std::string& layout, const network::Params& values, const std::string& x,
+                 const std::vector<double>& xs, const std::string& y, const std::vector<double>& ys,
+                 const std::function<void(int, int)>& progress) {
+  CostMap map{layout, x, y, values, xs, ys, std::vector<double>(xs.size() * ys.size(), NAN)};
+  map.values.erase(x), map.values.erase(y);
+  const auto free = free_parameters(layout);
+  for (const auto& name : {x, y})
+    if (std::find(free.begin(), free.end(), name) == free.end())
+      throw ModelError(fmt::format("layout '{}' has no free element '{}' to map", layout, name));
+  std::mutex mutex;
+  int done = 0;
+  const int total = static_cast<int>(map.J.size());
+  tbb::parallel_for(std::size_t{0}, map.J.size(), [&](std::size_t n) {
+    network::Params p = map.values;
+    p[x] = xs[n / ys.size()], p[y] = ys[n % ys.size()];
+    try {
+      map.J[n] = evaluate(study, network::resolve(layout, p)).J;
+    } catch (const network::NetworkError&) {
+      throw;  // a wrong layout or value set is a programming error, not a point of the map
+    } catch (const std::exception&) {
+      // a rigid suspension or no valid steady state: no value (NaN)
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    ++done;
+    if (progress) progress(done, total);
+  });
+  return map;
+}
+
+std::vector<double> linspace(double a, double b, int n) {
+  std::vector<double> v;
+  for (int k = 0; k < n; ++k) v.push_back(n > 1 ? a + (b - a) * k / (n - 1) : a);
+  return v;
+}
+
+int best_with(const std::vector<LayoutResult>& results, const std::string& x, const std::string& y) {
+  int best = -1;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto free = free_parameters(results[i].layout);
+    const bool both =
+        std::find(free.begin(), free.end(), x) != free.end() && std::find(free.begin(), free.end(), y) != free.end();
+    if (both && (best < 0 || results[i].cost.J < results[static_cast<std::size_t>(best)].cost.J))
+      best = static_cast<int>(i);
+  }
+  return best;
+}
+
+bool has_inerter(const network::Network& net) {
+  const network::Network s = network::simplify(net);
+  std::function<bool(const network::Network&)> any = [&](const network::Network& n) {
+    if (n.kind == network::Network::Kind::Inerter) return n.value > 0 && std::isfinite(n.value);
+    return std::any_of(n.children.begin(), n.children.end(), any);
+  };
+  return any(s);
+}
+
+Report make_report(const Study& study, const std::vector<LayoutResult>& results, const ReportOptions& options,
+                   const ReportProgress& progress) {
+  if (results.empty()) throw std::invalid_argument("make_report needs at least one layout result");
+  const int steps = 5;
+  auto step = [&](int k, const std::string& what, int done = 0, int total = 1) {
+    if (progress) progress(k, steps, what, done, total);
+  };
+  Report r;
+  r.study = study.name;
+  r.catenaries = study.catenary_labels;
+  r.baseline = {"default", "", {}, default_suspension(study)};
+  std::size_t b = 0;
+  for (std::size_t i = 0; i < results.size(); ++i)
+    if (results[i].cost.J < results[b].cost.J) b = i;
+  r.best = {"best (" + results[b].layout + ")", results[b].layout, results[b].values,
+            network::resolve(results[b].layout, results[b].values)};
+
+  step(1, "σ(v) of the default and the best design (periodic)");
+  r.sigma_default = sigma_curves(study, r.baseline.net);
+  r.sigma_best = sigma_curves(study, r.best.net);
+  r.default_cost = worst_of(r.sigma_default);
+  r.best_cost = worst_of(r.sigma_best);
+  step(1, "", 1, 1);
+
+  step(2, "head FRF on the test rig, default and best");
+  std::vector<double> f = options.frf_f;
+  if (f.empty())
+    for (int k = 0; k <= 398; ++k) f.push_back(0.1 + 0.05 * k);
+  r.frf_output = options.frf_output;
+  r.frf_default = analysis::frf_linear(rig_model(study, r.baseline.net), {options.frf_output}, f);
+  r.frf_best = analysis::frf_linear(rig_model(study, r.best.net), {options.frf_output}, f);
+  step(2, "", 1, 1);
+
+  r.history_speed = options.history_speed;
+  step(3, fmt::format("contact force at {:g} km/h, default and best (time domain)", options.history_speed * 3.6));
+  r.history_default = contact_histories(study, r.baseline.net, options.history_speed);
+  r.history_best = contact_histories(study, r.best.net, options.history_speed);
+  step(3, "", 1, 1);
+
+  const int m = best_with(results, "b", "k");
+  if (options.map_size < 2) {
+    r.map_note = "no J2 map requested";
+  } else if (m < 0) {
+    r.map_note = "no layout of the study has free b and k";
+  } else {
+    const LayoutResult& lr = results[static_cast<std::size_t>(m)];
+    const double bo = lr.values.at("b"), ko = lr.values.at("k");
+    const double b_max = std::isfinite(bo) ? std::max(options.map_b_max, 1.25 * bo) : options.map_b_max;
+    const double k_max = std::isfinite(ko) ? std::max(options.map_k_max, 1.25 * ko) : options.map_k_max;
+    step(4, fmt::format("J2 map over (b, k) of {}, {}×{} points", lr.layout, options.map_size, options.map_size));
+    r.map = cost_map(study, lr.layout, lr.values, "b", linspace(0, b_max, options.map_size), "k",
+                     linspace(0, k_max, options.map_size), [&](int done, int total) { step(4, "", done, total); });
+    r.map_opt_x = bo, r.map_opt_y = ko, r.map_opt_J = lr.cost.J;
+  }
+  if (!r.map) step(4, "J2 map: " + r.map_note, 1, 1);
+
+  std::vector<Design> designs{r.best};
+  if (!has_inerter(r.best.net) && r.map) {
+    // The correction acts on inerters only: add the map's best point that has one.
+    const CostMap& map = *r.map;
+    std::size_t bi = 0, bj = 0;
+    double bJ = INFINITY;
+    for (std::size_t i = 0; i < map.xs.size(); ++i)
+      for (std::size_t j = 0; j < map.ys.size(); ++j)
+        if (map.xs[i] > 0 && map.at(i, j) < bJ) bJ = map.at(i, j), bi = i, bj = j;
+    if (std::isfinite(bJ)) {
+      network::Params p = map.values;
+      p["b"] = map.xs[bi], p["k"] = map.ys[bj];
+      designs.push_back({fmt::format("{} with b = {:.0f} kg, k = {:.0f} N/m", map.layout, map.xs[bi], map.ys[bj]),
+                         map.layout, p, network::resolve(map.layout, p)});
+    }
+  }
+  // Without an inerter the switch has nothing to act on (tests/optim/report_test.cpp shows the runs
+  // are bit-identical), so such a design is simulated once: its curves off are those on.
+  const int per = static_cast<int>(study.catenaries.size() * study.speeds.size());
+  int total = 0;
+  for (const auto& d : designs) total += (has_inerter(d.net) ? 2 : 1) * per;
+  step(5, fmt::format("σ(v) with and without the centripetal correction, {} design(s) (time domain)", designs.size()),
+       0, total);
+  // All runs (design × on/off) concurrently, for the same reason as in sigma_curves_time.
+  std::vector<Report::Centripetal> cs(designs.size());
+  std::vector<std::pair<std::size_t, bool>> jobs;
+  for (std::size_t i = 0; i < designs.size(); ++i) {
+    cs[i].design = designs[i];
+    cs[i].off_simulated = has_inerter(designs[i].net);
+    jobs.push_back({i, true});
+    if (cs[i].off_simulated) jobs.push_back({i, false});
+  }
+  std::mutex mutex;
+  int done = 0;
+  tbb::parallel_for(std::size_t{0}, jobs.size(), [&](std::size_t j) {
+    const std::size_t i = jobs[j].first;
+    const bool on = jobs[j].second;
+    int last = 0;
+    auto curves = sigma_curves_time(study, designs[i].net, on, [&](int d, int) {
+      std::lock_guard<std::mutex> lock(mutex);
+      done += d - last, last = d;
+      step(5, "", done, total);
+    });
+    (on ? cs[i].on : cs[i].off) = std::move(curves);
+  });
+  for (auto& c : cs) {
+    if (!c.off_simulated) c.off = c.on;
+    r.centripetal.push_back(std::move(c));
+  }
+  r.time_check = worst_of(r.centripetal.front().on);
+  return r;
+}
+
+namespace {
+
+// A CSV field: quoted if it holds a comma or a quote.
+std::string field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string json_string(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\')
+      q += '\\', q += c;
+    else if (c == '\n')
+      q += "\\n";
+    else
+      q += c;
+  }
+  return q + "\"";
+}
+
+std::string json_number(double v) {
+  if (std::isnan(v)) return "null";
+  if (std::isinf(v)) return v > 0 ? "\"inf\"" : "\"-inf\"";
+  return fmt::format("{:.10g}", v);
+}
+
+std::string json_params(const network::Params& p) {
+  std::string s;
+  for (const auto& [k, v] : p) s += fmt::format("{}{}: {}", s.empty() ? "" : ", ", json_string(k), json_number(v));
+  return "{" + s + "}";
+}
+
+struct File {
+  explicit File(const std::filesystem::path& p) : path(p.string()), f(std::fopen(path.c_str(), "w"), &std::fclose) {
+    if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", path));
+  }
+  std::string path;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f;
+};
+
+void write_curves(std::FILE* out, const std::string& prefix, const std::vector<SpeedCurve>& curves) {
+  for (const auto& c : curves)
+    for (std::size_t k = 0; k < c.speed.size(); ++k)
+      fmt::print(out, "{},{},{:.10g},{:.10g},{:.10g}\n", prefix, field(c.catenary), c.speed[k] * 3.6, c.sigma[k],
+                 c.mean[k]);
+}
+
+}  // namespace
+
+std::vector<std::string> write_report(const Report& r, const std::string& dir) {
+  namespace fs = std::filesystem;
+  fs::create_directories(dir);
+  std::vector<std::string> written;
+  {
+    File csv(fs::path(dir) / "sigma.csv");
+    fmt::print(csv.f.get(), "design,catenary,v_kmh,sigma_N,mean_N\n");
+    write_curves(csv.f.get(), "default", r.sigma_default);
+    write_curves(csv.f.get(), "best", r.sigma_best);
+    written.push_back(csv.path);
+  }
+  {
+    File csv(fs::path(dir) / "frf.csv");
+    fmt::print(csv.f.get(), "design,f_hz,mag,phase_deg\n");
+    for (const auto& [name, frf] : {std::pair{"default", &r.frf_default}, std::pair{"best", &r.frf_best}})
+      for (std::size_t k = 0; k < frf->f.size(); ++k)
+        fmt::print(csv.f.get(), "{},{:.10g},{:.10g},{:.10g}\n", name, frf->f[k], std::abs(frf->H[0][k]),
+                   std::arg(frf->H[0][k]) * 180 / std::numbers::pi);
+    written.push_back(csv.path);
+  }
+  {
+    File csv(fs::path(dir) / "contact.csv");
+    fmt::print(csv.f.get(), "design,catenary,t_s,F_N\n");
+    for (const auto& [name, hs] : {std::pair{"default", &r.history_default}, std::pair{"best", &r.history_best}})
+      for (const auto& h : *hs)
+        for (std::size_t k = 0; k < h.t.size(); ++k)
+          fmt::print(csv.f.get(), "{},{},{:.10g},{:.10g}\n", name, field(h.catenary), h.t[k], h.F[k]);
+    written.push_back(csv.path);
+  }
+  if (r.map) {
+    File csv(fs::path(dir) / "j2_map.csv");
+    fmt::print(csv.f.get(), "{},{},J2_N\n", r.map->x, r.map->y);
+    for (std::size_t i = 0; i < r.map->xs.size(); ++i)
+      for (std::size_t j = 0; j < r.map->ys.size(); ++j)
+        fmt::print(csv.f.get(), "{:.10g},{:.10g},{:.10g}\n", r.map->xs[i], r.map->ys[j], r.map->at(i, j));
+    written.push_back(csv.path);
+  }
+  {
+    File csv(fs::path(dir) / "centripetal.csv");
+    fmt::print(csv.f.get(), "design,centripetal,catenary,v_kmh,sigma_N,mean_N\n");
+    for (const auto& c : r.centripetal) {
+      write_curves(csv.f.get(), field(c.design.label) + ",on", c.on);
+      if (c.off_simulated) write_curves(csv.f.get(), field(c.design.label) + ",off", c.off);
+    }
+    written.push_back(csv.path);
+  }
+  {
+    File json(fs::path(dir) / "report.json");
+    std::FILE* out = json.f.get();
+    std::string cats;
+    for (const auto& c : r.catenaries) cats += (cats.empty() ? "" : ", ") + json_string(c);
+    auto design = [](const Design& d) {
+      return fmt::format("{{\"label\": {}, \"layout\": {}, \"values\": {}, \"network\": {}}}", json_string(d.label),
+                         json_string(d.layout), json_params(d.values), json_string(network::to_string(d.net, true)));
+    };
+    auto cost = [](const StudyCost& c) {
+      return fmt::format("{{\"J2\": {}, \"v_kmh\": {}, \"mean_N\": {}, \"catenary\": {}}}", json_number(c.J),
+                         json_number(c.speed * 3.6), json_number(c.mean), c.catenary);
+    };
+    fmt::print(out, "{{\n  \"study\": {},\n  \"catenaries\": [{}],\n", json_string(r.study), cats);
+    fmt::print(out, "  \"default\": {},\n  \"default_cost\": {},\n", design(r.baseline), cost(r.default_cost));
+    fmt::print(out, "  \"best\": {},\n  \"best_cost\": {},\n", design(r.best), cost(r.best_cost));
+    fmt::print(out, "  \"time_check\": {},\n", cost(r.time_check));
+    fmt::print(out, "  \"frf_output\": {},\n  \"history_v_kmh\": {},\n", json_string(r.frf_output),
+               json_number(r.history_speed * 3.6));
+    if (r.map)
+      fmt::print(out,
+                 "  \"map\": {{\"layout\": {}, \"x\": {}, \"y\": {}, \"values\": {}, \"optimum\": {{\"x\": {}, \"y\": "
+                 "{}, \"J2\": {}}}}},\n",
+                 json_string(r.map->layout), json_string(r.map->x), json_string(r.map->y), json_params(r.map->values),
+                 json_number(r.map_opt_x), json_number(r.map_opt_y), json_number(r.map_opt_J));
+    else
+      fmt::print(out, "  \"map\": null,\n  \"map_note\": {},\n", json_string(r.map_note));
+    std::string cs;
+    for (const auto& c : r.centripetal)
+      cs += fmt::format("{}\n    {{\"design\": {}, \"on\": {}, \"off\": {}, \"inerter\": {}, \"off_simulated\": {}}}",
+                        cs.empty() ? "" : ",", design(c.design), cost(worst_of(c.on)), cost(worst_of(c.off)),
+                        has_inerter(c.design.net) ? "true" : "false", c.off_simulated ? "true" : "false");
+    fmt::print(out, "  \"centripetal\": [{}\n  ]\n}}\n", cs);
+    written.push_back(json.path);
+  }
+  return written;
+}
+
+}  // namespace inerta::optim

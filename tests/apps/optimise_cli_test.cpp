@@ -1,0 +1,72 @@
+// `inerta optimise STUDY --out DIR` on a tiny study (one catenary, two speeds, one layout, one start):
+// the table, the results and the figures' CSV files, and the PNGs or a note that they cannot be drawn.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string first_line(const fs::path& p) {
+  std::ifstream in(p);
+  std::string l;
+  std::getline(in, l);
+  return l;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST(OptimiseCli, TinyStudyWritesTheTableResultsAndFigureData) {
+  const fs::path dir = fs::temp_directory_path() / ("inerta_optimise_cli_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path study = dir / "tiny.yaml", out = dir / "out";
+  std::ofstream(study) << "name: tiny\nmodel: " << INERTA_SOURCE_DIR
+                       << "/models/hsx.yaml\ncatenary: " << INERTA_SOURCE_DIR
+                       << "/models/catenary.yaml\n"
+                          "speeds: {from: 150, to: 200, step: 50, unit: kmh}\n"
+                          "search: {starts: 1, seed: 1, min_step: 0.1}\n"
+                          "layouts: [b|k]\n";
+  const std::string cmd = std::string(INERTA_CLI) + " optimise '" + study.string() + "' --out '" + out.string() +
+                          "' --map 3 > '" + (dir / "stdout.txt").string() + "' 2>&1";
+  const int status = std::system(cmd.c_str());
+  const std::string text = read(dir / "stdout.txt");
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << text;
+  EXPECT_TRUE(contains(text, "layout")) << text;
+  EXPECT_TRUE(contains(text, "post-processing for the figures")) << text;
+  EXPECT_TRUE(contains(text, "[4/5] J2 map over (b, k) of b|k, 3×3 points")) << text;
+  EXPECT_TRUE(contains(text, "time-domain re-check")) << text;
+
+  EXPECT_EQ(first_line(out / "results.csv"), "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations");
+  EXPECT_EQ(first_line(out / "sigma.csv"), "design,catenary,v_kmh,sigma_N,mean_N");
+  EXPECT_EQ(first_line(out / "frf.csv"), "design,f_hz,mag,phase_deg");
+  EXPECT_EQ(first_line(out / "contact.csv"), "design,catenary,t_s,F_N");
+  EXPECT_EQ(first_line(out / "j2_map.csv"), "b,k,J2_N");
+  EXPECT_EQ(first_line(out / "centripetal.csv"), "design,centripetal,catenary,v_kmh,sigma_N,mean_N");
+  EXPECT_TRUE(fs::exists(out / "report.json"));
+  // Either the PNGs were drawn, or the program said why not and still succeeded.
+  if (contains(text, "note: no plots")) {
+    EXPECT_FALSE(fs::exists(out / "sigma.png"));
+  } else {
+    for (const char* png : {"sigma.png", "frf.png", "contact.png", "j2_map.png", "centripetal.png"})
+      EXPECT_GT(fs::exists(out / png) ? fs::file_size(out / png) : 0, 1000u) << png << "\n" << text;
+  }
+  fs::remove_all(dir);
+}
