@@ -39,6 +39,8 @@ const char* joint_type_name(mbs::JointType t) {
   switch (t) {
     case mbs::JointType::Revolute:
       return "revolute";
+    case mbs::JointType::Spherical:
+      return "spherical";
     case mbs::JointType::Prismatic:
       return "prismatic";
     case mbs::JointType::Fixed:

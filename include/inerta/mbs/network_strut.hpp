@@ -14,7 +14,7 @@ namespace inerta::mbs {
 class NetworkStrut : public Strut {
  public:
   /// `net` must be simplified and neither open nor rigid; z occupies State::z[state_offset ...].
-  NetworkStrut(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
+  NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net, double l_ref,
                int state_offset, bool centripetal = true);
   const network::Network& network() const { return net_; }
   const network::Realisation& realisation() const { return r_; }
