@@ -35,7 +35,7 @@ void PointForce::add(const Model&, double t, const State&, Workspace& ws) const 
   if (body_ < 0) return;
   if (spatial_) {
     const SpatialVector p = spatial_vector(ws.sframe(body_), u3_, true);
-    ws.Q.segment<7>(7 * body_) += p.G.transpose() * (f_.value(t) * d3_);
+    ws.Q.segment<7>(7 * body_) += p.Gt(f_.value(t) * d3_);
     return;
   }
   PointKinematics p = point_kinematics(ws.frame(body_), u_);

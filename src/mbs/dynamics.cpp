@@ -52,8 +52,10 @@ void constraint_stage(const Model& model, double t, Workspace& ws) {
 }
 
 // Spatial body with Euler parameters: T = ½ m Ṙ² + 2 ṗᵀ Gᵀ J̄ G ṗ, so M_pp = 4 Gᵀ J̄ G and the
-// quadratic-velocity force Q_p = 8 Ġᵀ J̄ Ġ p (Ġ = G(ṗ)). M_pp is singular along p; the normalisation
-// row is added as 2κ p pᵀ to M (and κ p c to Q in `accelerations`): same solution, positive definite.
+// quadratic-velocity force Q_p = 8 Ġᵀ J̄ Ġ p (Ġ = G(ṗ)). Elimination of the normalisation rows
+// 2pᵀp̈ = c_p (Baumgarte form): every joint row, force and M_pp is orthogonal to p (E p = G p = 0), so
+// the p-direction decouples; M_pp + 2κ p pᵀ with Q_p projected orthogonal to p plus κ p c_p gives
+// exactly the q̈ and joint multipliers of the full system, with a positive definite M and fewer rows.
 double kappa(const Body& b) { return 2.0 * b.inertia3.trace() / 3.0; }
 
 void spatial_masses(const Model& model, Workspace& ws) {
@@ -104,13 +106,13 @@ namespace {
 
 // Full system of eq. 4.12 by LU with partial pivoting (used when M + M_I is not positive definite).
 void solve_kkt(const Model& model, double t, Workspace& ws) {
-  const int n = model.n_coords(), m = model.n_constraints();
+  const int n = model.n_coords(), m = model.n_solved_rows();
   ws.K.topLeftCorner(n, n) = ws.M;
-  ws.K.topRightCorner(n, m) = ws.Cq.transpose();
-  ws.K.bottomLeftCorner(m, n) = ws.Cq;
+  ws.K.topRightCorner(n, m) = ws.Cq.topRows(m).transpose();
+  ws.K.bottomLeftCorner(m, n) = ws.Cq.topRows(m);
   ws.K.bottomRightCorner(m, m).setZero();
   ws.rhs.head(n) = ws.Q;
-  ws.rhs.tail(m) = ws.c;
+  ws.rhs.tail(m) = ws.c.head(m);
   ws.lu.compute(ws.K);
   const auto diag = ws.lu.matrixLU().diagonal().cwiseAbs();
   const double pmax = diag.maxCoeff(), pmin = diag.minCoeff();
@@ -122,7 +124,6 @@ void solve_kkt(const Model& model, double t, Workspace& ws) {
 }  // namespace
 
 void accelerations(const Model& model, double t, const State& x, Workspace& ws) {
-  const int m = model.n_constraints();
   // Stages: kinematics → force elements and inerter mass term → constraint terms → Baumgarte → solve.
   ws.set_state(x);
   force_stage(model, t, x, ws);
@@ -131,10 +132,14 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
   const double a = model.options.alpha, b = model.options.beta;
   ws.c.noalias() = ws.gamma - 2 * a * ws.Ct - b * b * ws.C;
   ws.c.noalias() -= 2 * a * (ws.Cq * x.qd);
-  if (model.spatial())  // the other half of the normalisation term of spatial_masses
-    for (std::size_t k = 0; k < model.bodies.size(); ++k)
-      ws.Q.segment<4>(7 * static_cast<int>(k) + 3) +=
-          kappa(model.bodies[k]) * ws.sframes[k].p * ws.c[model.norm_row(static_cast<int>(k))];
+  if (model.spatial())  // the normalisation rows, eliminated (spatial_masses)
+    for (std::size_t k = 0; k < model.bodies.size(); ++k) {
+      const SpatialFrame& f = ws.sframes[k];
+      auto Qp = ws.Q.segment<4>(7 * static_cast<int>(k) + 3);
+      Qp -= f.p * (f.p.dot(Qp) / f.p.squaredNorm());
+      Qp += kappa(model.bodies[k]) * f.p * ws.c[model.norm_row(static_cast<int>(k))];
+    }
+  const int m = model.n_solved_rows();
 
   // Schur complement: (M + M_I) = L Lᵀ, S = C_q (M + M_I)⁻¹ C_qᵀ, S λ = C_q (M + M_I)⁻¹ Q − c,
   // q̈ = (M + M_I)⁻¹ (Q − C_qᵀ λ).
@@ -145,7 +150,7 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
     return;
   }
   // One triangular solve for [Y z] = L⁻¹ [C_qᵀ Q].
-  ws.YZ.leftCols(m) = ws.Cq.transpose();
+  ws.YZ.leftCols(m) = ws.Cq.topRows(m).transpose();
   ws.YZ.col(m) = ws.Q;
   ws.llt_M.matrixL().solveInPlace(ws.YZ);
   const auto Y = ws.YZ.leftCols(m);
@@ -158,7 +163,7 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
     if (!(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
       singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? std::pow(dS.minCoeff() / dS.maxCoeff(), 2) : 0.0);
     ws.lambda.noalias() = Y.transpose() * z;
-    ws.lambda -= ws.c;
+    ws.lambda -= ws.c.head(m);
     ws.llt_S.solveInPlace(ws.lambda);
     z.noalias() -= Y * ws.lambda;
   }

@@ -11,8 +11,8 @@ namespace {
 // C = a·b, a on body i, b on body j.
 void dot_row(const SpatialVector& a, const SpatialVector& b, ConstraintRow3& r) {
   r.C = a.v.dot(b.v);
-  r.gi = a.G.transpose() * b.v;
-  r.gj = b.G.transpose() * a.v;
+  r.gi = a.Gt(b.v);
+  r.gj = b.Gt(a.v);
   r.gamma = -(a.v.dot(b.bias) + b.v.dot(a.bias) + 2 * a.vd.dot(b.vd));
 }
 
@@ -20,8 +20,8 @@ void dot_row(const SpatialVector& a, const SpatialVector& b, ConstraintRow3& r) 
 void dot_d_row(const SpatialVector& a, const SpatialVector& pi, const SpatialVector& pj, ConstraintRow3& r) {
   const Vec3 d = pj.v - pi.v, dd = pj.vd - pi.vd;
   r.C = a.v.dot(d);
-  r.gi = a.G.transpose() * d - pi.G.transpose() * a.v;
-  r.gj = pj.G.transpose() * a.v;
+  r.gi = a.Gt(d) - pi.Gt(a.v);
+  r.gj = pj.Gt(a.v);
   r.gamma = -(d.dot(a.bias) + a.v.dot(pj.bias - pi.bias) + 2 * a.vd.dot(dd));
 }
 
@@ -30,8 +30,8 @@ void coincidence(const SpatialVector& pi, const SpatialVector& pj, ConstraintRow
   for (int c = 0; c < 3; ++c) {
     ConstraintRow3& r = rows[c];
     r.C = pi.v[c] - pj.v[c];
-    r.gi = pi.G.row(c).transpose();
-    r.gj = -pj.G.row(c).transpose();
+    r.gi = pi.Gt(Vec3::Unit(c));
+    r.gj = -pj.Gt(Vec3::Unit(c));
     r.gamma = -(pi.bias[c] - pj.bias[c]);
   }
 }
@@ -83,7 +83,7 @@ int evaluate_joint_3d(const Joint& jt, double t, const SpatialFrame& fi, const S
       ConstraintRow3& r = rows[0];
       const int c = jt.component;
       r.C = pj.v[c] - jt.value0 - jt.motion.value(t);
-      r.gj = pj.G.row(c).transpose();
+      r.gj = pj.Gt(Vec3::Unit(c));
       r.gamma = -pj.bias[c] + jt.motion.d2(t);
       r.Ct = -jt.motion.d1(t);
       break;

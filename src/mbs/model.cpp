@@ -96,7 +96,7 @@ Eigen::VectorXd Model::qd0() const {
 double ForceElement::length(const Model&, const State&) const { return std::nan(""); }
 
 Workspace::Workspace(const Model& model) {
-  const int n = model.n_coords(), m = model.n_constraints();
+  const int n = model.n_coords(), m = model.n_constraints(), ms = model.n_solved_rows();
   M = Eigen::MatrixXd::Zero(n, n);
   Q = Eigen::VectorXd::Zero(n);
   C = Eigen::VectorXd::Zero(m);
@@ -104,14 +104,14 @@ Workspace::Workspace(const Model& model) {
   Cq = Eigen::MatrixXd::Zero(m, n);
   gamma = Eigen::VectorXd::Zero(m);
   llt_M.compute(Eigen::MatrixXd::Identity(n, n));  // sized, and with a defined info()
-  YZ = Eigen::MatrixXd::Zero(n, m + 1);
-  S = Eigen::MatrixXd::Zero(m, m);
-  llt_S.compute(Eigen::MatrixXd::Identity(m, m));
+  YZ = Eigen::MatrixXd::Zero(n, ms + 1);
+  S = Eigen::MatrixXd::Zero(ms, ms);
+  llt_S.compute(Eigen::MatrixXd::Identity(ms, ms));
   c = Eigen::VectorXd::Zero(m);
-  K = Eigen::MatrixXd::Zero(n + m, n + m);
-  rhs = Eigen::VectorXd::Zero(n + m);
-  sol = Eigen::VectorXd::Zero(n + m);
-  lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + m);
+  K = Eigen::MatrixXd::Zero(n + ms, n + ms);
+  rhs = Eigen::VectorXd::Zero(n + ms);
+  sol = Eigen::VectorXd::Zero(n + ms);
+  lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + ms);
   nc_ = model.body_coords();
   if (model.spatial())
     sframes.resize(model.bodies.size());
@@ -119,7 +119,7 @@ Workspace::Workspace(const Model& model) {
     frames.resize(model.bodies.size());
   qdd = Eigen::VectorXd::Zero(n);
   zd = Eigen::VectorXd::Zero(model.n_states());
-  lambda = Eigen::VectorXd::Zero(m);
+  lambda = Eigen::VectorXd::Zero(ms);
 }
 
 void Workspace::set_state(const State& x) {

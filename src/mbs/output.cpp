@@ -27,7 +27,7 @@ double evaluate_output(const Output& out, const Model& model, double t, const St
         else if (out.kind == Output::Kind::Velocity)
           value = p.vd[out.component];
         else if (mk.body >= 0)
-          value = p.G.row(out.component).dot(ws.qdd.segment<7>(7 * mk.body)) + p.bias[out.component];
+          value = p.G_mul(ws.qdd.segment<7>(7 * mk.body))[out.component] + p.bias[out.component];
         break;
       }
       PointKinematics p = point_kinematics(ws.frame(mk.body), mk.u);

@@ -68,8 +68,11 @@ TEST(Spatial, PointAndDirectionKinematicsAgainstFiniteDifferences) {
       const Vec3 rdd_fd = (r_at(tau) - 2 * r_at(0) + r_at(-tau)) / (tau * tau);
       EXPECT_LT((v.v - r_at(0)).norm(), 1e-14);
       EXPECT_LT((rd_fd - v.vd).norm(), 1e-7);
-      EXPECT_LT((rd_fd - v.G * m.qd).norm(), 1e-7);  // ṙ = G q̇ (eq. 3.22)
-      EXPECT_LT((rdd_fd - (v.G * m.qdd + v.bias)).norm(), 1e-4) << "r̈ = G q̈ + bias (eq. 3.25)";
+      EXPECT_LT((rd_fd - v.G_mul(m.qd)).norm(), 1e-7);  // ṙ = G q̇ (eq. 3.22)
+      EXPECT_LT((rdd_fd - (v.G_mul(m.qdd) + v.bias)).norm(), 1e-4) << "r̈ = G q̈ + bias (eq. 3.25)";
+      // Gᵀ x is the transpose of G q̇: x·(G q̇) = (Gᵀ x)·q̇ for random x, q̇.
+      const Vec3 x = rand3(1);
+      EXPECT_NEAR(x.dot(v.G_mul(m.qdd)), v.Gt(x).dot(m.qdd), 1e-13);
     }
   }
 }

@@ -76,6 +76,9 @@ struct Model {
   std::string coord_name(int k) const;  ///< "bar1.theta" (2D), "bar1.e2" (3D)
   /// 3D: the row of body b's normalisation constraint pᵀp − 1 = 0 (after the joints' rows).
   int norm_row(int b) const { return n_joint_rows_ + b; }
+  /// Rows of eq. 4.12 as solved by `accelerations`: all in 2D, the joints' in 3D (the normalisation
+  /// rows are eliminated there, dynamics.cpp).
+  int n_solved_rows() const { return n_joint_rows_; }
 
   /// Assigns constraint rows and counts internal states; call after joints and forces are final.
   void finalize();

@@ -67,35 +67,50 @@ struct SpatialFrame {
 };
 
 /// A body-fixed vector: a point (position, with R) or a direction (without).
-///   v = [R +] A ū,  v̇ = G_v q̇_i,  v̈ = G_v q̈_i + bias,  G_v = [I or 0, −2 ũ E] (3×7).
+///   v = [R +] A ū,  v̇ = G q̇_i,  v̈ = G q̈_i + bias,  G = [I or 0, −2 ũ E] (3×7, u = A ū),
+/// applied without forming G: G q̇ = [Ṙ] − 2 u × (E ṗ),  Gᵀ x = [x or 0; 2 Eᵀ (u × x)].
 struct SpatialVector {
-  Vec3 v, vd, bias;
-  Mat37 G;
+  Vec3 v, vd, bias, u;
+  Mat34 E;
+  bool point;
+  Vec3 G_mul(const Vec7& qd) const {
+    return (point ? Vec3(qd.head<3>()) : Vec3::Zero()) - 2 * u.cross(E * qd.tail<4>());
+  }
+  Vec7 Gt(const Vec3& x) const {
+    Vec7 g;
+    g.head<3>() = point ? x : Vec3::Zero();
+    g.tail<4>() = 2 * E.transpose() * u.cross(x);
+    return g;
+  }
 };
 inline SpatialVector spatial_vector(const SpatialFrame& f, const Vec3& u_local, bool point) {
   SpatialVector s;
-  const Vec3 u = f.A * u_local;
-  s.v = point ? Vec3(f.R + u) : u;
-  s.vd = f.w.cross(u) + (point ? f.Rd : Vec3::Zero());
-  s.bias = f.w.cross(f.w.cross(u));
-  s.G.leftCols<3>() = point ? Mat3(Mat3::Identity()) : Mat3(Mat3::Zero());
-  s.G.rightCols<4>() = -2 * skew(u) * f.E;
+  s.u = f.A * u_local;
+  s.v = point ? Vec3(f.R + s.u) : s.u;
+  s.vd = f.w.cross(s.u) + (point ? f.Rd : Vec3::Zero());
+  s.bias = f.w.cross(f.w.cross(s.u));
+  s.E = f.E;
+  s.point = point;
   return s;
 }
 
-/// Strut kinematics in 3D (eqs. 3.20–3.25 with Euler parameters): J = êᵀ [−G_Pi  G_Pj] (1×14).
+/// Strut kinematics in 3D (eqs. 3.20–3.25 with Euler parameters): J = êᵀ [−G_Pi  G_Pj] (1×14),
+/// with êᵀ G_P = [êᵀ, 2 (u × ê)ᵀ E] (G_P = [I, −2 ũ E]).
 inline StrutKinematics strut_kinematics(const SpatialFrame& fi, const Vec3& ui, const SpatialFrame& fj,
                                         const Vec3& uj) {
-  const SpatialVector pi = spatial_vector(fi, ui, true), pj = spatial_vector(fj, uj, true);
+  const Vec3 u_i = fi.A * ui, u_j = fj.A * uj;
+  const Vec3 w_i = fi.w.cross(u_i), w_j = fj.w.cross(u_j);
   StrutKinematics s;
-  const Vec3 r = pj.v - pi.v, rd = pj.vd - pi.vd;
+  const Vec3 r = fj.R + u_j - fi.R - u_i, rd = fj.Rd + w_j - fi.Rd - w_i;
   s.l = r.norm();
   const Vec3 e = r / s.l;
   s.l_dot = rd.dot(e);
   s.J.resize(14);
-  s.J.head<7>() = -pi.G.transpose() * e;
-  s.J.tail<7>() = pj.G.transpose() * e;
-  s.a_n_axial = e.dot(pj.bias - pi.bias);
+  s.J.head<3>() = -e;
+  s.J.segment<4>(3) = -2 * fi.E.transpose() * u_i.cross(e);
+  s.J.segment<3>(7) = e;
+  s.J.tail<4>() = 2 * fj.E.transpose() * u_j.cross(e);
+  s.a_n_axial = e.dot(fj.w.cross(w_j) - fi.w.cross(w_i));
   s.centripetal = (rd.squaredNorm() - s.l_dot * s.l_dot) / s.l;
   return s;
 }
