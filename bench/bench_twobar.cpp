@@ -1,5 +1,5 @@
-// Benchmarks of issues 2 and 3: one right-hand-side evaluation and the 60 s two-bar run, plain and
-// with its D–D strut written as a network.
+// Benchmarks of issues 2, 3 and 7: one right-hand-side evaluation and the 60 s two-bar run, plain,
+// with its D–D strut written as a network, and built with the spatial engine.
 #include <benchmark/benchmark.h>
 
 #include <fstream>
@@ -99,6 +99,19 @@ static void BM_TwoBarNetwork60s(benchmark::State& state) {
   run_loop(state, state.range(0) == 0 ? kcb() : tid(), solve::Method::Rk);
   state.SetLabel(state.range(0) == 0 ? "k|c|b" : "b-(k|c)");
 }
+// Issue 7: the same mechanism built with the spatial engine (models/twobar3d.yaml); target < 2× the 2D run.
+static void BM_TwoBar3DRhs(benchmark::State& state) {
+  static mbs::Model m = io::load_model(INERTA_SOURCE_DIR "/models/twobar3d.yaml");
+  rhs_loop(state, m);
+}
+BENCHMARK(BM_TwoBar3DRhs);
+
+static void BM_TwoBar3D60s(benchmark::State& state) {
+  static mbs::Model m = io::load_model(INERTA_SOURCE_DIR "/models/twobar3d.yaml");
+  run_loop(state, m, solve::Method::Rk);
+}
+BENCHMARK(BM_TwoBar3D60s)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_TwoBarNetwork60s)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -42,6 +42,8 @@ const char* joint_type_name(mbs::JointType t) {
   switch (t) {
     case mbs::JointType::Revolute:
       return "revolute";
+    case mbs::JointType::Spherical:
+      return "spherical";
     case mbs::JointType::Prismatic:
       return "prismatic";
     case mbs::JointType::Fixed:
@@ -64,7 +66,8 @@ void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyR
   fmt::print(to, "assembly: max |C| {:.3g} -> {:.3g} in {} Newton iteration(s)", a.initial_residual, a.residual,
              a.iterations);
   if (a.dq.size() > 0 && a.dq.cwiseAbs().maxCoeff() > 0)
-    fmt::print(to, "; largest correction {:+.4g} {} on {}", a.dq[a.largest], a.largest % 3 == 2 ? "rad" : "m",
+    fmt::print(to, "; largest correction {:+.4g} {} on {}", a.dq[a.largest],
+               model.spatial() ? (a.largest % 7 >= 3 ? "" : "m") : (a.largest % 3 == 2 ? "rad" : "m"),
                model.coord_name(a.largest));
   fmt::print(to, "\n");
 }
@@ -73,11 +76,19 @@ int cmd_check(const std::string& path) {
   mbs::Model model = io::load_model(path);
   for (const auto& note : model.notes) fmt::print("note: {}\n", note);
   fmt::print("model: {} ({})\n", model.name, path);
-  fmt::print("bodies ({}):\n", model.bodies.size());
+  fmt::print("bodies ({}){}:\n", model.bodies.size(), model.spatial() ? ", spatial (Euler parameters)" : "");
   for (const auto& b : model.bodies)
-    fmt::print("  {:<16} m = {:<10.6g} kg  I = {:<10.6g} kg·m²  x = {:<10.6g} y = {:<10.6g} θ = {:.6g} rad\n", b.name,
-               b.mass, b.inertia, b.q0.x(), b.q0.y(), b.q0.z());
+    if (model.spatial())
+      fmt::print(
+          "  {:<16} m = {:<10.6g} kg  I = [{:.6g} {:.6g} {:.6g}] kg·m²  R = [{:.6g} {:.6g} {:.6g}] m  p = [{:.6g} "
+          "{:.6g} {:.6g} {:.6g}]\n",
+          b.name, b.mass, b.inertia3(0, 0), b.inertia3(1, 1), b.inertia3(2, 2), b.q0s[0], b.q0s[1], b.q0s[2], b.q0s[3],
+          b.q0s[4], b.q0s[5], b.q0s[6]);
+    else
+      fmt::print("  {:<16} m = {:<10.6g} kg  I = {:<10.6g} kg·m²  x = {:<10.6g} y = {:<10.6g} θ = {:.6g} rad\n", b.name,
+                 b.mass, b.inertia, b.q0.x(), b.q0.y(), b.q0.z());
   fmt::print("coordinates: {}\n", model.n_coords());
+  if (model.spatial()) fmt::print("Euler-parameter normalisation equations: {}\n", model.bodies.size());
   if (model.n_states() > 0) fmt::print("internal states of network struts: {}\n", model.n_states());
   fmt::print("joints ({}), constraint equations: {}\n", model.joints.size(), model.n_constraints());
   for (const auto& j : model.joints)

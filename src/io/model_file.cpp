@@ -99,6 +99,15 @@ class Reader {
     if (!n.IsSequence() || n.size() != 2) fail(n, key, "expected a list of two numbers [x, y]");
     return {number(n[0], key), number(n[1], key)};
   }
+  Vec3 vec3(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsSequence() || n.size() != 3) fail(n, key, "expected a list of three numbers [x, y, z] (a 3D model)");
+    return {number(n[0], key), number(n[1], key), number(n[2], key)};
+  }
+  Vec3 unit3(const YAML::Node& n, const std::string& key) const {
+    Vec3 v = vec3(n, key);
+    if (!(v.norm() > 0)) fail(n, key, "must be a non-zero vector");
+    return v.normalized();
+  }
   // Angle from `key` (rad) or `key_deg` (degrees), not both.
   double angle(const YAML::Node& map, const std::string& key, double fallback) const {
     YAML::Node r = map[key], d = map[key + "_deg"];
@@ -191,7 +200,9 @@ struct Loader {
     if (!n.IsDefined()) return;
     rd.keys(n, "options", {"gravity", "baumgarte", "centripetal", "t_end", "sample"});
     if (YAML::Node g = n["gravity"]; g.IsDefined()) {
-      if (g.IsSequence())
+      if (g.IsSequence() && model.spatial())
+        model.options.g3 = rd.vec3(g, "gravity");
+      else if (g.IsSequence())
         model.options.g = rd.vec2(g, "gravity");
       else
         model.options.gravity = rd.boolean(g, "gravity");
@@ -211,12 +222,64 @@ struct Loader {
 
   void markers_of(const YAML::Node& n, int body, const std::string& body_name) {
     if (!n.IsDefined()) return;
-    if (!n.IsMap()) rd.fail(n, "markers", "expected a mapping name: [x, y]");
+    if (!n.IsMap())
+      rd.fail(n, "markers", model.spatial() ? "expected a mapping name: [x, y, z]" : "expected a mapping name: [x, y]");
     for (auto it = n.begin(); it != n.end(); ++it) {
       std::string name = body_name + "." + it->first.as<std::string>();
       if (model.find_marker(name) >= 0) rd.fail(it->first, "markers", fmt::format("duplicate marker '{}'", name));
-      model.markers.push_back({name, body, rd.vec2(it->second, name)});
+      if (model.spatial()) {
+        Vec3 u = rd.vec3(it->second, name);
+        model.markers.push_back({name, body, u.head<2>(), u});
+      } else {
+        model.markers.push_back({name, body, rd.vec2(it->second, name)});
+      }
     }
+  }
+
+  // 3D body: inertia [Ixx, Iyy, Izz] (principal, body frame) or a 3×3 list; orientation as
+  // {axis, angle|angle_deg} or quaternion [e0, e1, e2, e3]; angular_velocity [ωx, ωy, ωz] global.
+  mbs::Body body3(const YAML::Node& b) {
+    rd.keys(b, "body",
+            {"name", "mass", "inertia", "position", "orientation", "quaternion", "velocity", "angular_velocity",
+             "markers"});
+    mbs::Body body;
+    body.name = rd.text(b, "name", "body");
+    std::string what = "body '" + body.name + "'";
+    body.mass = rd.nonnegative(b, "mass", what);
+    YAML::Node in = rd.need(b, "inertia", what);
+    if (in.IsSequence() && in.size() == 3 && in[0].IsScalar()) {
+      body.inertia3 = rd.vec3(in, "inertia").asDiagonal();
+    } else if (in.IsSequence() && in.size() == 3) {
+      for (int r = 0; r < 3; ++r) body.inertia3.row(r) = rd.vec3(in[r], "inertia").transpose();
+      if (!body.inertia3.isApprox(body.inertia3.transpose(), 1e-12))
+        rd.fail(in, "inertia", "the inertia tensor must be symmetric");
+    } else {
+      rd.fail(in, "inertia", "expected [Ixx, Iyy, Izz] (principal moments) or a 3×3 list [[..], [..], [..]] (kg·m²)");
+    }
+    Eigen::SelfAdjointEigenSolver<mbs::Mat3> es(body.inertia3);
+    const Vec3 I = es.eigenvalues();
+    if (!(I.minCoeff() >= 0) || I[0] + I[1] < I[2] * (1 - 1e-12))
+      rd.fail(in, "inertia",
+              "must be positive semi-definite and satisfy the triangle inequality I1 + I2 >= I3 of a rigid body");
+    body.q0s.head<3>() = rd.vec3(rd.need(b, "position", what), "position");
+    if (b["orientation"].IsDefined() && b["quaternion"].IsDefined())
+      rd.fail(b["quaternion"], "quaternion", "give either orientation or quaternion, not both");
+    if (YAML::Node o = b["orientation"]; o.IsDefined()) {
+      rd.keys(o, "orientation", {"axis", "angle", "angle_deg"});
+      body.q0s.tail<4>() =
+          mbs::quaternion(rd.unit3(rd.need(o, "axis", "orientation"), "axis"), rd.angle(o, "angle", 0.0));
+    } else if (YAML::Node qn = b["quaternion"]; qn.IsDefined()) {
+      if (!qn.IsSequence() || qn.size() != 4) rd.fail(qn, "quaternion", "expected four numbers [e0, e1, e2, e3]");
+      mbs::Vec4 p(rd.number(qn[0], "quaternion"), rd.number(qn[1], "quaternion"), rd.number(qn[2], "quaternion"),
+                  rd.number(qn[3], "quaternion"));
+      if (std::abs(p.norm() - 1) > 1e-6)
+        rd.fail(qn, "quaternion", fmt::format("must be a unit quaternion (norm {:.8g})", p.norm()));
+      body.q0s.tail<4>() = p.normalized();
+    }
+    if (b["velocity"].IsDefined()) body.qd0s.head<3>() = rd.vec3(b["velocity"], "velocity");
+    if (b["angular_velocity"].IsDefined())
+      body.qd0s.tail<4>() = mbs::p_dot(body.q0s.tail<4>(), rd.vec3(b["angular_velocity"], "angular_velocity"));
+    return body;
   }
 
   void bodies(const YAML::Node& n) {
@@ -224,6 +287,16 @@ struct Loader {
     if (!n.IsSequence()) rd.fail(n, "bodies", "expected a list of bodies");
     names_unique(n, "body");
     for (const auto& b : n) {
+      if (model.spatial()) {
+        mbs::Body body = body3(b);
+        if (body.name == "ground" || body.name.find('.') != std::string::npos)
+          rd.fail(b["name"], "name", "a body may not be called 'ground' or contain '.'");
+        model.bodies.push_back(body);
+        int index = static_cast<int>(model.bodies.size()) - 1;
+        model.markers.push_back({body.name + ".cm", index, Vec2::Zero(), Vec3::Zero()});
+        markers_of(b["markers"], index, body.name);
+        continue;
+      }
       rd.keys(b, "body",
               {"name", "mass", "inertia", "position", "angle", "angle_deg", "velocity", "angular_velocity", "markers"});
       mbs::Body body;
@@ -254,7 +327,9 @@ struct Loader {
       jt.name = rd.text(j, "name", "joint");
       std::string what = "joint '" + jt.name + "'";
       std::string type = rd.text(j, "type", what);
-      if (type == "revolute" || type == "prismatic") {
+      if (model.spatial()) {
+        joint3(j, jt, what, type);
+      } else if (type == "revolute" || type == "prismatic") {
         if (type == "revolute")
           rd.keys(j, what, {"name", "type", "markers"});
         else
@@ -310,8 +385,88 @@ struct Loader {
     }
   }
 
+  // Tabulated frame of a 3D body (identity for ground).
+  mbs::Mat3 A0(int b) const {
+    return b < 0 ? mbs::Mat3::Identity() : mbs::rotation(model.bodies[static_cast<std::size_t>(b)].q0s.tail<4>());
+  }
+  Vec3 R0(int b) const { return b < 0 ? Vec3::Zero() : Vec3(model.bodies[static_cast<std::size_t>(b)].q0s.head<3>()); }
+
+  // 3D joints (mbs::evaluate_joint_3d): axes are global directions at the tabulated configuration.
+  void joint3(const YAML::Node& j, mbs::Joint& jt, const std::string& what, const std::string& type) {
+    if (type == "spherical" || type == "revolute" || type == "prismatic") {
+      if (type == "spherical")
+        rd.keys(j, what, {"name", "type", "markers"});
+      else
+        rd.keys(j, what, {"name", "type", "markers", "axis"});
+      auto [mi, mj] = marker_pair(j, what);
+      jt.type = type == "spherical"  ? mbs::JointType::Spherical
+                : type == "revolute" ? mbs::JointType::Revolute
+                                     : mbs::JointType::Prismatic;
+      jt.body_i = mk(mi).body, jt.body_j = mk(mj).body;
+      jt.p_i = mk(mi).u3, jt.p_j = mk(mj).u3;
+      if (type != "spherical") {
+        const Vec3 s = rd.unit3(rd.need(j, "axis", what), "axis");
+        Eigen::Index k = 0;
+        s.cwiseAbs().minCoeff(&k);  // the least-aligned global axis
+        const Vec3 h1 = s.cross(Vec3::Unit(k)).normalized(), h2 = s.cross(h1);
+        const mbs::Mat3 Ai = A0(jt.body_i), Aj = A0(jt.body_j);
+        jt.a_i[0] = Ai.transpose() * h1, jt.a_i[1] = Ai.transpose() * h2;
+        jt.a_j[0] = Aj.transpose() * s, jt.a_j[1] = Aj.transpose() * h2;
+      }
+    } else if (type == "fixed") {
+      rd.keys(j, what, {"name", "type", "bodies"});
+      YAML::Node bs = rd.need(j, "bodies", what);
+      if (!bs.IsSequence() || bs.size() != 2) rd.fail(bs, "bodies", "expected a list of two bodies [body_i, body_j]");
+      jt.type = mbs::JointType::Fixed;
+      jt.body_i = body(bs[0], "bodies"), jt.body_j = body(bs[1], "bodies");
+      const mbs::Mat3 Ai = A0(jt.body_i), Aj = A0(jt.body_j);
+      jt.p_i = Ai.transpose() * (R0(jt.body_j) - R0(jt.body_i));  // j's centre in i's frame
+      for (int k = 0; k < 3; ++k) jt.a_i[k] = Ai.transpose().col(k), jt.a_j[k] = Aj.transpose().col(k);
+    } else if (type == "driving") {
+      rd.keys(j, what, {"name", "type", "body", "marker", "coordinate", "motion"});
+      jt.type = mbs::JointType::Driving;
+      std::string c = rd.text(j, "coordinate", what);
+      if (j["marker"].IsDefined() == j["body"].IsDefined())
+        rd.fail(j, what, "give either body (its centre of mass) or marker (a point)");
+      if (j["body"].IsDefined()) {
+        jt.body_j = body(j["body"], "body");
+        if (jt.body_j < 0) rd.fail(j["body"], "body", "ground cannot be driven");
+      } else {
+        int m = marker(j["marker"], "marker");
+        jt.body_j = mk(m).body, jt.p_j = mk(m).u3;
+        if (jt.body_j < 0) rd.fail(j["marker"], "marker", "a ground marker cannot be driven");
+      }
+      if (c != "x" && c != "y" && c != "z")
+        rd.fail(j["coordinate"], "coordinate", "expected x, y or z (a 3D model drives point coordinates)");
+      jt.component = c == "x" ? 0 : c == "y" ? 1 : 2;
+      jt.value0 = (R0(jt.body_j) + A0(jt.body_j) * jt.p_j)[jt.component];
+      jt.motion = time_function(rd, rd.need(j, "motion", what), "motion");
+    } else {
+      rd.fail(j["type"], "type",
+              fmt::format("unknown joint type '{}'; expected spherical, revolute, prismatic, fixed or driving", type));
+    }
+  }
+
+  // 3D rotational spring/damper on a revolute joint: reference directions at the assembled configuration.
+  mbs::RotationalSpringDamper::Spatial revolute_angle(const mbs::Joint& jt, const Eigen::VectorXd& q) const {
+    auto quat = [&](int b) {
+      if (b < 0) return Eigen::Quaterniond::Identity();
+      const auto p = q.segment<4>(7 * b + 3);
+      return Eigen::Quaterniond(p[0], p[1], p[2], p[3]).normalized();
+    };
+    mbs::RotationalSpringDamper::Spatial sp;
+    sp.s_i = jt.a_i[0].cross(jt.a_i[1]);
+    sp.h_i = jt.a_i[0];
+    const Eigen::Quaterniond qi = quat(jt.body_i), qj = quat(jt.body_j), rel = qi.conjugate() * qj;
+    sp.h_j = (qj.conjugate() * qi) * sp.h_i;  // equal to h_i in space now
+    sp.angle_init = std::remainder(2 * std::atan2(sp.s_i.dot(rel.vec()), rel.w()), 2 * std::numbers::pi);
+    return sp;
+  }
+
   void forces(const YAML::Node& n, const Eigen::VectorXd& q_init) {
-    if (model.options.gravity) model.forces.push_back(std::make_shared<mbs::Gravity>(model.options.g));
+    if (model.options.gravity)
+      model.forces.push_back(model.spatial() ? std::make_shared<mbs::Gravity>(model.options.g3)
+                                             : std::make_shared<mbs::Gravity>(model.options.g));
     if (!n.IsDefined()) return;
     if (!n.IsSequence()) rd.fail(n, "forces", "expected a list of force elements");
     names_unique(n, "force element");
@@ -325,7 +480,10 @@ struct Loader {
           type == "actuator") {
         auto [mi, mj] = marker_pair(f, what);
         int bi = mk(mi).body, bj = mk(mj).body;
-        Vec2 ui = mk(mi).u, uj = mk(mj).u;
+        auto end = [&](int m) { return model.spatial() ? mbs::StrutEnd(mk(m).u3) : mbs::StrutEnd(mk(m).u); };
+        mbs::StrutEnd ui = end(mi), uj = end(mj);
+        if (type == "actuator" && model.spatial())
+          rd.fail(f["type"], "type", "the actuator (piston mass, friction) is planar only; use a network strut in 3D");
         if (bi == bj) rd.fail(f["markers"], "markers", "both terminals are on the same body; a strut needs two bodies");
         double l_init = mbs::Spring("", bi, ui, bj, uj, 0, 0).length(model, x0);
         if (!(l_init > 0))
@@ -369,7 +527,9 @@ struct Loader {
         if (type == "rotational_damper" &&
             (f["k"].IsDefined() || f["angle0"].IsDefined() || f["angle0_deg"].IsDefined()))
           rd.fail(f, what, "a rotational_damper takes only c; use rotational_spring_damper for both");
-        double a_init = q_of(q_init, jt.body_j).z() - q_of(q_init, jt.body_i).z();
+        mbs::RotationalSpringDamper::Spatial sp;
+        if (model.spatial()) sp = revolute_angle(jt, q_init);
+        double a_init = model.spatial() ? sp.angle_init : q_of(q_init, jt.body_j).z() - q_of(q_init, jt.body_i).z();
         double a0 = a_init;
         if (f["angle0"].IsDefined() && f["angle0"].IsScalar() && f["angle0"].Scalar() == "initial") {
           if (f["angle0_deg"].IsDefined())
@@ -377,21 +537,41 @@ struct Loader {
         } else {
           a0 = rd.angle(f, "angle0", a_init);
         }
-        model.forces.push_back(std::make_shared<mbs::RotationalSpringDamper>(name, jt.body_i, jt.body_j, k, a0, c));
+        if (model.spatial())
+          model.forces.push_back(
+              std::make_shared<mbs::RotationalSpringDamper>(name, jt.body_i, jt.body_j, k, a0, c, sp));
+        else
+          model.forces.push_back(std::make_shared<mbs::RotationalSpringDamper>(name, jt.body_i, jt.body_j, k, a0, c));
       } else if (type == "point_force") {
         rd.keys(f, what, {"name", "type", "marker", "direction", "value"});
         int m = marker(rd.need(f, "marker", what), "marker");
         if (mk(m).body < 0)
           rd.fail(f["marker"], "marker", "a force on a ground marker does nothing; expected a body's marker");
+        if (model.spatial()) {
+          Vec3 d = rd.unit3(rd.need(f, "direction", what), "direction");
+          model.forces.push_back(std::make_shared<mbs::PointForce>(
+              name, mk(m).body, mk(m).u3, d, time_function(rd, rd.need(f, "value", what), "value"), std::true_type{}));
+          continue;
+        }
         Vec2 d = rd.vec2(rd.need(f, "direction", what), "direction");
         if (!(d.norm() > 0)) rd.fail(f["direction"], "direction", "must be a non-zero vector");
         model.forces.push_back(std::make_shared<mbs::PointForce>(
             name, mk(m).body, mk(m).u, d, time_function(rd, rd.need(f, "value", what), "value")));
+      } else if (type == "point_torque") {
+        rd.keys(f, what, {"name", "type", "body", "axis", "value"});
+        if (!model.spatial()) rd.fail(f["type"], "type", "point_torque is for 3D models (dimension: 3)");
+        int b = body(rd.need(f, "body", what), "body");
+        if (b < 0) rd.fail(f["body"], "body", "a torque on ground does nothing; expected a body");
+        model.forces.push_back(
+            std::make_shared<mbs::PointTorque>(name, b, rd.unit3(rd.need(f, "axis", what), "axis"),
+                                               time_function(rd, rd.need(f, "value", what), "value")));
       } else {
-        rd.fail(f["type"], "type",
-                fmt::format("unknown force element type '{}'; expected spring, damper, inerter, axial_force, network, "
-                            "actuator, rotational_spring, rotational_damper, rotational_spring_damper or point_force",
-                            type));
+        rd.fail(
+            f["type"], "type",
+            fmt::format(
+                "unknown force element type '{}'; expected spring, damper, inerter, axial_force, network, "
+                "actuator, rotational_spring, rotational_damper, rotational_spring_damper, point_force or point_torque",
+                type));
       }
     }
   }
@@ -399,7 +579,7 @@ struct Loader {
   // A network strut or an actuator (spec/03): the network by layout name or expression, values in
   // `params`; an open network stays as a zero-force strut and a rigid one becomes a distance joint (both noted).
   void strut_network(const YAML::Node& f, const std::string& name, const std::string& what, const std::string& type,
-                     int bi, Vec2 ui, int bj, Vec2 uj, double l_ref) {
+                     int bi, mbs::StrutEnd ui, int bj, mbs::StrutEnd uj, double l_ref) {
     const bool act = type == "actuator";
     if (act)
       rd.keys(f, what,
@@ -453,7 +633,8 @@ struct Loader {
       mbs::Joint jt;
       jt.name = name;
       jt.type = mbs::JointType::Distance;
-      jt.body_i = bi, jt.body_j = bj, jt.u_i = ui, jt.u_j = uj, jt.length0 = l_ref;
+      jt.body_i = bi, jt.body_j = bj, jt.u_i = ui.u.head<2>(), jt.u_j = uj.u.head<2>(), jt.length0 = l_ref;
+      jt.p_i = ui.u, jt.p_j = uj.u;
       model.joints.push_back(jt);
       model.notes.push_back(
           fmt::format("{}: network '{}' is rigid with these values; it is a distance joint '{}'", what, text, name));
@@ -468,7 +649,8 @@ struct Loader {
     int offset = 0;
     for (const auto& e : model.forces) offset += e->n_states();
     if (act) {
-      model.forces.push_back(std::make_shared<mbs::Actuator>(name, bi, ui, bj, uj, net, l_ref, offset, ap, corr));
+      model.forces.push_back(
+          std::make_shared<mbs::Actuator>(name, bi, ui.u.head<2>(), bj, uj.u.head<2>(), net, l_ref, offset, ap, corr));
     } else {
       model.forces.push_back(std::make_shared<mbs::NetworkStrut>(name, bi, ui, bj, uj, net, l_ref, offset, corr));
     }
@@ -514,14 +696,15 @@ struct Loader {
         out.kind = mbs::Output::Kind::Coordinate;
         out.index = body(rd.need(o, "body", what), "body");
         if (out.index < 0) rd.fail(o["body"], "body", "ground has no coordinates");
-        out.component = component(o, what, {"x", "y", "theta"});
+        out.component = model.spatial() ? component(o, what, {"x", "y", "z", "e0", "e1", "e2", "e3"})
+                                        : component(o, what, {"x", "y", "theta"});
       } else if (type == "position" || type == "velocity" || type == "acceleration") {
         rd.keys(o, what, {"name", "type", "marker", "component", "scale"});
         out.kind = type == "position"   ? mbs::Output::Kind::Position
                    : type == "velocity" ? mbs::Output::Kind::Velocity
                                         : mbs::Output::Kind::Acceleration;
         out.index = marker(rd.need(o, "marker", what), "marker");
-        out.component = component(o, what, {"x", "y"});
+        out.component = model.spatial() ? component(o, what, {"x", "y", "z"}) : component(o, what, {"x", "y"});
       } else if (type == "force" || type == "length") {
         rd.keys(o, what, {"name", "type", "element", "scale"});
         out.kind = type == "force" ? mbs::Output::Kind::ElementForce : mbs::Output::Kind::ElementLength;
@@ -533,7 +716,8 @@ struct Loader {
         if (out.index < 0) rd.fail(o["joint"], "joint", fmt::format("unknown joint '{}'", jn));
         if (type == "reaction") {
           out.kind = mbs::Output::Kind::Reaction;
-          out.component = component(o, what, {"x", "y", "moment"});
+          out.component =
+              model.spatial() ? component(o, what, {"x", "y", "z"}) : component(o, what, {"x", "y", "moment"});
         } else {
           out.kind = mbs::Output::Kind::Multiplier;
           double c = rd.number(o, "component", what);
@@ -564,7 +748,11 @@ struct Loader {
       int k = -1;
       for (int i = 0; i < model.n_coords(); ++i)
         if (model.coord_name(i) == s) k = i;
-      if (k < 0) rd.fail(c, "hold", fmt::format("unknown coordinate '{}'; expected body.x, body.y or body.theta", s));
+      if (k < 0)
+        rd.fail(c, "hold",
+                fmt::format(
+                    "unknown coordinate '{}'; expected {}", s,
+                    model.spatial() ? "body.x, body.y, body.z or body.e0 … body.e3" : "body.x, body.y or body.theta"));
       model.held.push_back(k);
     }
   }
@@ -659,9 +847,15 @@ mbs::Model parse_model(const std::string& text, const std::string& source, const
   const Reader& rd = ld.rd;
   try {
     if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
-    rd.keys(root, "the model",
-            {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly", "pantograph"});
+    rd.keys(
+        root, "the model",
+        {"name", "options", "ground", "bodies", "joints", "forces", "outputs", "assembly", "pantograph", "dimension"});
     ld.model.source = source;
+    if (YAML::Node d = root["dimension"]; d.IsDefined()) {
+      double dim = rd.number(d, "dimension");
+      if (dim != 2 && dim != 3) rd.fail(d, "dimension", "expected 2 (planar) or 3 (spatial)");
+      ld.model.dimension = static_cast<int>(dim);
+    }
     ld.model.name = root["name"].IsDefined() ? rd.text(root["name"], "name") : source;
     ld.options(root["options"]);
     if (YAML::Node g = root["ground"]; g.IsDefined()) {
@@ -681,6 +875,7 @@ mbs::Model parse_model(const std::string& text, const std::string& source, const
     }
     ld.outputs(root["outputs"]);
     if (YAML::Node p = root["pantograph"]; p.IsDefined()) {
+      if (ld.model.spatial()) rd.fail(p, "pantograph", "the pantograph-catenary analyses are planar (dimension: 2)");
       rd.keys(p, "pantograph", {"contact", "rig_joint"});
       ld.model.contact_marker = rd.text(rd.need(p, "contact", "pantograph"), "contact");
       ld.marker(p["contact"], "contact");

@@ -6,23 +6,38 @@
 namespace inerta::mbs {
 
 void Gravity::add(const Model& model, double, const State&, Workspace& ws) const {
-  for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    if (model.bodies[b].weighs) ws.Q.segment<2>(3 * static_cast<int>(b)) += model.bodies[b].mass * g_;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (!model.bodies[b].weighs) continue;
+    if (spatial_)
+      ws.Q.segment<3>(7 * static_cast<int>(b)) += model.bodies[b].mass * g3_;
+    else
+      ws.Q.segment<2>(3 * static_cast<int>(b)) += model.bodies[b].mass * g_;
+  }
 }
 double Gravity::energy(const Model& model, double, const State& x) const {
   double V = 0;
-  for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    if (model.bodies[b].weighs) V -= model.bodies[b].mass * g_.dot(x.q.segment<2>(3 * static_cast<int>(b)));
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    if (!model.bodies[b].weighs) continue;
+    if (spatial_)
+      V -= model.bodies[b].mass * g3_.dot(x.q.segment<3>(7 * static_cast<int>(b)));
+    else
+      V -= model.bodies[b].mass * g_.dot(x.q.segment<2>(3 * static_cast<int>(b)));
+  }
   return V;
 }
 double Gravity::force(const Model& model, double, const State&, const Workspace&) const {
   double m = 0;
   for (const Body& b : model.bodies) m += b.weighs ? b.mass : 0.0;
-  return m * g_.norm();
+  return m * g3_.norm();
 }
 
 void PointForce::add(const Model&, double t, const State&, Workspace& ws) const {
   if (body_ < 0) return;
+  if (spatial_) {
+    const SpatialVector p = spatial_vector(ws.sframe(body_), u3_, true);
+    ws.Q.segment<7>(7 * body_) += p.Gt(f_.value(t) * d3_);
+    return;
+  }
   PointKinematics p = point_kinematics(ws.frame(body_), u_);
   Vec2 F = f_.value(t) * d_;
   ws.Q.segment<2>(3 * body_) += F;
@@ -30,25 +45,50 @@ void PointForce::add(const Model&, double t, const State&, Workspace& ws) const 
 }
 double PointForce::power(const Model&, double t, const State& x) const {
   if (body_ < 0) return 0.0;
+  if (spatial_) return f_.value(t) * d3_.dot(spatial_vector(x.sframe(body_), u3_, true).vd);
   return f_.value(t) * d_.dot(point_kinematics(x.q_of(body_), x.qd_of(body_), u_).v);
 }
 
+void PointTorque::add(const Model&, double t, const State&, Workspace& ws) const {
+  if (body_ >= 0) ws.Q.segment<4>(7 * body_ + 3) += 2 * ws.sframe(body_).E.transpose() * (f_.value(t) * n_);
+}
+double PointTorque::power(const Model&, double t, const State& x) const {
+  return body_ < 0 ? 0.0 : f_.value(t) * n_.dot(x.sframe(body_).w);
+}
+
+double RotationalSpringDamper::angle(const State& x) const {
+  if (!spatial_) return x.q_of(bj_).z() - x.q_of(bi_).z();
+  const SpatialFrame fi = x.sframe(bi_), fj = x.sframe(bj_);
+  const Vec3 hi = fi.A * sp_.h_i, hj = fj.A * sp_.h_j, s = fi.A * sp_.s_i;
+  return sp_.angle_init + std::atan2(hi.cross(hj).dot(s), hi.dot(hj));
+}
+double RotationalSpringDamper::rate(const State& x) const {
+  if (!spatial_) return x.qd_of(bj_).z() - x.qd_of(bi_).z();
+  const SpatialFrame fi = x.sframe(bi_), fj = x.sframe(bj_);
+  return (fi.A * sp_.s_i).dot(fj.w - fi.w);
+}
 void RotationalSpringDamper::add(const Model&, double, const State& x, Workspace& ws) const {
-  double m = -k_ * (x.q_of(bj_).z() - x.q_of(bi_).z() - a0_) - c_ * (x.qd_of(bj_).z() - x.qd_of(bi_).z());
+  const double m = -k_ * (angle(x) - a0_) - c_ * rate(x);
+  if (spatial_) {
+    const Vec3 T = m * (ws.sframe(bi_).A * sp_.s_i);
+    if (bj_ >= 0) ws.Q.segment<4>(7 * bj_ + 3) += 2 * ws.sframe(bj_).E.transpose() * T;
+    if (bi_ >= 0) ws.Q.segment<4>(7 * bi_ + 3) -= 2 * ws.sframe(bi_).E.transpose() * T;
+    return;
+  }
   if (bj_ >= 0) ws.Q[3 * bj_ + 2] += m;
   if (bi_ >= 0) ws.Q[3 * bi_ + 2] -= m;
 }
 double RotationalSpringDamper::energy(const Model&, double, const State& x) const {
-  double d = x.q_of(bj_).z() - x.q_of(bi_).z() - a0_;
+  double d = angle(x) - a0_;
   return 0.5 * k_ * d * d;
 }
 double RotationalSpringDamper::power(const Model&, double, const State& x) const {
-  double w = x.qd_of(bj_).z() - x.qd_of(bi_).z();
+  double w = rate(x);
   return -c_ * w * w;
 }
 double RotationalSpringDamper::force(const Model&, double, const State& x, const Workspace&) const {
-  return -k_ * (x.q_of(bj_).z() - x.q_of(bi_).z() - a0_) - c_ * (x.qd_of(bj_).z() - x.qd_of(bi_).z());
+  return -k_ * (angle(x) - a0_) - c_ * rate(x);
 }
-double RotationalSpringDamper::length(const Model&, const State& x) const { return x.q_of(bj_).z() - x.q_of(bi_).z(); }
+double RotationalSpringDamper::length(const Model&, const State& x) const { return angle(x); }
 
 }  // namespace inerta::mbs

@@ -15,6 +15,9 @@ namespace {
 std::string row_name(const Model& model, int r) {
   for (const Joint& j : model.joints)
     if (r >= j.row && r < j.row + j.rows()) return fmt::format("joint '{}' (equation {})", j.name, r - j.row + 1);
+  for (std::size_t b = 0; b < model.bodies.size() && model.spatial(); ++b)
+    if (r == model.norm_row(static_cast<int>(b)))
+      return fmt::format("the Euler-parameter normalisation of body '{}'", model.bodies[b].name);
   return "?";
 }
 

@@ -10,8 +10,33 @@ namespace inerta::mbs {
 
 namespace {
 // Stages of `accelerations`; ws.set_state(x) has run.
+void constraint_stage_3d(const Model& model, double t, Workspace& ws) {
+  ConstraintRow3 rows[6];
+  for (const Joint& jt : model.joints) {
+    int nr = evaluate_joint_3d(jt, t, ws.sframe(jt.body_i), ws.sframe(jt.body_j), rows);
+    for (int r = 0; r < nr; ++r) {
+      const int row = jt.row + r;
+      ws.C[row] = rows[r].C;
+      ws.Ct[row] = rows[r].Ct;
+      ws.gamma[row] = rows[r].gamma;
+      if (jt.body_i >= 0) ws.Cq.block<1, 7>(row, 7 * jt.body_i) += rows[r].gi.transpose();
+      if (jt.body_j >= 0) ws.Cq.block<1, 7>(row, 7 * jt.body_j) += rows[r].gj.transpose();
+    }
+  }
+  // Euler-parameter normalisation pᵀp − 1 = 0: C_q = 2pᵀ, γ = −2ṗᵀṗ.
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int row = model.norm_row(static_cast<int>(b));
+    const SpatialFrame& f = ws.sframes[b];
+    ws.C[row] = f.p.squaredNorm() - 1;
+    ws.Ct[row] = 0;
+    ws.gamma[row] = -2 * f.pd.squaredNorm();
+    ws.Cq.block<1, 4>(row, 7 * static_cast<int>(b) + 3) = 2 * f.p.transpose();
+  }
+}
+
 void constraint_stage(const Model& model, double t, Workspace& ws) {
   ws.Cq.setZero();
+  if (model.spatial()) return constraint_stage_3d(model, t, ws);
   ConstraintRow rows[3];
   for (const Joint& jt : model.joints) {
     int nr = evaluate_joint(jt, t, ws.frame(jt.body_i), ws.frame(jt.body_j), rows);
@@ -26,14 +51,37 @@ void constraint_stage(const Model& model, double t, Workspace& ws) {
   }
 }
 
+// Spatial body with Euler parameters: T = ½ m Ṙ² + 2 ṗᵀ Gᵀ J̄ G ṗ, so M_pp = 4 Gᵀ J̄ G and the
+// quadratic-velocity force Q_p = 8 Ġᵀ J̄ Ġ p (Ġ = G(ṗ)). Elimination of the normalisation rows
+// 2pᵀp̈ = c_p (Baumgarte form): every joint row, force and M_pp is orthogonal to p (E p = G p = 0), so
+// the p-direction decouples; M_pp + 2κ p pᵀ with Q_p projected orthogonal to p plus κ p c_p gives
+// exactly the q̈ and joint multipliers of the full system, with a positive definite M and fewer rows.
+double kappa(const Body& b) { return 2.0 * b.inertia3.trace() / 3.0; }
+
+void spatial_masses(const Model& model, Workspace& ws) {
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const int k = 7 * static_cast<int>(b);
+    const Body& body = model.bodies[b];
+    const SpatialFrame& f = ws.sframes[b];
+    ws.M.block<3, 3>(k, k).diagonal().setConstant(body.mass);
+    const Mat34 G = G_matrix(f.p), Gd = G_matrix(f.pd);
+    ws.M.block<4, 4>(k + 3, k + 3) = 4 * G.transpose() * body.inertia3 * G + 2 * kappa(body) * f.p * f.p.transpose();
+    ws.Q.segment<4>(k + 3) += 8 * Gd.transpose() * (body.inertia3 * (Gd * f.p));
+  }
+}
+
 void force_stage(const Model& model, double t, const State& x, Workspace& ws) {
   ws.M.setZero();
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const int k = 3 * static_cast<int>(b);
-    ws.M(k, k) = ws.M(k + 1, k + 1) = model.bodies[b].mass;
-    ws.M(k + 2, k + 2) = model.bodies[b].inertia;
-  }
   ws.Q.setZero();
+  if (model.spatial()) {
+    spatial_masses(model, ws);
+  } else {
+    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+      const int k = 3 * static_cast<int>(b);
+      ws.M(k, k) = ws.M(k + 1, k + 1) = model.bodies[b].mass;
+      ws.M(k + 2, k + 2) = model.bodies[b].inertia;
+    }
+  }
   for (const auto& f : model.forces) f->add(model, t, x, ws);
 }
 }  // namespace
@@ -58,13 +106,13 @@ namespace {
 
 // Full system of eq. 4.12 by LU with partial pivoting (used when M + M_I is not positive definite).
 void solve_kkt(const Model& model, double t, Workspace& ws) {
-  const int n = model.n_coords(), m = model.n_constraints();
+  const int n = model.n_coords(), m = model.n_solved_rows();
   ws.K.topLeftCorner(n, n) = ws.M;
-  ws.K.topRightCorner(n, m) = ws.Cq.transpose();
-  ws.K.bottomLeftCorner(m, n) = ws.Cq;
+  ws.K.topRightCorner(n, m) = ws.Cq.topRows(m).transpose();
+  ws.K.bottomLeftCorner(m, n) = ws.Cq.topRows(m);
   ws.K.bottomRightCorner(m, m).setZero();
   ws.rhs.head(n) = ws.Q;
-  ws.rhs.tail(m) = ws.c;
+  ws.rhs.tail(m) = ws.c.head(m);
   ws.lu.compute(ws.K);
   const auto diag = ws.lu.matrixLU().diagonal().cwiseAbs();
   const double pmax = diag.maxCoeff(), pmin = diag.minCoeff();
@@ -76,7 +124,6 @@ void solve_kkt(const Model& model, double t, Workspace& ws) {
 }  // namespace
 
 void accelerations(const Model& model, double t, const State& x, Workspace& ws) {
-  const int m = model.n_constraints();
   // Stages: kinematics → force elements and inerter mass term → constraint terms → Baumgarte → solve.
   ws.set_state(x);
   force_stage(model, t, x, ws);
@@ -85,6 +132,14 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
   const double a = model.options.alpha, b = model.options.beta;
   ws.c.noalias() = ws.gamma - 2 * a * ws.Ct - b * b * ws.C;
   ws.c.noalias() -= 2 * a * (ws.Cq * x.qd);
+  if (model.spatial())  // the normalisation rows, eliminated (spatial_masses)
+    for (std::size_t k = 0; k < model.bodies.size(); ++k) {
+      const SpatialFrame& f = ws.sframes[k];
+      auto Qp = ws.Q.segment<4>(7 * static_cast<int>(k) + 3);
+      Qp -= f.p * (f.p.dot(Qp) / f.p.squaredNorm());
+      Qp += kappa(model.bodies[k]) * f.p * ws.c[model.norm_row(static_cast<int>(k))];
+    }
+  const int m = model.n_solved_rows();
 
   // Schur complement: (M + M_I) = L Lᵀ, S = C_q (M + M_I)⁻¹ C_qᵀ, S λ = C_q (M + M_I)⁻¹ Q − c,
   // q̈ = (M + M_I)⁻¹ (Q − C_qᵀ λ).
@@ -95,7 +150,7 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
     return;
   }
   // One triangular solve for [Y z] = L⁻¹ [C_qᵀ Q].
-  ws.YZ.leftCols(m) = ws.Cq.transpose();
+  ws.YZ.leftCols(m) = ws.Cq.topRows(m).transpose();
   ws.YZ.col(m) = ws.Q;
   ws.llt_M.matrixL().solveInPlace(ws.YZ);
   const auto Y = ws.YZ.leftCols(m);
@@ -108,7 +163,7 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
     if (!(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
       singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? std::pow(dS.minCoeff() / dS.maxCoeff(), 2) : 0.0);
     ws.lambda.noalias() = Y.transpose() * z;
-    ws.lambda -= ws.c;
+    ws.lambda -= ws.c.head(m);
     ws.llt_S.solveInPlace(ws.lambda);
     z.noalias() -= Y * ws.lambda;
   }
@@ -118,6 +173,13 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
 
 Vec3 joint_reaction(const Model& model, int joint, double t, const State& x, const Eigen::VectorXd& lambda) {
   const Joint& jt = model.joints[static_cast<std::size_t>(joint)];
+  if (model.spatial()) {  // force on body j: −(C_q,R_j)ᵀ λ
+    ConstraintRow3 rows[6];
+    int nr = evaluate_joint_3d(jt, t, x.sframe(jt.body_i), x.sframe(jt.body_j), rows);
+    Vec3 f = Vec3::Zero();
+    for (int r = 0; r < nr; ++r) f -= rows[r].gj.head<3>() * lambda[jt.row + r];
+    return f;
+  }
   ConstraintRow rows[3];
   int nr = evaluate_joint(jt, t, x.frame(jt.body_i), x.frame(jt.body_j), rows);
   Vec3 f = Vec3::Zero();
@@ -127,6 +189,14 @@ Vec3 joint_reaction(const Model& model, int joint, double t, const State& x, con
 
 double kinetic_energy(const Model& model, const State& x) {
   double T = 0;
+  if (model.spatial()) {
+    for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+      const SpatialFrame f = x.sframe(static_cast<int>(b));
+      const Vec3 wb = 2 * G_matrix(f.p) * f.pd;  // body-frame angular velocity
+      T += 0.5 * model.bodies[b].mass * f.Rd.squaredNorm() + 0.5 * wb.dot(model.bodies[b].inertia3 * wb);
+    }
+    return T;
+  }
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     Vec3 v = x.qd_of(static_cast<int>(b));
     T += 0.5 * model.bodies[b].mass * v.head<2>().squaredNorm() + 0.5 * model.bodies[b].inertia * v.z() * v.z();

@@ -27,6 +27,7 @@ int evaluate_joint(const Joint& jt, double t, const BodyFrame& fi, const BodyFra
   for (int k = 0; k < 3; ++k) rows[k] = ConstraintRow{};
   switch (jt.type) {
     case JointType::Revolute:
+    case JointType::Spherical:
     case JointType::Fixed: {
       coincidence(point_kinematics(fi, jt.u_i), point_kinematics(fj, jt.u_j), rows);
       if (jt.type == JointType::Fixed) relative_angle(qi, qj, jt.theta0, rows[2]);

@@ -32,7 +32,9 @@ int Model::find_force(const std::string& name) const {
 
 std::string Model::coord_name(int k) const {
   static const char* names[] = {"x", "y", "theta"};
-  return bodies[static_cast<std::size_t>(k / 3)].name + "." + names[k % 3];
+  static const char* names3[] = {"x", "y", "z", "e0", "e1", "e2", "e3"};
+  const int nc = body_coords();
+  return bodies[static_cast<std::size_t>(k / nc)].name + "." + (spatial() ? names3 : names)[k % nc];
 }
 
 void Model::finalize() {
@@ -44,9 +46,12 @@ void Model::finalize() {
   }
   n_constraints_ = 0;
   for (Joint& j : joints) {
+    j.spatial = spatial();
     j.row = n_constraints_;
     n_constraints_ += j.rows();
   }
+  n_joint_rows_ = n_constraints_;
+  if (spatial()) n_constraints_ += static_cast<int>(bodies.size());
 }
 
 bool Model::remove_joint(const std::string& name) {
@@ -67,19 +72,31 @@ bool Model::remove_joint(const std::string& name) {
 
 Eigen::VectorXd Model::q0() const {
   Eigen::VectorXd q(n_coords());
-  for (std::size_t b = 0; b < bodies.size(); ++b) q.segment<3>(3 * static_cast<int>(b)) = bodies[b].q0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const int k = body_coords() * static_cast<int>(b);
+    if (spatial())
+      q.segment<7>(k) = bodies[b].q0s;
+    else
+      q.segment<3>(k) = bodies[b].q0;
+  }
   return q;
 }
 Eigen::VectorXd Model::qd0() const {
   Eigen::VectorXd qd(n_coords());
-  for (std::size_t b = 0; b < bodies.size(); ++b) qd.segment<3>(3 * static_cast<int>(b)) = bodies[b].qd0;
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const int k = body_coords() * static_cast<int>(b);
+    if (spatial())
+      qd.segment<7>(k) = bodies[b].qd0s;
+    else
+      qd.segment<3>(k) = bodies[b].qd0;
+  }
   return qd;
 }
 
 double ForceElement::length(const Model&, const State&) const { return std::nan(""); }
 
 Workspace::Workspace(const Model& model) {
-  const int n = model.n_coords(), m = model.n_constraints();
+  const int n = model.n_coords(), m = model.n_constraints(), ms = model.n_solved_rows();
   M = Eigen::MatrixXd::Zero(n, n);
   Q = Eigen::VectorXd::Zero(n);
   C = Eigen::VectorXd::Zero(m);
@@ -87,38 +104,58 @@ Workspace::Workspace(const Model& model) {
   Cq = Eigen::MatrixXd::Zero(m, n);
   gamma = Eigen::VectorXd::Zero(m);
   llt_M.compute(Eigen::MatrixXd::Identity(n, n));  // sized, and with a defined info()
-  YZ = Eigen::MatrixXd::Zero(n, m + 1);
-  S = Eigen::MatrixXd::Zero(m, m);
-  llt_S.compute(Eigen::MatrixXd::Identity(m, m));
+  YZ = Eigen::MatrixXd::Zero(n, ms + 1);
+  S = Eigen::MatrixXd::Zero(ms, ms);
+  llt_S.compute(Eigen::MatrixXd::Identity(ms, ms));
   c = Eigen::VectorXd::Zero(m);
-  K = Eigen::MatrixXd::Zero(n + m, n + m);
-  rhs = Eigen::VectorXd::Zero(n + m);
-  sol = Eigen::VectorXd::Zero(n + m);
-  lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + m);
-  frames.resize(model.bodies.size());
+  K = Eigen::MatrixXd::Zero(n + ms, n + ms);
+  rhs = Eigen::VectorXd::Zero(n + ms);
+  sol = Eigen::VectorXd::Zero(n + ms);
+  lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + ms);
+  nc_ = model.body_coords();
+  if (model.spatial())
+    sframes.resize(model.bodies.size());
+  else
+    frames.resize(model.bodies.size());
   qdd = Eigen::VectorXd::Zero(n);
   zd = Eigen::VectorXd::Zero(model.n_states());
-  lambda = Eigen::VectorXd::Zero(m);
+  lambda = Eigen::VectorXd::Zero(ms);
 }
 
 void Workspace::set_state(const State& x) {
   for (std::size_t b = 0; b < frames.size(); ++b) frames[b] = x.frame(static_cast<int>(b));
+  for (std::size_t b = 0; b < sframes.size(); ++b) sframes[b] = x.sframe(static_cast<int>(b));
 }
 
-void Workspace::add_Q(int body_i, int body_j, const Vec6& f) {
-  if (body_i >= 0) Q.segment<3>(3 * body_i) += f.head<3>();
-  if (body_j >= 0) Q.segment<3>(3 * body_j) += f.tail<3>();
+void Workspace::add_Q(int body_i, int body_j, const VecJ& f) {
+  if (nc_ == 3) {
+    if (body_i >= 0) Q.segment<3>(3 * body_i) += f.head<3>();
+    if (body_j >= 0) Q.segment<3>(3 * body_j) += f.segment<3>(3);
+  } else {
+    if (body_i >= 0) Q.segment<7>(7 * body_i) += f.head<7>();
+    if (body_j >= 0) Q.segment<7>(7 * body_j) += f.segment<7>(7);
+  }
 }
 
-void Workspace::add_M(int body_i, int body_j, const Vec6& J, double b) {
+void Workspace::add_M(int body_i, int body_j, const VecJ& J, double b) {
   const int body[2] = {body_i, body_j};
   for (int a = 0; a < 2; ++a) {
     if (body[a] < 0) continue;
     for (int c = 0; c < 2; ++c) {
       if (body[c] < 0) continue;
-      M.block<3, 3>(3 * body[a], 3 * body[c]) += b * J.segment<3>(3 * a) * J.segment<3>(3 * c).transpose();
+      if (nc_ == 3)
+        M.block<3, 3>(3 * body[a], 3 * body[c]) += b * J.segment<3>(3 * a) * J.segment<3>(3 * c).transpose();
+      else
+        M.block<7, 7>(7 * body[a], 7 * body[c]) += b * J.segment<7>(7 * a) * J.segment<7>(7 * c).transpose();
     }
   }
+}
+
+double Workspace::J_dot_qdd(int body_i, int body_j, const VecJ& J) const {
+  double v = 0;
+  if (body_i >= 0) v += J.head(nc_).dot(qdd.segment(nc_ * body_i, nc_));
+  if (body_j >= 0) v += J.tail(nc_).dot(qdd.segment(nc_ * body_j, nc_));
+  return v;
 }
 
 }  // namespace inerta::mbs

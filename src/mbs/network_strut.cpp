@@ -7,9 +7,12 @@
 
 namespace inerta::mbs {
 
-NetworkStrut::NetworkStrut(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net,
+NetworkStrut::NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net,
                            double l_ref, int state_offset, bool centripetal)
-    : Strut(std::move(name), bi, ui, bj, uj), net_(net), r_(network::realise(net)), l_ref_(l_ref),
+    : Strut(std::move(name), bi, ui, bj, uj),
+      net_(net),
+      r_(network::realise(net)),
+      l_ref_(l_ref),
       centripetal_(centripetal) {
   state_offset_ = state_offset;
 }
@@ -53,10 +56,7 @@ double NetworkStrut::power(const Model& model, double, const State& x) const {
 
 double NetworkStrut::force(const Model& model, double, const State& x, const Workspace& ws) const {
   StrutKinematics s = kinematics(ws);
-  Vec6 qdd = Vec6::Zero();
-  if (body_i() >= 0) qdd.head<3>() = ws.qdd.segment<3>(3 * body_i());
-  if (body_j() >= 0) qdd.tail<3>() = ws.qdd.segment<3>(3 * body_j());
-  double l_ddot = s.J.dot(qdd) + s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0);
+  double l_ddot = ws.J_dot_qdd(body_i(), body_j(), s.J) + s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0);
   return network_tension(s, x) + r_.d2 * l_ddot;
 }
 
@@ -68,7 +68,9 @@ void NetworkStrut::relax(const Model&, State& x) const {
 // Actuator -------------------------------------------------------------------------------------
 Actuator::Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
                    int state_offset, Params p, bool centripetal)
-    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, state_offset, centripetal), p_(p), rod_body_(bj),
+    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, state_offset, centripetal),
+      p_(p),
+      rod_body_(bj),
       rod_u_(uj) {}
 
 void Actuator::add(const Model& model, double t, const State& x, Workspace& ws) const {

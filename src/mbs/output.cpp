@@ -14,12 +14,22 @@ double evaluate_output(const Output& out, const Model& model, double t, const St
   double value = 0;
   switch (out.kind) {
     case Output::Kind::Coordinate:
-      value = x.q[3 * out.index + out.component];
+      value = x.q[model.body_coords() * out.index + out.component];
       break;
     case Output::Kind::Position:
     case Output::Kind::Velocity:
     case Output::Kind::Acceleration: {
       const Marker& mk = model.markers[static_cast<std::size_t>(out.index)];
+      if (model.spatial()) {  // r, ṙ, r̈ = G q̈ + bias (spatial.hpp)
+        const SpatialVector p = spatial_vector(ws.sframe(mk.body), mk.u3, true);
+        if (out.kind == Output::Kind::Position)
+          value = p.v[out.component];
+        else if (out.kind == Output::Kind::Velocity)
+          value = p.vd[out.component];
+        else if (mk.body >= 0)
+          value = p.G_mul(ws.qdd.segment<7>(7 * mk.body))[out.component] + p.bias[out.component];
+        break;
+      }
       PointKinematics p = point_kinematics(ws.frame(mk.body), mk.u);
       if (out.kind == Output::Kind::Position)
         value = p.r[out.component];

@@ -6,10 +6,12 @@
 namespace inerta::mbs {
 
 StrutKinematics Strut::kinematics(const State& x) const {
-  return strut_kinematics(x.frame(body_i_), u_i_, x.frame(body_j_), u_j_);
+  if (spatial_) return strut_kinematics(x.sframe(body_i_), u_i_, x.sframe(body_j_), u_j_);
+  return strut_kinematics(x.frame(body_i_), u_i(), x.frame(body_j_), u_j());
 }
 StrutKinematics Strut::kinematics(const Workspace& ws) const {
-  return strut_kinematics(ws.frame(body_i_), u_i_, ws.frame(body_j_), u_j_);
+  if (spatial_) return strut_kinematics(ws.sframe(body_i_), u_i_, ws.sframe(body_j_), u_j_);
+  return strut_kinematics(ws.frame(body_i_), u_i(), ws.frame(body_j_), u_j());
 }
 
 double Strut::length(const Model&, const State& x) const { return kinematics(x).l; }
@@ -63,10 +65,8 @@ double Inerter::power(const Model& model, double, const State& x) const {
 }
 double Inerter::force(const Model& model, double, const State&, const Workspace& ws) const {
   StrutKinematics s = kinematics(ws);
-  Vec6 qdd_ij = Vec6::Zero();
-  if (body_i() >= 0) qdd_ij.head<3>() = ws.qdd.segment<3>(3 * body_i());
-  if (body_j() >= 0) qdd_ij.tail<3>() = ws.qdd.segment<3>(3 * body_j());
-  return b_ * (s.J.dot(qdd_ij) + s.a_n_axial + (centripetal(model) ? s.centripetal : 0.0));  // eq. 3.20
+  return b_ * (ws.J_dot_qdd(body_i(), body_j(), s.J) + s.a_n_axial +
+               (centripetal(model) ? s.centripetal : 0.0));  // eq. 3.20
 }
 
 // Constant axial force -------------------------------------------------------------------------

@@ -22,7 +22,8 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 using namespace inerta;
 
 TEST(Allocation, RightHandSideAllocatesNothing) {
-  for (const char* file : {"/models/twobar.yaml", "/models/onedof.yaml"}) {
+  for (const char* file : {"/models/twobar.yaml", "/models/onedof.yaml", "/models/twobar3d.yaml",
+                           "/models/spherical_inerter.yaml"}) {
     mbs::Model model = io::load_model(std::string(INERTA_SOURCE_DIR) + file);
     mbs::State x = mbs::assemble(model, 0.0);
     x.qd.setConstant(0.2);

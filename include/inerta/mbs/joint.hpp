@@ -3,6 +3,7 @@
 #include <string>
 
 #include "inerta/mbs/kinematics.hpp"
+#include "inerta/mbs/spatial.hpp"
 #include "inerta/mbs/time_function.hpp"
 
 namespace inerta::mbs {
@@ -10,7 +11,8 @@ namespace inerta::mbs {
 constexpr int kGround = -1;
 
 enum class JointType {
-  Revolute,   ///< r_Pi − r_Pj = 0 (eqs. 6.29–6.36)
+  Revolute,   ///< r_Pi − r_Pj = 0 (eqs. 6.29–6.36); 3D: and the axis of j ⊥ two normals of i
+  Spherical,  ///< 3D: r_Pi − r_Pj = 0
   Prismatic,  ///< θ_j − θ_i − θ0 = 0;  (r_Pj − r_Pi)·(A_i n̄⊥) = 0
   Fixed,      ///< r_Pi − r_Pj = 0 with P = j's centre of mass;  θ_j − θ_i − θ0 = 0 (eq. 6.28)
   Driving,    ///< coordinate(s) of body j or of point P_j = value0 + f(t)
@@ -31,9 +33,27 @@ struct Joint {
   double length0 = 0;  ///< distance joint
   TimeFunction motion;
   int row = 0;  ///< first constraint row (set by Model::finalize)
+  // 3D (spatial = true): points and body-frame unit vectors, see evaluate_joint_3d.
+  bool spatial = false;
+  Vec3 p_i = Vec3::Zero(), p_j = Vec3::Zero();
+  Vec3 a_i[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()}, a_j[3] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 
   int rows() const {
+    if (spatial) {
+      switch (type) {
+        case JointType::Spherical:
+          return 3;
+        case JointType::Revolute:
+        case JointType::Prismatic:
+          return 5;
+        case JointType::Fixed:
+          return 6;
+        default:
+          return 1;
+      }
+    }
     switch (type) {
+      case JointType::Spherical:
       case JointType::Revolute:
         return 2;
       case JointType::Prismatic:
@@ -59,5 +79,21 @@ struct ConstraintRow {
 /// Evaluates the rows of joint `jt` given both bodies' frames (identity for ground).
 /// Returns the number of rows written into `rows` (at most 3).
 int evaluate_joint(const Joint& jt, double t, const BodyFrame& fi, const BodyFrame& fj, ConstraintRow rows[3]);
+
+/// A 3D constraint row: gradients over the 7 coordinates [R; p] of bodies i and j.
+struct ConstraintRow3 {
+  double C = 0, Ct = 0, gamma = 0;
+  Vec7 gi = Vec7::Zero(), gj = Vec7::Zero();
+};
+
+/// 3D joints (at most 6 rows), with a = A ā the body-fixed unit vectors a_i[k], a_j[k] and
+/// d = r_Pj − r_Pi:
+///   spherical  r_Pi − r_Pj = 0
+///   revolute   spherical + a_i0·a_j0 = 0, a_i1·a_j0 = 0        (a_j0 the axis, a_i0, a_i1 ⊥ it)
+///   prismatic  a_i0·a_j0 = a_i1·a_j0 = a_i0·a_j1 = 0, a_i0·d = a_i1·d = 0
+///   fixed      r_Pi − r_Pj = 0, a_i0·a_j1 = a_i1·a_j2 = a_i2·a_j0 = 0   (a = global X, Y, Z at t0)
+///   driving    component c of r_Pj = value0 + f(t);  distance |d| − length0 = 0
+int evaluate_joint_3d(const Joint& jt, double t, const SpatialFrame& fi, const SpatialFrame& fj,
+                      ConstraintRow3 rows[6]);
 
 }  // namespace inerta::mbs

@@ -9,6 +9,8 @@ namespace inerta::mbs {
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
+/// Row over the coordinates of two bodies [q_i; q_j]: 6 in 2D, 14 in 3D (no heap allocation).
+using VecJ = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 14, 1>;
 
 /// A = rotation matrix of θ.
 inline Vec2 rotate(double theta, const Vec2& u) {
@@ -53,9 +55,8 @@ inline PointKinematics point_kinematics(const Vec3& q, const Vec3& qd, const Vec
 ///   l̈ = J q̈_ij + ê·a_n + [ṙ·ṙ − l̇²]/l   (eq. 3.20 divided by b; a_n eq. 3.19).
 /// `l_ddot_bias` is ê·a_n + centripetal; `centripetal` = [ṙ·ṙ − l̇²]/l ≥ 0.
 struct StrutKinematics {
-  Vec2 r, rd, e;
   double l = 0, l_dot = 0;
-  Vec6 J;                  ///< ∂l/∂[q_i; q_j]
+  VecJ J;                  ///< ∂l/∂[q_i; q_j] (6 in 2D, 14 in 3D)
   double a_n_axial = 0;    ///< ê·a_n
   double centripetal = 0;  ///< [ṙ·ṙ − (ṙ·ê)²]/l, the correction of eq. 3.9
 };
@@ -63,14 +64,14 @@ struct StrutKinematics {
 inline StrutKinematics strut_kinematics(const BodyFrame& fi, const Vec2& ui, const BodyFrame& fj, const Vec2& uj) {
   PointKinematics pi = point_kinematics(fi, ui), pj = point_kinematics(fj, uj);
   StrutKinematics s;
-  s.r = pj.r - pi.r;
-  s.rd = pj.v - pi.v;
-  s.l = s.r.norm();
-  s.e = s.r / s.l;
-  s.l_dot = s.rd.dot(s.e);
-  s.J << -s.e, -s.e.dot(pi.Atu), s.e, s.e.dot(pj.Atu);
-  s.a_n_axial = s.e.dot(pj.a_bias - pi.a_bias);
-  s.centripetal = (s.rd.squaredNorm() - s.l_dot * s.l_dot) / s.l;
+  const Vec2 r = pj.r - pi.r, rd = pj.v - pi.v;
+  s.l = r.norm();
+  const Vec2 e = r / s.l;
+  s.l_dot = rd.dot(e);
+  s.J.resize(6);
+  s.J << -e, -e.dot(pi.Atu), e, e.dot(pj.Atu);
+  s.a_n_axial = e.dot(pj.a_bias - pi.a_bias);
+  s.centripetal = (rd.squaredNorm() - s.l_dot * s.l_dot) / s.l;
   return s;
 }
 

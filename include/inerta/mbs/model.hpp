@@ -10,17 +10,22 @@
 #include "inerta/mbs/joint.hpp"
 #include "inerta/mbs/kinematics.hpp"
 #include "inerta/mbs/output.hpp"
+#include "inerta/mbs/spatial.hpp"
 
 namespace inerta::mbs {
 
-/// Rigid body; coordinates q = [x y θ] of the centre of mass (centroidal frame).
+/// Rigid body; coordinates q = [x y θ] (2D) or [x y z e0 e1 e2 e3] (3D, spatial.hpp) of the centre
+/// of mass (centroidal frame).
 struct Body {
   std::string name;
-  double mass = 0;          ///< kg
-  double inertia = 0;       ///< kg·m² about the centre of mass
-  Vec3 q0 = Vec3::Zero();   ///< tabulated initial position [x y θ]
-  Vec3 qd0 = Vec3::Zero();  ///< initial velocity
-  bool weighs = true;       ///< gravity acts on it (not on an equivalent mass such as the lumped catenary's)
+  double mass = 0;                                        ///< kg
+  double inertia = 0;                                     ///< kg·m² about the centre of mass (2D)
+  Vec3 q0 = Vec3::Zero();                                 ///< tabulated initial position [x y θ] (2D)
+  Vec3 qd0 = Vec3::Zero();                                ///< initial velocity (2D)
+  Mat3 inertia3 = Mat3::Zero();                           ///< 3D: centroidal inertia tensor in the body frame, kg·m²
+  Vec7 q0s = (Vec7() << 0, 0, 0, 1, 0, 0, 0).finished();  ///< 3D: tabulated [R; p]
+  Vec7 qd0s = Vec7::Zero();                               ///< 3D: [Ṙ; ṗ]
+  bool weighs = true;  ///< gravity acts on it (not on an equivalent mass such as the lumped catenary's)
 };
 
 /// Body-fixed point. body = kGround means a fixed point with u in global coordinates.
@@ -28,12 +33,14 @@ struct Marker {
   std::string name;  ///< "body.point"
   int body = kGround;
   Vec2 u = Vec2::Zero();
+  Vec3 u3 = Vec3::Zero();  ///< 3D: local coordinates (u = its x, y)
 };
 
 struct Options {
   bool gravity = true;
-  Vec2 g = Vec2(0.0, -9.81);  ///< m/s², spec README
-  double alpha = 5.0;         ///< Baumgarte, eq. 4.11
+  Vec2 g = Vec2(0.0, -9.81);        ///< m/s², spec README
+  Vec3 g3 = Vec3(0.0, -9.81, 0.0);  ///< 3D
+  double alpha = 5.0;               ///< Baumgarte, eq. 4.11
   double beta = 5.0;
   bool centripetal = true;  ///< model-wide switch of the inerter correction (eq. 3.9)
   double t_end = 10.0;      ///< default simulation end time, s
@@ -49,12 +56,15 @@ struct Model {
   std::vector<Joint> joints;
   std::vector<std::shared_ptr<const ForceElement>> forces;
   std::vector<Output> outputs;
-  std::vector<int> held;  ///< coordinates held fixed during assembly
-  std::string contact_marker;  ///< pantograph: the head's contact point with the wire ("" if none)
-  std::string rig_joint;       ///< pantograph: the joint that holds the head when no catenary is attached
+  std::vector<int> held;           ///< coordinates held fixed during assembly
+  std::string contact_marker;      ///< pantograph: the head's contact point with the wire ("" if none)
+  std::string rig_joint;           ///< pantograph: the joint that holds the head when no catenary is attached
   std::vector<std::string> notes;  ///< things the loader decided that a user should read (printed by the CLI)
 
-  int n_coords() const { return 3 * static_cast<int>(bodies.size()); }
+  int dimension = 2;  ///< 2 (planar) or 3 (spatial)
+  bool spatial() const { return dimension == 3; }
+  int body_coords() const { return spatial() ? 7 : 3; }
+  int n_coords() const { return body_coords() * static_cast<int>(bodies.size()); }
   int n_constraints() const { return n_constraints_; }
   int dof() const { return n_coords() - n_constraints_; }
   int n_states() const { return n_states_; }  ///< internal states of force elements
@@ -63,7 +73,12 @@ struct Model {
   int find_marker(const std::string& name) const;  ///< -1 if unknown
   int find_joint(const std::string& name) const;
   int find_force(const std::string& name) const;
-  std::string coord_name(int k) const;  ///< "bar1.theta"
+  std::string coord_name(int k) const;  ///< "bar1.theta" (2D), "bar1.e2" (3D)
+  /// 3D: the row of body b's normalisation constraint pᵀp − 1 = 0 (after the joints' rows).
+  int norm_row(int b) const { return n_joint_rows_ + b; }
+  /// Rows of eq. 4.12 as solved by `accelerations`: all in 2D, the joints' in 3D (the normalisation
+  /// rows are eliminated there, dynamics.cpp).
+  int n_solved_rows() const { return n_joint_rows_; }
 
   /// Assigns constraint rows and counts internal states; call after joints and forces are final.
   void finalize();
@@ -78,6 +93,7 @@ struct Model {
 
  private:
   int n_constraints_ = 0;
+  int n_joint_rows_ = 0;
   int n_states_ = 0;
 };
 

@@ -14,7 +14,7 @@ namespace inerta::mbs {
 class NetworkStrut : public Strut {
  public:
   /// `net` must be simplified and neither open nor rigid; z occupies State::z[state_offset ...].
-  NetworkStrut(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
+  NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net, double l_ref,
                int state_offset, bool centripetal = true);
   const network::Network& network() const { return net_; }
   const network::Realisation& realisation() const { return r_; }
@@ -48,9 +48,9 @@ class NetworkStrut : public Strut {
 class Actuator : public NetworkStrut {
  public:
   struct Params {
-    double constant_force = 0;    ///< F_c, N (tension positive)
-    double piston_mass = 0;       ///< m_p, kg
-    double friction = 0;          ///< F_r, N (≥ 0)
+    double constant_force = 0;        ///< F_c, N (tension positive)
+    double piston_mass = 0;           ///< m_p, kg
+    double friction = 0;              ///< F_r, N (≥ 0)
     double friction_velocity = 1e-3;  ///< v_r, m/s
   };
   Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
@@ -59,7 +59,7 @@ class Actuator : public NetworkStrut {
 
   void add(const Model& model, double t, const State& x, Workspace& ws) const override;
   double energy(const Model& model, double t, const State& x) const override;  // + F_c l, + piston ½ m v², − m_p g·r
-  double power(const Model& model, double t, const State& x) const override;   // + friction
+  double power(const Model& model, double t, const State& x) const override;  // + friction
   double force(const Model& model, double t, const State& x, const Workspace& ws) const override;
 
  private:

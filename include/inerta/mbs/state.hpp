@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "inerta/mbs/kinematics.hpp"
+#include "inerta/mbs/spatial.hpp"
 
 namespace inerta::mbs {
 
@@ -16,6 +17,10 @@ struct State {
   Vec3 q_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(q.segment<3>(3 * body)); }
   Vec3 qd_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(qd.segment<3>(3 * body)); }
   BodyFrame frame(int body) const { return body < 0 ? BodyFrame{} : BodyFrame::of(q_of(body), qd_of(body)); }
+  /// 3D: the frame of body `body` (coordinates [R; p], 7 per body).
+  SpatialFrame sframe(int body) const {
+    return body < 0 ? SpatialFrame{} : SpatialFrame::of(q.segment<7>(7 * body), qd.segment<7>(7 * body));
+  }
 };
 
 /// Scratch space of `accelerations` (eq. 4.12): sized for one model, reused for every call.
@@ -25,7 +30,9 @@ struct Workspace {
   /// Kinematics stage: every body's frame (coordinates, cos θ, sin θ) at x.
   void set_state(const State& x);
   const BodyFrame& frame(int body) const { return body < 0 ? ground_ : frames[static_cast<std::size_t>(body)]; }
-  std::vector<BodyFrame> frames;
+  const SpatialFrame& sframe(int body) const { return body < 0 ? sground_ : sframes[static_cast<std::size_t>(body)]; }
+  std::vector<BodyFrame> frames;      ///< 2D
+  std::vector<SpatialFrame> sframes;  ///< 3D
 
   Eigen::MatrixXd M;      ///< M + M_I (eq. 3.33), n×n
   Eigen::VectorXd Q;      ///< Q_e + Q_Iv, n
@@ -46,13 +53,18 @@ struct Workspace {
   Eigen::VectorXd zd;      ///< result: derivatives of the internal states (written by their elements)
   Eigen::VectorXd lambda;  ///< result: Lagrange multipliers
 
-  /// Adds f·J to Q for a 6-vector over [q_i; q_j] (ground parts skipped).
-  void add_Q(int body_i, int body_j, const Vec6& f);
+  /// Adds f to Q for a vector over [q_i; q_j] (6 in 2D, 14 in 3D; ground parts skipped).
+  void add_Q(int body_i, int body_j, const VecJ& f);
   /// Adds b·J Jᵀ to M (rank-one inerter mass term, eq. 3.33).
-  void add_M(int body_i, int body_j, const Vec6& J, double b);
+  void add_M(int body_i, int body_j, const VecJ& J, double b);
+  /// J · q̈_ij with q̈ = this->qdd.
+  double J_dot_qdd(int body_i, int body_j, const VecJ& J) const;
+  int body_coords() const { return nc_; }
 
  private:
   BodyFrame ground_;
+  SpatialFrame sground_;
+  int nc_ = 3;
 };
 
 }  // namespace inerta::mbs

@@ -6,18 +6,37 @@
 
 namespace inerta::mbs {
 
-/// Common geometry of a strut from marker P_i (body i) to P_j (body j).
+/// A strut terminal's local coordinates: a 2-vector for a planar model, a 3-vector for a spatial one.
+struct StrutEnd {
+  Vec3 u;
+  bool spatial;
+  template <class D>
+  StrutEnd(const Eigen::MatrixBase<D>& v)  // NOLINT: implicit on purpose
+      : u(D::RowsAtCompileTime == 3 ? Vec3(v.eval().template head<3>()) : Vec3(v[0], v[1], 0.0)),
+        spatial(D::RowsAtCompileTime == 3) {
+    static_assert(D::RowsAtCompileTime == 2 || D::RowsAtCompileTime == 3, "a terminal is a 2- or 3-vector");
+  }
+};
+
+/// Common geometry of a strut from marker P_i (body i) to P_j (body j), in 2D or 3D (spatial.hpp):
+/// the strut elements below are the same code in both.
 class Strut : public ForceElement {
  public:
-  Strut(std::string name, int body_i, Vec2 u_i, int body_j, Vec2 u_j)
-      : ForceElement(std::move(name)), body_i_(body_i), body_j_(body_j), u_i_(u_i), u_j_(u_j) {}
+  Strut(std::string name, int body_i, StrutEnd u_i, int body_j, StrutEnd u_j)
+      : ForceElement(std::move(name)),
+        body_i_(body_i),
+        body_j_(body_j),
+        u_i_(u_i.u),
+        u_j_(u_j.u),
+        spatial_(u_i.spatial) {}
   StrutKinematics kinematics(const State& x) const;
   StrutKinematics kinematics(const Workspace& ws) const;  ///< from the frames of ws.set_state
   double length(const Model&, const State& x) const override;
   int body_i() const { return body_i_; }
   int body_j() const { return body_j_; }
-  const Vec2& u_i() const { return u_i_; }
-  const Vec2& u_j() const { return u_j_; }
+  Vec2 u_i() const { return u_i_.head<2>(); }
+  Vec2 u_j() const { return u_j_.head<2>(); }
+  bool spatial() const { return spatial_; }
 
  protected:
   /// Q += −F Jᵀ.
@@ -25,13 +44,14 @@ class Strut : public ForceElement {
 
  private:
   int body_i_, body_j_;
-  Vec2 u_i_, u_j_;
+  Vec3 u_i_, u_j_;
+  bool spatial_;
 };
 
 /// Spring, eqs. 3.1/3.5: F = k (l − L0).
 class Spring : public Strut {
  public:
-  Spring(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double k, double free_length)
+  Spring(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, double k, double free_length)
       : Strut(std::move(name), bi, ui, bj, uj), k_(k), L0_(free_length) {}
   void add(const Model&, double t, const State& x, Workspace& ws) const override;
   double energy(const Model&, double t, const State& x) const override;  // ½ k (l − L0)²
@@ -45,7 +65,7 @@ class Spring : public Strut {
 /// Damper, eqs. 3.2/3.6–3.7: F = c l̇.
 class Damper : public Strut {
  public:
-  Damper(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double c)
+  Damper(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, double c)
       : Strut(std::move(name), bi, ui, bj, uj), c_(c) {}
   void add(const Model&, double t, const State& x, Workspace& ws) const override;
   double power(const Model&, double t, const State& x) const override;  // −c l̇²
@@ -60,7 +80,7 @@ class Damper : public Strut {
 /// Without the centripetal correction (eq. 3.8, the 1D textbook form) F = b (r̈·ê).
 class Inerter : public Strut {
  public:
-  Inerter(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double b, bool centripetal = true)
+  Inerter(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, double b, bool centripetal = true)
       : Strut(std::move(name), bi, ui, bj, uj), b_(b), centripetal_(centripetal) {}
   /// Correction active: this element's switch and the model-wide switch.
   bool centripetal(const Model& model) const;
@@ -79,7 +99,7 @@ class Inerter : public Strut {
 /// so a pushing actuator has force < 0. Potential F·l.
 class AxialForce : public Strut {
  public:
-  AxialForce(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, double F)
+  AxialForce(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, double F)
       : Strut(std::move(name), bi, ui, bj, uj), F_(F) {}
   void add(const Model&, double t, const State& x, Workspace& ws) const override;
   double energy(const Model&, double t, const State& x) const override;
