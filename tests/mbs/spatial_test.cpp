@@ -9,6 +9,7 @@
 
 #include "inerta/error.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/mbs/linearisation.hpp"
 #include "inerta/mbs/struts.hpp"
 #include "support/run.hpp"
 
@@ -333,4 +334,19 @@ TEST(Spatial, ModelFileErrors) {
                        "type: actuator, markers: [a.cm, b.cm]}\n")
                 .find("planar only"),
             std::string::npos);
+}
+
+TEST(Spatial, LinearisedTwoBar3DHasThePlanarModes) {
+  // Linearisation works on the spatial coordinates (null space of C_q incl. the normalisation rows):
+  // the 3D two-bar's modes are the 2D two-bar's.
+  const Model m2 = io::load_model(inerta::testing::model_path("twobar.yaml"));
+  const Model m3 = io::load_model(inerta::testing::model_path("twobar3d.yaml"));
+  const auto modes2 = modes(m2, linearise(m2, assemble(m2, 0.0)));
+  const auto modes3 = modes(m3, linearise(m3, assemble(m3, 0.0)));
+  ASSERT_EQ(modes2.size(), modes3.size());
+  ASSERT_GE(modes2.size(), 3u);
+  for (std::size_t k = 0; k < modes2.size(); ++k) {
+    EXPECT_NEAR(modes3[k].frequency_hz, modes2[k].frequency_hz, 1e-6 * modes2[k].frequency_hz);
+    EXPECT_NEAR(modes3[k].damping_ratio, modes2[k].damping_ratio, 1e-6);
+  }
 }
