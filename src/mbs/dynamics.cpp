@@ -66,6 +66,7 @@ void spatial_masses(const Model& model, Workspace& ws) {
     ws.M.block<3, 3>(k, k).diagonal().setConstant(body.mass);
     const Mat34 G = G_matrix(f.p), Gd = G_matrix(f.pd);
     ws.M.block<4, 4>(k + 3, k + 3) = 4 * G.transpose() * body.inertia3 * G + 2 * kappa(body) * f.p * f.p.transpose();
+    ws.llt_p[b].compute(ws.M.block<4, 4>(k + 3, k + 3));
     ws.Q.segment<4>(k + 3) += 8 * Gd.transpose() * (body.inertia3 * (Gd * f.p));
   }
 }
@@ -73,6 +74,7 @@ void spatial_masses(const Model& model, Workspace& ws) {
 void force_stage(const Model& model, double t, const State& x, Workspace& ws) {
   ws.M.setZero();
   ws.Q.setZero();
+  ws.rank1.clear();
   if (model.spatial()) {
     spatial_masses(model, ws);
   } else {
@@ -123,6 +125,91 @@ void solve_kkt(const Model& model, double t, Workspace& ws) {
 }
 }  // namespace
 
+namespace {
+// 3D: M + M_I = D + Σ b_k J_kᵀ J_k with D block-diagonal (m I and M_pp per body). The inerter terms
+// become Schur rows of their own, μ_k = b_k J_k q̈ (eq. 3.33 read backwards):
+//   [C_q; J] D⁻¹ [C_q; J]ᵀ [λ; μ] + diag(0, 1/b) [λ; μ] = [C_q; J] D⁻¹ Q − [c; 0],
+//   q̈ = D⁻¹ (Q − C_qᵀ λ − Jᵀ μ),
+// the same q̈ and λ as the dense solve without factorising the n×n matrix. D = L Lᵀ block by block,
+// so the Schur matrix is YᵀY (+ the diagonal) with Y = L⁻¹ [C_qᵀ Jᵀ]. False: use the dense solve.
+bool solve_spatial(const Model& model, double t, Workspace& ws) {
+  const int nb = static_cast<int>(model.bodies.size()), m = model.n_solved_rows();
+  const int r = static_cast<int>(ws.rank1.size()), k = m + r;
+  for (int b = 0; b < nb; ++b) {
+    if (!(model.bodies[static_cast<std::size_t>(b)].mass > 0)) return false;
+    const auto d = ws.llt_p[static_cast<std::size_t>(b)].matrixLLT().diagonal();
+    if (ws.llt_p[static_cast<std::size_t>(b)].info() != Eigen::Success || !(d.minCoeff() > 1e-7 * d.maxCoeff()))
+      return false;
+  }
+  // Each row of [C_q; J] touches at most two bodies: Y is built, and every product below runs, over
+  // those 7-blocks only (the other blocks of Y are never read).
+  for (int i = 0; i < r; ++i)
+    ws.row_bodies[static_cast<std::size_t>(m + i)] = {ws.rank1[static_cast<std::size_t>(i)].body_i,
+                                                      ws.rank1[static_cast<std::size_t>(i)].body_j};
+  auto YZ = ws.YB.leftCols(k + 1);
+  auto L_solve = [&](auto&& v, int b) {  // v (a 7-block of body b) ← L_b⁻¹ v
+    v.template head<3>() /= std::sqrt(model.bodies[static_cast<std::size_t>(b)].mass);
+    ws.llt_p[static_cast<std::size_t>(b)].matrixL().solveInPlace(v.template tail<4>());
+  };
+  for (int i = 0; i < k; ++i) {
+    const Workspace::Rank1* R = i < m ? nullptr : &ws.rank1[static_cast<std::size_t>(i - m)];
+    const auto& bodies = ws.row_bodies[static_cast<std::size_t>(i)];
+    for (int e = 0; e < 2; ++e) {
+      const int b = bodies[static_cast<std::size_t>(e)];
+      if (b < 0) continue;
+      auto v = YZ.col(i).segment<7>(7 * b);
+      if (R)
+        v = e == 0 ? R->J.head<7>() : R->J.tail<7>();
+      else
+        v = ws.Cq.row(i).segment<7>(7 * b).transpose();
+      L_solve(v, b);
+    }
+  }
+  YZ.col(k) = ws.Q;
+  for (int b = 0; b < nb; ++b) L_solve(YZ.col(k).segment<7>(7 * b), b);
+  const auto Y = YZ.leftCols(k);
+  auto z = YZ.col(k);
+  if (k > 0) {
+    auto S = ws.SB.topLeftCorner(k, k);
+    for (int i = 0; i < k; ++i) {
+      const auto& bi = ws.row_bodies[static_cast<std::size_t>(i)];
+      for (int j = 0; j <= i; ++j) {  // lower triangle: all LLT reads
+        const auto& bj = ws.row_bodies[static_cast<std::size_t>(j)];
+        double s = 0;
+        for (int b : bi)
+          if (b >= 0 && (b == bj[0] || b == bj[1])) s += Y.col(i).segment<7>(7 * b).dot(Y.col(j).segment<7>(7 * b));
+        S(i, j) = s;
+      }
+    }
+    for (int i = 0; i < r; ++i) S(m + i, m + i) += 1.0 / ws.rank1[static_cast<std::size_t>(i)].b;
+    ws.llt_SB.compute(S);
+    const auto dS = ws.llt_SB.matrixLLT().diagonal();
+    if (ws.llt_SB.info() != Eigen::Success) singular(t, "the constraint Jacobian C_q", 0.0);
+    if (!(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
+      singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? std::pow(dS.minCoeff() / dS.maxCoeff(), 2) : 0.0);
+    auto lm = ws.lm.head(k);
+    for (int i = 0; i < k; ++i) {
+      double s = 0;
+      for (int b : ws.row_bodies[static_cast<std::size_t>(i)])
+        if (b >= 0) s += Y.col(i).segment<7>(7 * b).dot(z.segment<7>(7 * b));
+      lm[i] = s;
+    }
+    lm.head(m) -= ws.c.head(m);
+    ws.llt_SB.solveInPlace(lm);
+    for (int i = 0; i < k; ++i)
+      for (int b : ws.row_bodies[static_cast<std::size_t>(i)])
+        if (b >= 0) z.segment<7>(7 * b) -= Y.col(i).segment<7>(7 * b) * lm[i];
+    ws.lambda = lm.head(m);
+  }
+  ws.qdd = z;
+  for (int b = 0; b < nb; ++b) {
+    ws.qdd.segment<3>(7 * b) /= std::sqrt(model.bodies[static_cast<std::size_t>(b)].mass);
+    ws.llt_p[static_cast<std::size_t>(b)].matrixU().solveInPlace(ws.qdd.segment<4>(7 * b + 3));
+  }
+  return true;
+}
+}  // namespace
+
 void accelerations(const Model& model, double t, const State& x, Workspace& ws) {
   // Stages: kinematics → force elements and inerter mass term → constraint terms → Baumgarte → solve.
   ws.set_state(x);
@@ -140,6 +227,7 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
       Qp += kappa(model.bodies[k]) * f.p * ws.c[model.norm_row(static_cast<int>(k))];
     }
   const int m = model.n_solved_rows();
+  if (model.spatial() && solve_spatial(model, t, ws)) return;
 
   // Schur complement: (M + M_I) = L Lᵀ, S = C_q (M + M_I)⁻¹ C_qᵀ, S λ = C_q (M + M_I)⁻¹ Q − c,
   // q̈ = (M + M_I)⁻¹ (Q − C_qᵀ λ).

@@ -113,6 +113,17 @@ Workspace::Workspace(const Model& model) {
   sol = Eigen::VectorXd::Zero(n + ms);
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + ms);
   nc_ = model.body_coords();
+  if (model.spatial()) {
+    const int r = static_cast<int>(model.forces.size());  // at most one inerter term per element
+    rank1.reserve(model.forces.size());
+    llt_p.resize(model.bodies.size());
+    YB = Eigen::MatrixXd::Zero(n, ms + r + 1);
+    SB = Eigen::MatrixXd::Zero(ms + r, ms + r);
+    lm = Eigen::VectorXd::Zero(ms + r);
+    row_bodies.assign(static_cast<std::size_t>(ms + r), {-1, -1});
+    for (const Joint& j : model.joints)
+      for (int k = 0; k < j.rows(); ++k) row_bodies[static_cast<std::size_t>(j.row + k)] = {j.body_i, j.body_j};
+  }
   if (model.spatial())
     sframes.resize(model.bodies.size());
   else
@@ -124,7 +135,7 @@ Workspace::Workspace(const Model& model) {
 
 void Workspace::set_state(const State& x) {
   for (std::size_t b = 0; b < frames.size(); ++b) frames[b] = x.frame(static_cast<int>(b));
-  for (std::size_t b = 0; b < sframes.size(); ++b) sframes[b] = x.sframe(static_cast<int>(b));
+  for (std::size_t b = 0; b < sframes.size(); ++b) sframes[b].set(x.q.data() + 7 * b, x.qd.data() + 7 * b);
 }
 
 void Workspace::add_Q(int body_i, int body_j, const VecJ& f) {
@@ -138,6 +149,7 @@ void Workspace::add_Q(int body_i, int body_j, const VecJ& f) {
 }
 
 void Workspace::add_M(int body_i, int body_j, const VecJ& J, double b) {
+  if (nc_ == 7 && b != 0) rank1.push_back({body_i, body_j, J, b});
   const int body[2] = {body_i, body_j};
   for (int a = 0; a < 2; ++a) {
     if (body[a] < 0) continue;

@@ -56,12 +56,17 @@ struct SpatialFrame {
   Mat3 A = Mat3::Identity();
   Mat34 E = Mat34::Zero();  ///< zero for ground: its points have no Jacobian
   Vec3 w = Vec3::Zero();    ///< angular velocity, global
+  /// In place from the body's 7 coordinates and velocities.
+  void set(const double* q, const double* qd) {
+    R = Eigen::Map<const Vec3>(q), Rd = Eigen::Map<const Vec3>(qd);
+    p = Eigen::Map<const Vec4>(q + 3), pd = Eigen::Map<const Vec4>(qd + 3);
+    A = rotation(p);
+    E = E_matrix(p);
+    w = 2 * E * pd;
+  }
   static SpatialFrame of(const Vec7& q, const Vec7& qd) {
     SpatialFrame f;
-    f.R = q.head<3>(), f.Rd = qd.head<3>(), f.p = q.tail<4>(), f.pd = qd.tail<4>();
-    f.A = rotation(f.p);
-    f.E = E_matrix(f.p);
-    f.w = 2 * f.E * f.pd;
+    f.set(q.data(), qd.data());
     return f;
   }
 };

@@ -1,6 +1,7 @@
 #pragma once
 // Mutable State (q, q̇) and Workspace (every buffer an evaluation needs; allocated once).
 #include <Eigen/Dense>
+#include <array>
 #include <vector>
 
 #include "inerta/mbs/kinematics.hpp"
@@ -49,7 +50,19 @@ struct Workspace {
   Eigen::MatrixXd K;  ///< system matrix of eq. 4.12, (n+m)²
   Eigen::VectorXd rhs, sol;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-  Eigen::VectorXd qdd;     ///< result: accelerations
+  // Spatial models: M + M_I = D + Σ b J Jᵀ, D block-diagonal per body (dynamics.cpp, solve_spatial).
+  struct Rank1 {
+    int body_i, body_j;
+    VecJ J;
+    double b;
+  };
+  std::vector<Rank1> rank1;                        ///< the inerter terms of this evaluation (capacity reserved)
+  std::vector<Eigen::LLT<Eigen::Matrix4d>> llt_p;  ///< per body, its rotational block M_pp = L Lᵀ
+  Eigen::MatrixXd YB, SB;                          ///< [Y z] and the Schur matrix with the inerter rows
+  Eigen::LLT<Eigen::MatrixXd> llt_SB;
+  Eigen::VectorXd lm;                          ///< [λ; μ]
+  std::vector<std::array<int, 2>> row_bodies;  ///< the two bodies of each Schur row (−1: ground)
+  Eigen::VectorXd qdd;                         ///< result: accelerations
   Eigen::VectorXd zd;      ///< result: derivatives of the internal states (written by their elements)
   Eigen::VectorXd lambda;  ///< result: Lagrange multipliers
 
