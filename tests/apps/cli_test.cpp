@@ -1,5 +1,7 @@
 // The `inerta` command-line program (apps/inerta/main.cpp), run as a separate process.
 // Every file the tests write goes to a fresh directory under the system temp directory.
+#include "support/cli.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -19,23 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+using inerta::testing::contains;
+using inerta::testing::quote;
+using inerta::testing::read_file;
+using inerta::testing::Result;
 
 std::string model_path(const std::string& name) { return std::string(INERTA_SOURCE_DIR) + "/models/" + name; }
-
-// Single-quoted for /bin/sh.
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -51,40 +42,11 @@ std::vector<double> fields_of(const std::string& line) {
   return v;
 }
 
-struct Result {
-  int code = -1;  ///< exit status (-1 if the process did not exit normally)
-  std::string out, err;
-};
-
-class Cli : public ::testing::Test {
+class Cli : public inerta::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("inerta_cli_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
   fs::path path(const std::string& name) const { return dir_ / name; }
 
-  // Runs `inerta <args>` (args already quoted as needed), capturing stdout and stderr.
-  Result run(const std::string& args) {
-    const fs::path out = path("stdout.txt"), err = path("stderr.txt");
-    const std::string cmd =
-        quote(INERTA_CLI) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_file(out);
-    r.err = read_file(err);
-    return r;
-  }
-
-  fs::path dir_;
+  Result run(const std::string& args) const { return run_inerta(args); }
 };
 
 TEST_F(Cli, CheckTwobarReportsTwoDegreesOfFreedom) {

@@ -13,6 +13,7 @@
 
 #include "inerta/analysis/frf.hpp"
 #include "inerta/io/model_file.hpp"
+#include "support/cli.hpp"
 #include "support/synthetic.hpp"
 
 namespace {
@@ -20,20 +21,10 @@ namespace {
 namespace fs = std::filesystem;
 using inerta::testing::cd;
 
-bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using inerta::testing::contains;
+using inerta::testing::quote;
+using inerta::testing::read_file;
+using inerta::testing::Result;
 
 // The number printed after `key` (e.g. "k2 = ") in `text`; NaN if absent.
 double value_after(const std::string& text, const std::string& key) {
@@ -41,39 +32,14 @@ double value_after(const std::string& text, const std::string& key) {
   return p == std::string::npos ? NAN : std::stod(text.substr(p + key.size()));
 }
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-class Identify : public ::testing::Test {
+class Identify : public inerta::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("inerta_identify_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::string write(const std::string& name, const std::string& text) const {
     std::ofstream(path(name)) << text;
     return path(name);
   }
-  Result run(const std::string& args) {
-    const std::string out = path("stdout.txt"), err = path("stderr.txt");
-    const std::string cmd =
-        quote(INERTA_CLI) + " identify " + args + " >" + quote(out) + " 2>" + quote(err) + " </dev/null";
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.code = status != -1 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_file(out);
-    r.err = read_file(err);
-    return r;
-  }
+  Result run(const std::string& args) const { return run_inerta("identify " + args); }
   // Head and upper-arm FRFs of the 2-DOF model, 0.5–20 Hz, with `noise` relative complex noise.
   std::string head_csv(const inerta::testing::HeadArm& p, double noise, unsigned seed) const {
     std::mt19937 rng(seed);
@@ -86,8 +52,6 @@ class Identify : public ::testing::Test {
     }
     return write("frf.csv", s);
   }
-
-  fs::path dir_;
 };
 
 // ---- head-suspension ----

@@ -11,15 +11,12 @@
 
 #include "inerta/error.hpp"
 #include "inerta/network/layouts.hpp"
+#include "support/run.hpp"
 
 using namespace inerta;
 
 namespace {
-std::string write_study(const std::string& name, const std::string& text) {
-  const auto p = std::filesystem::temp_directory_path() / name;
-  std::ofstream(p) << text;
-  return p.string();
-}
+using inerta::testing::write_study;
 std::string study_text(const std::string& catenaries, const std::string& speeds, const std::string& layouts) {
   return std::string("name: small\nmodel: ") + INERTA_SOURCE_DIR + "/models/hsx.yaml\ncatenary: " + INERTA_SOURCE_DIR +
          "/models/catenary.yaml\ncatenaries: " + catenaries + "\nspeeds: " + speeds +

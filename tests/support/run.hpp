@@ -1,5 +1,7 @@
 #pragma once
 // Test helper: simulate a model and collect its outputs.
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +13,13 @@
 namespace inerta::testing {
 
 inline std::string model_path(const std::string& name) { return std::string(INERTA_SOURCE_DIR) + "/models/" + name; }
+
+/// Writes `text` to the file `name` in the system temp directory; returns its path.
+inline std::string write_study(const std::string& name, const std::string& text) {
+  const auto p = std::filesystem::temp_directory_path() / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
 
 struct Series {
   std::vector<double> t;
