@@ -317,6 +317,31 @@ struct Loader {
     }
   }
 
+  // `bodies: [i, j]` of a fixed joint.
+  void fixed_bodies(const YAML::Node& j, const std::string& what, mbs::Joint& jt) const {
+    rd.keys(j, what, {"name", "type", "bodies"});
+    YAML::Node bs = rd.need(j, "bodies", what);
+    if (!bs.IsSequence() || bs.size() != 2) rd.fail(bs, "bodies", "expected a list of two bodies [body_i, body_j]");
+    jt.type = mbs::JointType::Fixed;
+    jt.body_i = body(bs[0], "bodies"), jt.body_j = body(bs[1], "bodies");
+  }
+  // The driven body or marker of a driving joint (body_j and its point); the marker's index, −1 for a body.
+  int driven(const YAML::Node& j, const std::string& what, mbs::Joint& jt) const {
+    rd.keys(j, what, {"name", "type", "body", "marker", "coordinate", "motion"});
+    jt.type = mbs::JointType::Driving;
+    if (j["marker"].IsDefined() == j["body"].IsDefined())
+      rd.fail(j, what, "give either body (a body coordinate) or marker (a point coordinate)");
+    if (j["body"].IsDefined()) {
+      jt.body_j = body(j["body"], "body");
+      if (jt.body_j < 0) rd.fail(j["body"], "body", "ground cannot be driven");
+      return -1;
+    }
+    const int m = marker(j["marker"], "marker");
+    jt.body_j = mk(m).body, jt.u_j = mk(m).u, jt.p_j = mk(m).u3;
+    if (jt.body_j < 0) rd.fail(j["marker"], "marker", "a ground marker cannot be driven");
+    return m;
+  }
+
   void joints(const YAML::Node& n) {
     if (!n.IsDefined()) return;
     if (!n.IsSequence()) rd.fail(n, "joints", "expected a list of joints");
@@ -345,29 +370,16 @@ struct Loader {
           jt.theta0 = q_of(q, jt.body_j).z() - q_of(q, jt.body_i).z();
         }
       } else if (type == "fixed") {
-        rd.keys(j, what, {"name", "type", "bodies"});
-        YAML::Node bs = rd.need(j, "bodies", what);
-        if (!bs.IsSequence() || bs.size() != 2) rd.fail(bs, "bodies", "expected a list of two bodies [body_i, body_j]");
-        jt.type = mbs::JointType::Fixed;
-        jt.body_i = body(bs[0], "bodies"), jt.body_j = body(bs[1], "bodies");
+        fixed_bodies(j, what, jt);
         Vec3 qi = q_of(q, jt.body_i), qj = q_of(q, jt.body_j);
         jt.u_i = mbs::rotate(-qi.z(), qj.head<2>() - qi.head<2>());  // j's centre in i's frame
         jt.theta0 = qj.z() - qi.z();
       } else if (type == "driving") {
-        rd.keys(j, what, {"name", "type", "body", "marker", "coordinate", "motion"});
-        jt.type = mbs::JointType::Driving;
-        std::string c = rd.text(j, "coordinate", what);
-        if (j["marker"].IsDefined() == j["body"].IsDefined())
-          rd.fail(j, what, "give either body (a body coordinate) or marker (a point coordinate)");
-        if (j["body"].IsDefined()) {
-          jt.body_j = body(j["body"], "body");
-          if (jt.body_j < 0) rd.fail(j["body"], "body", "ground cannot be driven");
+        const std::string c = rd.text(j, "coordinate", what);
+        if (driven(j, what, jt) < 0) {
           if (c != "x" && c != "y" && c != "theta") rd.fail(j["coordinate"], "coordinate", "expected x, y or theta");
-        } else {
-          int m = marker(j["marker"], "marker");
-          jt.body_j = mk(m).body, jt.u_j = mk(m).u;
-          if (jt.body_j < 0) rd.fail(j["marker"], "marker", "a ground marker cannot be driven");
-          if (c != "x" && c != "y") rd.fail(j["coordinate"], "coordinate", "expected x or y for a point");
+        } else if (c != "x" && c != "y") {
+          rd.fail(j["coordinate"], "coordinate", "expected x or y for a point");
         }
         jt.component = c == "x" ? 0 : c == "y" ? 1 : 2;
         Vec3 qj = q_of(q, jt.body_j);
@@ -414,28 +426,13 @@ struct Loader {
         jt.a_j[0] = Aj.transpose() * s, jt.a_j[1] = Aj.transpose() * h2;
       }
     } else if (type == "fixed") {
-      rd.keys(j, what, {"name", "type", "bodies"});
-      YAML::Node bs = rd.need(j, "bodies", what);
-      if (!bs.IsSequence() || bs.size() != 2) rd.fail(bs, "bodies", "expected a list of two bodies [body_i, body_j]");
-      jt.type = mbs::JointType::Fixed;
-      jt.body_i = body(bs[0], "bodies"), jt.body_j = body(bs[1], "bodies");
+      fixed_bodies(j, what, jt);
       const mbs::Mat3 Ai = A0(jt.body_i), Aj = A0(jt.body_j);
       jt.p_i = Ai.transpose() * (R0(jt.body_j) - R0(jt.body_i));  // j's centre in i's frame
       for (int k = 0; k < 3; ++k) jt.a_i[k] = Ai.transpose().col(k), jt.a_j[k] = Aj.transpose().col(k);
     } else if (type == "driving") {
-      rd.keys(j, what, {"name", "type", "body", "marker", "coordinate", "motion"});
-      jt.type = mbs::JointType::Driving;
-      std::string c = rd.text(j, "coordinate", what);
-      if (j["marker"].IsDefined() == j["body"].IsDefined())
-        rd.fail(j, what, "give either body (its centre of mass) or marker (a point)");
-      if (j["body"].IsDefined()) {
-        jt.body_j = body(j["body"], "body");
-        if (jt.body_j < 0) rd.fail(j["body"], "body", "ground cannot be driven");
-      } else {
-        int m = marker(j["marker"], "marker");
-        jt.body_j = mk(m).body, jt.p_j = mk(m).u3;
-        if (jt.body_j < 0) rd.fail(j["marker"], "marker", "a ground marker cannot be driven");
-      }
+      const std::string c = rd.text(j, "coordinate", what);
+      driven(j, what, jt);
       if (c != "x" && c != "y" && c != "z")
         rd.fail(j["coordinate"], "coordinate", "expected x, y or z (a 3D model drives point coordinates)");
       jt.component = c == "x" ? 0 : c == "y" ? 1 : 2;
