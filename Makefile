@@ -3,24 +3,31 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 FULL ?= 0
 
-.PHONY: all deps build test demo bench clean
+.PHONY: all deps configure build cli test demo bench clean
 
 all: build
 
 deps:
 	@scripts/install-deps
 
-build: deps
+configure: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release > /dev/null
+
+build: configure
 	@cmake --build $(BUILD) -j $(JOBS) -- --no-print-directory
+
+# The demo needs only the program (not the tests and benchmarks): a faster first `make demo`.
+cli: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target inerta -- --no-print-directory
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-demo: build
+demo: cli
 	@FULL=$(FULL) BUILD=$(BUILD) scripts/demo
 
-bench: build
+bench: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target inerta_bench -- --no-print-directory
 	@$(BUILD)/bench/inerta_bench
 
 clean:
