@@ -70,27 +70,29 @@ bool Model::remove_joint(const std::string& name) {
   return true;
 }
 
-Eigen::VectorXd Model::q0() const {
-  Eigen::VectorXd q(n_coords());
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const int k = body_coords() * static_cast<int>(b);
-    if (spatial())
-      q.segment<7>(k) = bodies[b].q0s;
+namespace {
+// Stacks each body's tabulated 2D (Vec3) or 3D (Vec7) vector.
+template <class Planar, class Spatial>
+Eigen::VectorXd stack(const Model& m, Planar planar, Spatial spatial) {
+  Eigen::VectorXd v(m.n_coords());
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    const int k = m.body_coords() * static_cast<int>(b);
+    if (m.spatial())
+      v.segment<7>(k) = spatial(m.bodies[b]);
     else
-      q.segment<3>(k) = bodies[b].q0;
+      v.segment<3>(k) = planar(m.bodies[b]);
   }
-  return q;
+  return v;
+}
+}  // namespace
+
+Eigen::VectorXd Model::q0() const {
+  return stack(
+      *this, [](const Body& b) { return b.q0; }, [](const Body& b) { return b.q0s; });
 }
 Eigen::VectorXd Model::qd0() const {
-  Eigen::VectorXd qd(n_coords());
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    const int k = body_coords() * static_cast<int>(b);
-    if (spatial())
-      qd.segment<7>(k) = bodies[b].qd0s;
-    else
-      qd.segment<3>(k) = bodies[b].qd0;
-  }
-  return qd;
+  return stack(
+      *this, [](const Body& b) { return b.qd0; }, [](const Body& b) { return b.qd0s; });
 }
 
 double ForceElement::length(const Model&, const State&) const { return std::nan(""); }
