@@ -114,7 +114,7 @@ Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, c
       F = dl[jt.row + Fo.component];
     } else {
       mbs::ConstraintRow rows[3];
-      const int nr = mbs::evaluate_joint(jt, 0.0, x.frame(jt.body_i), x.frame(jt.body_j), rows);
+      const int nr = mbs::evaluate_joint(jt, 0.0, rig.frame(x, jt.body_i), rig.frame(x, jt.body_j), rows);
       for (int r = 0; r < nr; ++r) F -= rows[r].gj[Fo.component] * dl[jt.row + r];
     }
     F *= Fo.scale;
@@ -123,7 +123,7 @@ Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, c
       const auto& mk = rig.markers[static_cast<std::size_t>(o.index)];
       cd r = 0;
       if (mk.body >= 0) {
-        const mbs::PointKinematics p = mbs::point_kinematics(x.frame(mk.body), mk.u);
+        const mbs::PointKinematics p = mbs::point_kinematics(rig.frame(x, mk.body), mk.u);
         r = dq[3 * mk.body + o.component] + p.Atu[o.component] * dq[3 * mk.body + 2];
       }
       out.H[i][k] = -w * w * r * o.scale / F;

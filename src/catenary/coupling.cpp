@@ -44,7 +44,7 @@ mbs::Model couple(const mbs::Model& pantograph, const LumpedCatenary& cat, const
   // The wire starts unloaded at the contact point's assembled position.
   mbs::State x = mbs::assemble(m, 0.0);
   const mbs::Marker point = m.markers[static_cast<std::size_t>(mk)];
-  const mbs::Vec2 r = mbs::point_kinematics(x.q_of(point.body), x.qd_of(point.body), point.u).r;
+  const mbs::Vec2 r = mbs::point_kinematics(m.frame(x, point.body), point.u).r;
   const int wire = add_catenary(m, cat, speed, r.x(), r.y());
   mbs::Output F;
   F.name = "F_contact";

@@ -26,7 +26,7 @@ double LumpedCatenary::natural_frequency() const { return std::sqrt(k[0] / m[0])
 CatenaryElement::CatenaryElement(std::string name, int body, LumpedCatenary cat, double speed, double y_unloaded)
     : ForceElement(std::move(name)), body_(body), cat_(cat), v_(speed), y0_(y_unloaded) {}
 
-void CatenaryElement::add(const mbs::Model&, double t, const mbs::State& x, mbs::Workspace& ws) const {
+void CatenaryElement::add(const mbs::Model& model, double t, const mbs::State& x, mbs::Workspace& ws) const {
   const double fp = pumping_frequency();
   const int iy = 3 * body_ + 1;
   const double y = x.q[iy] - y0_, yd = x.qd[iy];
@@ -35,7 +35,7 @@ void CatenaryElement::add(const mbs::Model&, double t, const mbs::State& x, mbs:
   ws.Q[iy] -= LumpedCatenary::harmonic(cat_.c, fp, t) * yd + LumpedCatenary::harmonic(cat_.k, fp, t) * y;
 }
 
-double CatenaryElement::energy(const mbs::Model&, double t, const mbs::State& x) const {
+double CatenaryElement::energy(const mbs::Model& model, double t, const mbs::State& x) const {
   const double fp = pumping_frequency();
   const int iy = 3 * body_ + 1;
   const double y = x.q[iy] - y0_, yd = x.qd[iy];
@@ -43,7 +43,7 @@ double CatenaryElement::energy(const mbs::Model&, double t, const mbs::State& x)
          0.5 * LumpedCatenary::harmonic(cat_.k, fp, t) * y * y;
 }
 
-double CatenaryElement::power(const mbs::Model&, double t, const mbs::State& x) const {
+double CatenaryElement::power(const mbs::Model& model, double t, const mbs::State& x) const {
   // Work rate on the body not in −d(energy)/dt: damping, and the explicit time variation.
   const double fp = pumping_frequency();
   const int iy = 3 * body_ + 1;
@@ -53,14 +53,14 @@ double CatenaryElement::power(const mbs::Model&, double t, const mbs::State& x) 
          0.5 * LumpedCatenary::harmonic_rate(cat_.m, fp, t) * yd * yd;
 }
 
-double CatenaryElement::force(const mbs::Model&, double t, const mbs::State& x, const mbs::Workspace&) const {
+double CatenaryElement::force(const mbs::Model& model, double t, const mbs::State& x, const mbs::Workspace&) const {
   const double fp = pumping_frequency();
   const int iy = 3 * body_ + 1;
   return -LumpedCatenary::harmonic(cat_.c, fp, t) * x.qd[iy] -
          LumpedCatenary::harmonic(cat_.k, fp, t) * (x.q[iy] - y0_);
 }
 
-double CatenaryElement::length(const mbs::Model&, const mbs::State& x) const { return x.q[3 * body_ + 1] - y0_; }
+double CatenaryElement::length(const mbs::Model& model, const mbs::State& x) const { return x.q[3 * body_ + 1] - y0_; }
 
 // Penalty contact ----------------------------------------------------------------------------
 PenaltyContact::PenaltyContact(std::string name, int body_i, mbs::Vec2 u_i, int body_j, mbs::Vec2 u_j, double stiffness,
@@ -82,7 +82,7 @@ PenaltyContact::Eval PenaltyContact::evaluate(const mbs::BodyFrame& fi, const mb
   return e;
 }
 
-void PenaltyContact::add(const mbs::Model&, double, const mbs::State&, mbs::Workspace& ws) const {
+void PenaltyContact::add(const mbs::Model& model, double, const mbs::State&, mbs::Workspace& ws) const {
   Eval e = evaluate(ws.frame(bi_), ws.frame(bj_));
   if (e.F == 0) return;
   // Down on P_i (pantograph), up on P_j (wire); generalised forces G_Pᵀ f.
@@ -96,24 +96,24 @@ void PenaltyContact::add(const mbs::Model&, double, const mbs::State&, mbs::Work
   }
 }
 
-double PenaltyContact::energy(const mbs::Model&, double, const mbs::State& x) const {
-  Eval e = evaluate(x.frame(bi_), x.frame(bj_));
+double PenaltyContact::energy(const mbs::Model& model, double, const mbs::State& x) const {
+  Eval e = evaluate(model.frame(x, bi_), model.frame(x, bj_));
   return e.delta > 0 ? 0.5 * ks_ * e.delta * e.delta : 0.0;
 }
 
-double PenaltyContact::power(const mbs::Model&, double, const mbs::State& x) const {
+double PenaltyContact::power(const mbs::Model& model, double, const mbs::State& x) const {
   // Beyond −d(½ k δ²)/dt: the damping part (and the clipping when F would pull).
-  Eval e = evaluate(x.frame(bi_), x.frame(bj_));
+  Eval e = evaluate(model.frame(x, bi_), model.frame(x, bj_));
   if (e.delta <= 0) return 0.0;
   return -(e.F - ks_ * e.delta) * e.delta_dot;
 }
 
-double PenaltyContact::force(const mbs::Model&, double, const mbs::State&, const mbs::Workspace& ws) const {
+double PenaltyContact::force(const mbs::Model& model, double, const mbs::State&, const mbs::Workspace& ws) const {
   return evaluate(ws.frame(bi_), ws.frame(bj_)).F;
 }
 
-double PenaltyContact::length(const mbs::Model&, const mbs::State& x) const {
-  return evaluate(x.frame(bi_), x.frame(bj_)).delta;
+double PenaltyContact::length(const mbs::Model& model, const mbs::State& x) const {
+  return evaluate(model.frame(x, bi_), model.frame(x, bj_)).delta;
 }
 
 }  // namespace inerta::catenary

@@ -643,13 +643,11 @@ struct Loader {
                       act ? "only the actuator's constant force, friction and piston mass" : "no force"));
       net = network::Network{network::Network::Kind::Damper, "c", 0.0, {}, 0};  // exerts no force
     }
-    int offset = 0;
-    for (const auto& e : model.forces) offset += e->n_states();
     if (act) {
       model.forces.push_back(
-          std::make_shared<mbs::Actuator>(name, bi, ui.u.head<2>(), bj, uj.u.head<2>(), net, l_ref, offset, ap, corr));
+          std::make_shared<mbs::Actuator>(name, bi, ui.u.head<2>(), bj, uj.u.head<2>(), net, l_ref, ap, corr));
     } else {
-      model.forces.push_back(std::make_shared<mbs::NetworkStrut>(name, bi, ui, bj, uj, net, l_ref, offset, corr));
+      model.forces.push_back(std::make_shared<mbs::NetworkStrut>(name, bi, ui, bj, uj, net, l_ref, corr));
     }
   }
 
@@ -830,9 +828,10 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
   }
 }
 
-}  // namespace
 
-mbs::Model parse_model(const std::string& text, const std::string& source, const std::vector<std::string>& overrides) {
+// The whole file: the model and, if the file has a `pantograph:` section, its contact point and rig joint.
+pantograph::Pantograph parse_file(const std::string& text, const std::string& source,
+                                  const std::vector<std::string>& overrides) {
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -841,6 +840,7 @@ mbs::Model parse_model(const std::string& text, const std::string& source, const
   }
   if (!overrides.empty()) apply_overrides(root, overrides, source);
   Loader ld{Reader(source), {}};
+  int contact = -1, rig_joint = -1;
   const Reader& rd = ld.rd;
   try {
     if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
@@ -874,18 +874,36 @@ mbs::Model parse_model(const std::string& text, const std::string& source, const
     if (YAML::Node p = root["pantograph"]; p.IsDefined()) {
       if (ld.model.spatial()) rd.fail(p, "pantograph", "the pantograph-catenary analyses are planar (dimension: 2)");
       rd.keys(p, "pantograph", {"contact", "rig_joint"});
-      ld.model.contact_marker = rd.text(rd.need(p, "contact", "pantograph"), "contact");
-      ld.marker(p["contact"], "contact");
+      contact = ld.marker(rd.need(p, "contact", "pantograph"), "contact");
+      ld.model.contact_marker = rd.text(p["contact"], "contact");
       if (p["rig_joint"].IsDefined()) {
-        ld.model.rig_joint = rd.text(p["rig_joint"], "rig_joint");
-        if (ld.model.find_joint(ld.model.rig_joint) < 0)
-          rd.fail(p["rig_joint"], "rig_joint", fmt::format("unknown joint '{}'", ld.model.rig_joint));
+        const std::string rig = rd.text(p["rig_joint"], "rig_joint");
+        rig_joint = ld.model.find_joint(rig);
+        ld.model.rig_joint = rig;
+        if (rig_joint < 0) rd.fail(p["rig_joint"], "rig_joint", fmt::format("unknown joint '{}'", rig));
       }
     }
   } catch (const YAML::Exception& e) {  // safety net: no yaml-cpp exception leaves without file:line
     throw ModelError(fmt::format("{}:{}: {}", source, e.mark.line + 1, e.msg));
   }
-  return std::move(ld.model);
+  return {std::move(ld.model), contact, rig_joint};
+}
+
+}  // namespace
+
+mbs::Model parse_model(const std::string& text, const std::string& source, const std::vector<std::string>& overrides) {
+  return parse_file(text, source, overrides).model;
+}
+
+pantograph::Pantograph parse_pantograph(const std::string& text, const std::string& source,
+                                        const std::vector<std::string>& overrides) {
+  pantograph::Pantograph p = parse_file(text, source, overrides);
+  if (p.contact_marker < 0)
+    throw ModelError(
+        fmt::format("{}: the model has no 'pantograph: {{contact: <marker>}}' section; a catenary needs the head's "
+                    "contact point",
+                    source));
+  return p;
 }
 
 std::optional<double> model_value(const std::string& text, const std::string& source, const std::string& key) {
@@ -908,12 +926,22 @@ std::optional<double> model_value(const std::string& text, const std::string& so
   }
 }
 
-mbs::Model load_model(const std::string& path, const std::vector<std::string>& overrides) {
+namespace {
+std::string read_text(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw ModelError(fmt::format("{}: cannot open the model file", path));
   std::stringstream ss;
   ss << in.rdbuf();
-  return parse_model(ss.str(), path, overrides);
+  return ss.str();
+}
+}  // namespace
+
+mbs::Model load_model(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_model(read_text(path), path, overrides);
+}
+
+pantograph::Pantograph load_pantograph(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_pantograph(read_text(path), path, overrides);
 }
 
 }  // namespace inerta::io

@@ -43,32 +43,32 @@ void PointForce::add(const Model&, double t, const State&, Workspace& ws) const 
   ws.Q.segment<2>(3 * body_) += F;
   ws.Q[3 * body_ + 2] += p.Atu.dot(F);  // moment about the centre of mass
 }
-double PointForce::power(const Model&, double t, const State& x) const {
+double PointForce::power(const Model& model, double t, const State& x) const {
   if (body_ < 0) return 0.0;
-  if (spatial_) return f_.value(t) * d3_.dot(spatial_vector(x.sframe(body_), u3_, true).vd);
-  return f_.value(t) * d_.dot(point_kinematics(x.q_of(body_), x.qd_of(body_), u_).v);
+  if (spatial_) return f_.value(t) * d3_.dot(spatial_vector(model.sframe(x, body_), u3_, true).vd);
+  return f_.value(t) * d_.dot(point_kinematics(model.q_of(x, body_), model.qd_of(x, body_), u_).v);
 }
 
 void PointTorque::add(const Model&, double t, const State&, Workspace& ws) const {
   if (body_ >= 0) ws.Q.segment<4>(7 * body_ + 3) += 2 * ws.sframe(body_).E.transpose() * (f_.value(t) * n_);
 }
-double PointTorque::power(const Model&, double t, const State& x) const {
-  return body_ < 0 ? 0.0 : f_.value(t) * n_.dot(x.sframe(body_).w);
+double PointTorque::power(const Model& model, double t, const State& x) const {
+  return body_ < 0 ? 0.0 : f_.value(t) * n_.dot(model.sframe(x, body_).w);
 }
 
-double RotationalSpringDamper::angle(const State& x) const {
-  if (!spatial_) return x.q_of(bj_).z() - x.q_of(bi_).z();
-  const SpatialFrame fi = x.sframe(bi_), fj = x.sframe(bj_);
+double RotationalSpringDamper::angle(const Model& model, const State& x) const {
+  if (!spatial_) return model.q_of(x, bj_).z() - model.q_of(x, bi_).z();
+  const SpatialFrame fi = model.sframe(x, bi_), fj = model.sframe(x, bj_);
   const Vec3 hi = fi.A * sp_.h_i, hj = fj.A * sp_.h_j, s = fi.A * sp_.s_i;
   return sp_.angle_init + std::atan2(hi.cross(hj).dot(s), hi.dot(hj));
 }
-double RotationalSpringDamper::rate(const State& x) const {
-  if (!spatial_) return x.qd_of(bj_).z() - x.qd_of(bi_).z();
-  const SpatialFrame fi = x.sframe(bi_), fj = x.sframe(bj_);
+double RotationalSpringDamper::rate(const Model& model, const State& x) const {
+  if (!spatial_) return model.qd_of(x, bj_).z() - model.qd_of(x, bi_).z();
+  const SpatialFrame fi = model.sframe(x, bi_), fj = model.sframe(x, bj_);
   return (fi.A * sp_.s_i).dot(fj.w - fi.w);
 }
-void RotationalSpringDamper::add(const Model&, double, const State& x, Workspace& ws) const {
-  const double m = -k_ * (angle(x) - a0_) - c_ * rate(x);
+void RotationalSpringDamper::add(const Model& model, double, const State& x, Workspace& ws) const {
+  const double m = -k_ * (angle(model, x) - a0_) - c_ * rate(model, x);
   if (spatial_) {
     const Vec3 T = m * (ws.sframe(bi_).A * sp_.s_i);
     if (bj_ >= 0) ws.Q.segment<4>(7 * bj_ + 3) += 2 * ws.sframe(bj_).E.transpose() * T;
@@ -78,17 +78,17 @@ void RotationalSpringDamper::add(const Model&, double, const State& x, Workspace
   if (bj_ >= 0) ws.Q[3 * bj_ + 2] += m;
   if (bi_ >= 0) ws.Q[3 * bi_ + 2] -= m;
 }
-double RotationalSpringDamper::energy(const Model&, double, const State& x) const {
-  double d = angle(x) - a0_;
+double RotationalSpringDamper::energy(const Model& model, double, const State& x) const {
+  double d = angle(model, x) - a0_;
   return 0.5 * k_ * d * d;
 }
-double RotationalSpringDamper::power(const Model&, double, const State& x) const {
-  double w = rate(x);
+double RotationalSpringDamper::power(const Model& model, double, const State& x) const {
+  double w = rate(model, x);
   return -c_ * w * w;
 }
-double RotationalSpringDamper::force(const Model&, double, const State& x, const Workspace&) const {
-  return -k_ * (angle(x) - a0_) - c_ * rate(x);
+double RotationalSpringDamper::force(const Model& model, double, const State& x, const Workspace&) const {
+  return -k_ * (angle(model, x) - a0_) - c_ * rate(model, x);
 }
-double RotationalSpringDamper::length(const Model&, const State& x) const { return angle(x); }
+double RotationalSpringDamper::length(const Model& model, const State& x) const { return angle(model, x); }
 
 }  // namespace inerta::mbs

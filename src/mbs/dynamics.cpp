@@ -263,13 +263,13 @@ Vec3 joint_reaction(const Model& model, int joint, double t, const State& x, con
   const Joint& jt = model.joints[static_cast<std::size_t>(joint)];
   if (model.spatial()) {  // force on body j: −(C_q,R_j)ᵀ λ
     ConstraintRow3 rows[6];
-    int nr = evaluate_joint_3d(jt, t, x.sframe(jt.body_i), x.sframe(jt.body_j), rows);
+    int nr = evaluate_joint_3d(jt, t, model.sframe(x, jt.body_i), model.sframe(x, jt.body_j), rows);
     Vec3 f = Vec3::Zero();
     for (int r = 0; r < nr; ++r) f -= rows[r].gj.head<3>() * lambda[jt.row + r];
     return f;
   }
   ConstraintRow rows[3];
-  int nr = evaluate_joint(jt, t, x.frame(jt.body_i), x.frame(jt.body_j), rows);
+  int nr = evaluate_joint(jt, t, model.frame(x, jt.body_i), model.frame(x, jt.body_j), rows);
   Vec3 f = Vec3::Zero();
   for (int r = 0; r < nr; ++r) f -= rows[r].gj * lambda[jt.row + r];
   return f;
@@ -279,14 +279,14 @@ double kinetic_energy(const Model& model, const State& x) {
   double T = 0;
   if (model.spatial()) {
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-      const SpatialFrame f = x.sframe(static_cast<int>(b));
+      const SpatialFrame f = model.sframe(x, static_cast<int>(b));
       const Vec3 wb = 2 * G_matrix(f.p) * f.pd;  // body-frame angular velocity
       T += 0.5 * model.bodies[b].mass * f.Rd.squaredNorm() + 0.5 * wb.dot(model.bodies[b].inertia3 * wb);
     }
     return T;
   }
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    Vec3 v = x.qd_of(static_cast<int>(b));
+    Vec3 v = model.qd_of(x, static_cast<int>(b));
     T += 0.5 * model.bodies[b].mass * v.head<2>().squaredNorm() + 0.5 * model.bodies[b].inertia * v.z() * v.z();
   }
   return T;

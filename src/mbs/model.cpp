@@ -38,10 +38,13 @@ std::string Model::coord_name(int k) const {
 }
 
 void Model::finalize() {
+  q_adr_.resize(bodies.size());
+  for (std::size_t b = 0; b < bodies.size(); ++b) q_adr_[b] = body_coords() * static_cast<int>(b);
   n_states_ = 0;
-  for (const auto& f : forces) {
-    if (f->n_states() > 0 && f->state_offset() != n_states_)
-      throw std::logic_error("force element '" + f->name() + "': internal-state offset out of order");
+  state_adr_.clear();
+  for (auto& f : forces) {
+    if (f->n_states() > 0 && f->state_offset() != n_states_) f = f->with_state_offset(n_states_);
+    state_adr_.push_back(n_states_);
     n_states_ += f->n_states();
   }
   n_constraints_ = 0;
@@ -95,7 +98,24 @@ Eigen::VectorXd Model::qd0() const {
       *this, [](const Body& b) { return b.qd0; }, [](const Body& b) { return b.qd0s; });
 }
 
+Vec3 Model::q_of(const State& x, int body) const {
+  return body < 0 ? Vec3::Zero() : Vec3(x.q.segment<3>(q_adr(body)));
+}
+Vec3 Model::qd_of(const State& x, int body) const {
+  return body < 0 ? Vec3::Zero() : Vec3(x.qd.segment<3>(q_adr(body)));
+}
+BodyFrame Model::frame(const State& x, int body) const {
+  return body < 0 ? BodyFrame{} : BodyFrame::of(q_of(x, body), qd_of(x, body));
+}
+SpatialFrame Model::sframe(const State& x, int body) const {
+  return body < 0 ? SpatialFrame{} : SpatialFrame::of(x.q.segment<7>(q_adr(body)), x.qd.segment<7>(q_adr(body)));
+}
+
 double ForceElement::length(const Model&, const State&) const { return std::nan(""); }
+
+std::shared_ptr<const ForceElement> ForceElement::with_state_offset(int) const {
+  throw std::logic_error("force element '" + name() + "' has internal states but does not implement with_state_offset");
+}
 
 Workspace::Workspace(const Model& model) {
   const int n = model.n_coords(), m = model.n_constraints(), ms = model.n_solved_rows();
@@ -136,7 +156,8 @@ Workspace::Workspace(const Model& model) {
 }
 
 void Workspace::set_state(const State& x) {
-  for (std::size_t b = 0; b < frames.size(); ++b) frames[b] = x.frame(static_cast<int>(b));
+  for (std::size_t b = 0; b < frames.size(); ++b)
+    frames[b] = BodyFrame::of(x.q.segment<3>(3 * static_cast<Eigen::Index>(b)), x.qd.segment<3>(3 * static_cast<Eigen::Index>(b)));
   for (std::size_t b = 0; b < sframes.size(); ++b) sframes[b].set(x.q.data() + 7 * b, x.qd.data() + 7 * b);
 }
 

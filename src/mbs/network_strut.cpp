@@ -8,13 +8,12 @@
 namespace inerta::mbs {
 
 NetworkStrut::NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net,
-                           double l_ref, int state_offset, bool centripetal)
+                           double l_ref, bool centripetal)
     : Strut(std::move(name), bi, ui, bj, uj),
       net_(net),
       r_(network::realise(net)),
       l_ref_(l_ref),
       centripetal_(centripetal) {
-  state_offset_ = state_offset;
 }
 
 bool NetworkStrut::centripetal(const Model& model) const { return centripetal_ && model.options.centripetal; }
@@ -39,15 +38,15 @@ void NetworkStrut::add(const Model& model, double, const State& x, Workspace& ws
   if (r_.d2 != 0) ws.add_M(body_i(), body_j(), s.J, r_.d2);
 }
 
-double NetworkStrut::energy(const Model&, double, const State& x) const {
-  StrutKinematics s = kinematics(x);
+double NetworkStrut::energy(const Model& model, double, const State& x) const {
+  StrutKinematics s = kinematics(model, x);
   double u = s.l - l_ref_;
   return 0.5 * r_.d2 * s.l_dot * s.l_dot + 0.5 * r_.d0 * u * u;
 }
 
 double NetworkStrut::power(const Model& model, double, const State& x) const {
   // Work rate on the bodies of everything that is not in energy(): direct damper and internal states.
-  StrutKinematics s = kinematics(x);
+  StrutKinematics s = kinematics(model, x);
   double P = -(r_.d1 * s.l_dot) * s.l_dot;
   if (r_.n_states() > 0) P -= r_.C.dot(x.z.segment(state_offset_, r_.n_states())) * s.l_dot;
   if (!centripetal(model)) P += r_.d2 * s.centripetal * s.l_dot;
@@ -60,15 +59,15 @@ double NetworkStrut::force(const Model& model, double, const State& x, const Wor
   return network_tension(s, x) + r_.d2 * l_ddot;
 }
 
-void NetworkStrut::relax(const Model&, State& x) const {
+void NetworkStrut::relax(const Model& model, State& x) const {
   if (r_.n_states() == 0) return;
-  x.z.segment(state_offset_, r_.n_states()) = r_.steady_state(kinematics(x).l - l_ref_);
+  x.z.segment(state_offset_, r_.n_states()) = r_.steady_state(kinematics(model, x).l - l_ref_);
 }
 
 // Actuator -------------------------------------------------------------------------------------
 Actuator::Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
-                   int state_offset, Params p, bool centripetal)
-    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, state_offset, centripetal),
+                   Params p, bool centripetal)
+    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, centripetal),
       p_(p),
       rod_body_(bj),
       rod_u_(uj) {}
@@ -94,9 +93,9 @@ void Actuator::add(const Model& model, double t, const State& x, Workspace& ws) 
 }
 
 double Actuator::energy(const Model& model, double t, const State& x) const {
-  double E = NetworkStrut::energy(model, t, x) + p_.constant_force * kinematics(x).l;
+  double E = NetworkStrut::energy(model, t, x) + p_.constant_force * kinematics(model, x).l;
   if (p_.piston_mass > 0 && rod_body_ >= 0) {
-    PointKinematics pk = point_kinematics(x.frame(rod_body_), rod_u_);
+    PointKinematics pk = point_kinematics(model.frame(x, rod_body_), rod_u_);
     E += 0.5 * p_.piston_mass * pk.v.squaredNorm();
     if (model.options.gravity) E -= p_.piston_mass * model.options.g.dot(pk.r);
   }
@@ -106,7 +105,7 @@ double Actuator::energy(const Model& model, double t, const State& x) const {
 double Actuator::power(const Model& model, double t, const State& x) const {
   double P = NetworkStrut::power(model, t, x);
   if (p_.friction > 0) {
-    double ld = kinematics(x).l_dot;
+    double ld = kinematics(model, x).l_dot;
     P -= p_.friction * std::tanh(ld / p_.friction_velocity) * ld;
   }
   return P;
@@ -116,6 +115,18 @@ double Actuator::force(const Model& model, double t, const State& x, const Works
   double F = NetworkStrut::force(model, t, x, ws) + p_.constant_force;
   if (p_.friction > 0) F += p_.friction * std::tanh(kinematics(ws).l_dot / p_.friction_velocity);
   return F;
+}
+
+// The compile step's relocation (Model::finalize): a copy with its states at `offset`.
+std::shared_ptr<const ForceElement> NetworkStrut::with_state_offset(int offset) const {
+  auto c = std::make_shared<NetworkStrut>(*this);
+  c->state_offset_ = offset;
+  return c;
+}
+std::shared_ptr<const ForceElement> Actuator::with_state_offset(int offset) const {
+  auto c = std::make_shared<Actuator>(*this);
+  c->state_offset_ = offset;
+  return c;
 }
 
 }  // namespace inerta::mbs

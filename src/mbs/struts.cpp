@@ -5,16 +5,16 @@
 
 namespace inerta::mbs {
 
-StrutKinematics Strut::kinematics(const State& x) const {
-  if (spatial_) return strut_kinematics(x.sframe(body_i_), u_i_, x.sframe(body_j_), u_j_);
-  return strut_kinematics(x.frame(body_i_), u_i(), x.frame(body_j_), u_j());
+StrutKinematics Strut::kinematics(const Model& model, const State& x) const {
+  if (spatial_) return strut_kinematics(model.sframe(x, body_i_), u_i_, model.sframe(x, body_j_), u_j_);
+  return strut_kinematics(model.frame(x, body_i_), u_i(), model.frame(x, body_j_), u_j());
 }
 StrutKinematics Strut::kinematics(const Workspace& ws) const {
   if (spatial_) return strut_kinematics(ws.sframe(body_i_), u_i_, ws.sframe(body_j_), u_j_);
   return strut_kinematics(ws.frame(body_i_), u_i(), ws.frame(body_j_), u_j());
 }
 
-double Strut::length(const Model&, const State& x) const { return kinematics(x).l; }
+double Strut::length(const Model& model, const State& x) const { return kinematics(model, x).l; }
 
 void Strut::add_tension(double F, const StrutKinematics& s, Workspace& ws) const {
   ws.add_Q(body_i_, body_j_, -F * s.J);
@@ -25,24 +25,24 @@ void Spring::add(const Model&, double, const State&, Workspace& ws) const {
   StrutKinematics s = kinematics(ws);
   add_tension(k_ * (s.l - L0_), s, ws);
 }
-double Spring::energy(const Model&, double, const State& x) const {
-  double d = kinematics(x).l - L0_;
+double Spring::energy(const Model& model, double, const State& x) const {
+  double d = kinematics(model, x).l - L0_;
   return 0.5 * k_ * d * d;
 }
-double Spring::force(const Model&, double, const State& x, const Workspace&) const {
-  return k_ * (kinematics(x).l - L0_);
+double Spring::force(const Model& model, double, const State& x, const Workspace&) const {
+  return k_ * (kinematics(model, x).l - L0_);
 }
 
 // Damper ---------------------------------------------------------------------------------------
-void Damper::add(const Model&, double, const State&, Workspace& ws) const {
+void Damper::add(const Model& model, double, const State&, Workspace& ws) const {
   StrutKinematics s = kinematics(ws);
   add_tension(c_ * s.l_dot, s, ws);
 }
-double Damper::power(const Model&, double, const State& x) const {
-  double ld = kinematics(x).l_dot;
+double Damper::power(const Model& model, double, const State& x) const {
+  double ld = kinematics(model, x).l_dot;
   return -c_ * ld * ld;
 }
-double Damper::force(const Model&, double, const State& x, const Workspace&) const { return c_ * kinematics(x).l_dot; }
+double Damper::force(const Model& model, double, const State& x, const Workspace&) const { return c_ * kinematics(model, x).l_dot; }
 
 // Inerter --------------------------------------------------------------------------------------
 bool Inerter::centripetal(const Model& model) const { return centripetal_ && model.options.centripetal; }
@@ -54,13 +54,13 @@ void Inerter::add(const Model& model, double, const State&, Workspace& ws) const
   add_tension(b_ * bias, s, ws);
   ws.add_M(body_i(), body_j(), s.J, b_);
 }
-double Inerter::energy(const Model&, double, const State& x) const {
-  double ld = kinematics(x).l_dot;
+double Inerter::energy(const Model& model, double, const State& x) const {
+  double ld = kinematics(model, x).l_dot;
   return 0.5 * b_ * ld * ld;
 }
 double Inerter::power(const Model& model, double, const State& x) const {
   if (centripetal(model)) return 0.0;
-  StrutKinematics s = kinematics(x);
+  StrutKinematics s = kinematics(model, x);
   return b_ * s.centripetal * s.l_dot;
 }
 double Inerter::force(const Model& model, double, const State&, const Workspace& ws) const {
@@ -70,7 +70,7 @@ double Inerter::force(const Model& model, double, const State&, const Workspace&
 }
 
 // Constant axial force -------------------------------------------------------------------------
-void AxialForce::add(const Model&, double, const State&, Workspace& ws) const { add_tension(F_, kinematics(ws), ws); }
-double AxialForce::energy(const Model&, double, const State& x) const { return F_ * kinematics(x).l; }
+void AxialForce::add(const Model& model, double, const State&, Workspace& ws) const { add_tension(F_, kinematics(ws), ws); }
+double AxialForce::energy(const Model& model, double, const State& x) const { return F_ * kinematics(model, x).l; }
 
 }  // namespace inerta::mbs

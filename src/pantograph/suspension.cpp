@@ -23,23 +23,18 @@ mbs::Model with_suspension(const mbs::Model& model, const network::Network& boun
     net = Network{Network::Kind::Damper, "c", 0.0, {}, 0};
   }
   bool found = false;
-  int offset = 0;
   for (auto& f : m.forces) {
     if (auto a = std::dynamic_pointer_cast<const mbs::Actuator>(f)) {
       if (found) throw ModelError(fmt::format("{}: more than one actuator; the suspension is ambiguous", m.source));
       found = true;
       f = std::make_shared<mbs::Actuator>(a->name(), a->body_i(), a->u_i(), a->body_j(), a->u_j(), net,
-                                          reference_length > 0 ? reference_length : a->reference_length(), offset,
+                                          reference_length > 0 ? reference_length : a->reference_length(),
                                           a->params(), a->centripetal_switch());
-    } else if (auto s = std::dynamic_pointer_cast<const mbs::NetworkStrut>(f); s && s->state_offset() != offset) {
-      f = std::make_shared<mbs::NetworkStrut>(s->name(), s->body_i(), s->u_i(), s->body_j(), s->u_j(), s->network(),
-                                              s->reference_length(), offset, s->centripetal_switch());
     }
-    offset += f->n_states();
   }
   if (!found)
     throw ModelError(fmt::format("{}: the model has no actuator whose suspension could be replaced", m.source));
-  m.finalize();
+  m.finalize();  // places the internal states of the new network and of every element after it
   return m;
 }
 

@@ -79,7 +79,7 @@ TEST(Inerter, MassTermIsRankOneAndMatchesForce) {
   Eigen::VectorXd qdd = Eigen::VectorXd::LinSpaced(6, -1, 2);
   ws.qdd = qdd;
   double F = model.forces[0]->force(model, 0, x, ws);
-  StrutKinematics s = static_cast<const Strut&>(*model.forces[0]).kinematics(x);
+  StrutKinematics s = static_cast<const Strut&>(*model.forces[0]).kinematics(model, x);
   // Q_I = −F Jᵀ = −M_I q̈ + Q_Iv  (eq. 3.31)
   Eigen::VectorXd QI = -MI * qdd + ws.Q;
   EXPECT_LT((QI + F * Eigen::VectorXd(s.J)).cwiseAbs().maxCoeff(), 1e-10);

@@ -259,7 +259,7 @@ TEST(NetworkStrut, EnergyBalanceOfTheWholeSystem) {
   network::Network net = network::simplify(
       network::assign(network::parse("b2|(b-(k|c))"), {{"b2", 4}, {"b", 10}, {"k", 100}, {"c", 100}}));
   m.forces[1] = std::make_shared<mbs::NetworkStrut>("strut", 0, mbs::Vec2(0.25, 0), 1, mbs::Vec2(0.25, 0), net,
-                                                    old.reference_length(), 0);
+                                                    old.reference_length());
   m.finalize();
   ASSERT_EQ(m.n_states(), 2);
   solve::IntegratorOptions opt;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "inerta/mbs/model.hpp"
+#include "inerta/pantograph/pantograph.hpp"
 
 namespace inerta::io {
 
@@ -19,6 +20,12 @@ mbs::Model load_model(const std::string& path, const std::vector<std::string>& o
 /// Same, from text; `source` names the text in messages.
 mbs::Model parse_model(const std::string& text, const std::string& source,
                        const std::vector<std::string>& overrides = {});
+
+/// A pantograph: the model and its `pantograph:` section (contact marker, rig joint). ModelError
+/// if the file has no such section.
+pantograph::Pantograph load_pantograph(const std::string& path, const std::vector<std::string>& overrides = {});
+pantograph::Pantograph parse_pantograph(const std::string& text, const std::string& source,
+                                        const std::vector<std::string>& overrides = {});
 
 /// The number at an override key ("c2.c", "kf_cf.k", "actuator.params.k") in model text, or
 /// nullopt for a `params` value the file leaves to its layout's default. ModelError as for overrides.

@@ -85,8 +85,8 @@ class RotationalSpringDamper : public ForceElement {
   double length(const Model&, const State& x) const override;                             // Δθ
 
  private:
-  double angle(const State& x) const;
-  double rate(const State& x) const;
+  double angle(const Model& model, const State& x) const;
+  double rate(const Model& model, const State& x) const;
   int bi_, bj_;
   double k_, a0_, c_;
   Spatial sp_;

@@ -3,6 +3,7 @@
 // its generalised force into Workspace::Q and, for inerters, its mass term into Workspace::M
 // (eq. 3.33); it never overwrites them. Each element reports its stored energy and the power it
 // delivers, so that d/dt(T + Σ energy) = Σ power holds for any model without driven constraints.
+#include <memory>
 #include <string>
 
 namespace inerta::mbs {
@@ -29,9 +30,13 @@ class ForceElement {
   virtual double length(const Model& model, const State& x) const;
 
   /// Internal states (e.g. the internal nodes of a network strut): their number and their first
-  /// index in State::z. add() writes their derivatives into Workspace::zd.
+  /// index in State::z, assigned by the compile step (Model::finalize). add() writes their
+  /// derivatives into Workspace::zd.
   virtual int n_states() const { return 0; }
   int state_offset() const { return state_offset_; }
+  /// A copy of this element whose states start at `offset` (called by Model::finalize). Every
+  /// element with n_states() > 0 implements it; the default throws std::logic_error.
+  virtual std::shared_ptr<const ForceElement> with_state_offset(int offset) const;
   /// Sets the internal states to their steady values at rest in the configuration x.q.
   virtual void relax(const Model&, State&) const {}
 

@@ -11,6 +11,7 @@
 #include "inerta/mbs/kinematics.hpp"
 #include "inerta/mbs/output.hpp"
 #include "inerta/mbs/spatial.hpp"
+#include "inerta/mbs/state.hpp"
 
 namespace inerta::mbs {
 
@@ -57,8 +58,8 @@ struct Model {
   std::vector<std::shared_ptr<const ForceElement>> forces;
   std::vector<Output> outputs;
   std::vector<int> held;           ///< coordinates held fixed during assembly
-  std::string contact_marker;      ///< pantograph: the head's contact point with the wire ("" if none)
-  std::string rig_joint;           ///< pantograph: the joint that holds the head when no catenary is attached
+  std::string contact_marker;      ///< TRANSITION (goes with the catenary interface): pantograph::Pantograph
+  std::string rig_joint;           ///< TRANSITION
   std::vector<std::string> notes;  ///< things the loader decided that a user should read (printed by the CLI)
 
   int dimension = 2;  ///< 2 (planar) or 3 (spatial)
@@ -80,8 +81,20 @@ struct Model {
   /// rows are eliminated there, dynamics.cpp).
   int n_solved_rows() const { return n_joint_rows_; }
 
-  /// Assigns constraint rows and counts internal states; call after joints and forces are final.
+  /// The compile step: assigns every body's coordinate address, every joint's constraint rows and
+  /// every force element's internal-state offset (an element whose states must move is replaced by
+  /// a relocated copy, ForceElement::with_state_offset). Call after any change of bodies, joints or
+  /// forces; the transformations in this library (remove_joint, coupling, suspension replacement)
+  /// do, so no offset can go stale.
   void finalize();
+
+  // Address table (valid after finalize) and the per-body views that use it.
+  int q_adr(int body) const { return q_adr_[static_cast<std::size_t>(body)]; }  ///< first coordinate of body
+  int state_adr(int force) const { return state_adr_[static_cast<std::size_t>(force)]; }  ///< first z of element
+  Vec3 q_of(const State& x, int body) const;   ///< 2D body coordinates [x y θ] (zeros for ground)
+  Vec3 qd_of(const State& x, int body) const;  ///< 2D velocities
+  BodyFrame frame(const State& x, int body) const;      ///< 2D frame (identity for ground)
+  SpatialFrame sframe(const State& x, int body) const;  ///< 3D frame (identity for ground)
 
   /// Removes joint `name` if present (outputs of that joint go, the others are re-indexed) and
   /// refinalizes; returns whether it was there.
@@ -95,6 +108,7 @@ struct Model {
   int n_constraints_ = 0;
   int n_joint_rows_ = 0;
   int n_states_ = 0;
+  std::vector<int> q_adr_, state_adr_;
 };
 
 }  // namespace inerta::mbs

@@ -13,9 +13,10 @@ namespace inerta::mbs {
 
 class NetworkStrut : public Strut {
  public:
-  /// `net` must be simplified and neither open nor rigid; z occupies State::z[state_offset ...].
+  /// `net` must be simplified and neither open nor rigid; z occupies State::z[state_offset() ...],
+  /// placed by Model::finalize.
   NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net, double l_ref,
-               int state_offset, bool centripetal = true);
+               bool centripetal = true);
   const network::Network& network() const { return net_; }
   const network::Realisation& realisation() const { return r_; }
   double reference_length() const { return l_ref_; }
@@ -27,6 +28,7 @@ class NetworkStrut : public Strut {
   double power(const Model& model, double t, const State& x) const override;
   double force(const Model& model, double t, const State& x, const Workspace& ws) const override;
   int n_states() const override { return r_.n_states(); }
+  std::shared_ptr<const ForceElement> with_state_offset(int offset) const override;
   void relax(const Model& model, State& x) const override;
 
  protected:
@@ -53,9 +55,10 @@ class Actuator : public NetworkStrut {
     double friction = 0;              ///< F_r, N (≥ 0)
     double friction_velocity = 1e-3;  ///< v_r, m/s
   };
-  Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
-           int state_offset, Params p, bool centripetal = true);
+  Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref, Params p,
+           bool centripetal = true);
   const Params& params() const { return p_; }
+  std::shared_ptr<const ForceElement> with_state_offset(int offset) const override;
 
   void add(const Model& model, double t, const State& x, Workspace& ws) const override;
   double energy(const Model& model, double t, const State& x) const override;  // + F_c l, + piston ½ m v², − m_p g·r

@@ -14,14 +14,7 @@ struct Model;
 struct State {
   Eigen::VectorXd q, qd;
   Eigen::VectorXd z;  ///< internal states of force elements (network struts), Model::n_states()
-  /// Body coordinates [x y θ] (zeros for ground, body < 0).
-  Vec3 q_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(q.segment<3>(3 * body)); }
-  Vec3 qd_of(int body) const { return body < 0 ? Vec3::Zero() : Vec3(qd.segment<3>(3 * body)); }
-  BodyFrame frame(int body) const { return body < 0 ? BodyFrame{} : BodyFrame::of(q_of(body), qd_of(body)); }
-  /// 3D: the frame of body `body` (coordinates [R; p], 7 per body).
-  SpatialFrame sframe(int body) const {
-    return body < 0 ? SpatialFrame{} : SpatialFrame::of(q.segment<7>(7 * body), qd.segment<7>(7 * body));
-  }
+  // Per-body views go through the model's address table: Model::q_of, frame, sframe.
 };
 
 /// Scratch space of `accelerations` (eq. 4.12): sized for one model, reused for every call.

@@ -29,7 +29,7 @@ class Strut : public ForceElement {
         u_i_(u_i.u),
         u_j_(u_j.u),
         spatial_(u_i.spatial) {}
-  StrutKinematics kinematics(const State& x) const;
+  StrutKinematics kinematics(const Model& model, const State& x) const;
   StrutKinematics kinematics(const Workspace& ws) const;  ///< from the frames of ws.set_state
   double length(const Model&, const State& x) const override;
   int body_i() const { return body_i_; }
