@@ -8,8 +8,8 @@
 
 using namespace inerta;
 
-static const mbs::Model& hsx() {
-  static mbs::Model m = io::load_model(INERTA_SOURCE_DIR "/models/hsx.yaml");
+static const pantograph::Pantograph& hsx() {
+  static pantograph::Pantograph m = io::load_pantograph(INERTA_SOURCE_DIR "/models/hsx.yaml");
   return m;
 }
 static std::vector<double> speeds() {
@@ -22,12 +22,11 @@ static std::vector<double> speeds() {
 static void BM_Hsx180kmh12Spans(benchmark::State& state) {
   io::CatenaryFile c = io::load_catenary(INERTA_SOURCE_DIR "/models/catenary.yaml");
   for (auto _ : state) {
-    mbs::Model m = catenary::couple(hsx(), c.catenary, c.contact, 50.0, "head.cm", "contact");
+    auto sys = c.catenary->couple(hsx(), c.contact, 50.0);
     analysis::RunOptions o;
-    o.speed = 50.0;
     o.min_spans = 12;
     o.fixed_spans = true;
-    auto r = analysis::run_speed(m, o, true);
+    auto r = analysis::run_speed(*sys, o);
     benchmark::DoNotOptimize(r.stats.std);
   }
 }
@@ -37,7 +36,7 @@ BENCHMARK(BM_Hsx180kmh12Spans)->Unit(benchmark::kMillisecond);
 static void BM_HsxSweep51(benchmark::State& state) {
   io::CatenaryFile c = io::load_catenary(INERTA_SOURCE_DIR "/models/catenary.yaml");
   for (auto _ : state) {
-    auto r = analysis::sweep(hsx(), c.catenary, c.contact, speeds(), analysis::RunOptions{});
+    auto r = analysis::sweep(hsx(), *c.catenary, c.contact, speeds(), analysis::RunOptions{});
     benchmark::DoNotOptimize(r.data());
   }
 }
@@ -50,7 +49,7 @@ static void BM_HsxJ2(benchmark::State& state) {
     J2 = 0;
     for (const char* kc0 : {"catenary.kc0=5000", "catenary.kc0=7000", "catenary.kc0=10000"}) {
       io::CatenaryFile c = io::load_catenary(INERTA_SOURCE_DIR "/models/catenary.yaml", {kc0});
-      for (const auto& r : analysis::sweep(hsx(), c.catenary, c.contact, speeds(), analysis::RunOptions{}))
+      for (const auto& r : analysis::sweep(hsx(), *c.catenary, c.contact, speeds(), analysis::RunOptions{}))
         J2 = std::max(J2, r.stats.std);
     }
   }
@@ -67,7 +66,7 @@ static void BM_HsxJ2Periodic(benchmark::State& state) {
   for (auto _ : state) {
     J2 = 0;
     for (const auto& c : cats)
-      for (const auto& r : analysis::sweep_periodic(hsx(), c.catenary, c.contact, speeds(), 8))
+      for (const auto& r : analysis::sweep_periodic(hsx(), *c.catenary, c.contact, speeds(), 8))
         J2 = std::max(J2, r.stats.std);
   }
   state.counters["J2_N"] = J2;

@@ -169,7 +169,7 @@ int frf_fit() {
   auto model_of = [&](const std::vector<double>& values) {
     std::vector<std::string> o = sets;
     for (std::size_t i = 0; i < vars.size(); ++i) o.push_back(fmt::format("{}={:.17g}", vars[i].name, values[i]));
-    return io::parse_model(text, args.model, o);
+    return io::parse_model_file(text, args.model, o);
   };
   {  // overrides and parameter names are checked before the search starts
     std::vector<double> centre;

@@ -20,10 +20,13 @@
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
 #include "inerta/analysis/periodic.hpp"
-#include "inerta/catenary/coupling.hpp"
+#include "inerta/analysis/modal.hpp"
+#include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/io/study_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/mbs/linearisation.hpp"
@@ -169,7 +172,10 @@ network::Params parse_params(const std::vector<std::string>& list) {
 double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6 : v; }
 
 // The pantograph with the requested suspension, and the catenary file with its overrides.
-std::pair<mbs::Model, io::CatenaryFile> pantograph_setup(mbs::Model model, const CatenaryArgs& c) {
+std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::string& path, const CatenaryArgs& c,
+                                                                     bool no_centripetal = false) {
+  pantograph::Pantograph p = io::load_pantograph(path);
+  if (no_centripetal) p.model.options.centripetal = false;
   if (!c.suspension.empty()) {
     network::Network net;
     try {
@@ -177,19 +183,14 @@ std::pair<mbs::Model, io::CatenaryFile> pantograph_setup(mbs::Model model, const
     } catch (const network::NetworkError& e) {
       throw ModelError(fmt::format("--suspension '{}': {}", c.suspension, e.what()));
     }
-    model = pantograph::with_suspension(model, net);
+    p.model = pantograph::with_suspension(p.model, net);
   } else if (!c.params.empty()) {
     throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
   }
   io::CatenaryFile cat = io::load_catenary(c.catenary, c.sets);
   if (!c.contact.empty())
     cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
-  if (model.contact_marker.empty())
-    throw ModelError(
-        fmt::format("{}: the model has no 'pantograph: {{contact: <marker>}}' section; a catenary needs "
-                    "the head's contact point",
-                    model.source));
-  return {model, cat};
+  return {p, cat};
 }
 
 void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
@@ -206,7 +207,7 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
 }
 
 struct SimulateArgs {
-  std::string model, out;
+  std::string model, out, positions;
   double t_end = -1, sample = -1, rtol = 1e-6, atol = 1e-8, steady_from = -1, max_step = 0;
   bool no_centripetal = false, from_equilibrium = false;
   std::string integrator = "rk";
@@ -215,113 +216,143 @@ struct SimulateArgs {
   int spans = 12;
 };
 
-int cmd_simulate(const SimulateArgs& a) {
-  mbs::Model model = io::load_model(a.model);
-  if (a.no_centripetal) model.options.centripetal = false;
-  double t_end = a.t_end > 0 ? a.t_end : model.options.t_end;
-  double dt = a.sample > 0 ? a.sample : model.options.sample;
-  bool from_equilibrium = a.from_equilibrium, bilateral = false;
-  double span_time = 0;
-  if (!a.cat.catenary.empty()) {
-    if (!(a.speed > 0)) throw CLI::ValidationError("--speed", "a run under a catenary needs --speed > 0");
-    auto [panto, cat] = pantograph_setup(model, a.cat);
-    const double v = to_ms(a.speed, a.cat.unit);
-    model = catenary::couple(panto, cat.catenary, cat.contact, v, panto.contact_marker, panto.rig_joint);
-    bilateral = cat.contact.kind == catenary::Contact::Kind::Bilateral;
-    span_time = cat.catenary.span / v;
-    if (a.t_end <= 0) t_end = a.spans * span_time;
-    if (a.sample <= 0) dt = span_time / 400;
-    from_equilibrium = true;  // pantograph + catenary start in static equilibrium (no start-up jolt)
-  } else if (a.speed > 0) {
-    throw CLI::ValidationError("--speed", "needs --catenary FILE");
+// "0,200.5" → {0, 200.5}: positions along the line, m.
+std::vector<double> parse_positions(const std::string& list) {
+  std::vector<double> x;
+  std::stringstream ss(list);
+  for (std::string item; std::getline(ss, item, ',');) {
+    double v = 0;
+    if (!CLI::detail::lexical_cast(item, v) || !std::isfinite(v))
+      throw CLI::ValidationError("--positions", "expected comma-separated positions in m, got '" + list + "'");
+    x.push_back(v);
   }
-  for (const auto& note : model.notes) fmt::print(a.out.empty() ? stderr : stdout, "note: {}\n", note);
+  if (x.empty()) throw CLI::ValidationError("--positions", "expected at least one position");
+  return x;
+}
+
+void print_steady(std::FILE* info, double from, const std::vector<analysis::OutputSummary>& steady,
+                  const std::string& prefix = "") {
+  if (steady.empty() || steady.front().samples == 0) return;
+  fmt::print(info, "steady state t >= {:g} s ({} samples):\n", from, steady.front().samples);
+  fmt::print(info, "  {:<14} {:>14} {:>14} {:>14} {:>14} {:>14}\n", "output", "initial", "min", "max", "peak-to-peak",
+             "mean-initial");
+  for (const auto& o : steady)
+    fmt::print(info, "  {:<14} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g}\n", prefix + o.name, o.initial, o.min,
+               o.max, o.max - o.min, o.mean - o.initial);
+}
+
+// Writes histories that share their time samples side by side: t, then each one's columns.
+void write_csv(std::FILE* out, const std::vector<const analysis::TimeHistory*>& hs,
+               const std::vector<std::string>& prefixes) {
+  std::string line = "t";
+  for (std::size_t p = 0; p < hs.size(); ++p)
+    for (const auto& n : hs[p]->names) line += "," + prefixes[p] + n;
+  line += '\n';
+  std::fputs(line.c_str(), out);
+  const std::size_t rows = hs.front()->t.size();
+  for (std::size_t i = 0; i < rows; ++i) {
+    line.clear();
+    append_number(line, hs.front()->t[i]);
+    for (const auto* h : hs)
+      for (const auto& c : h->columns) {
+        line += ',';
+        append_number(line, i < c.size() ? c[i] : NAN);
+      }
+    line += '\n';
+    std::fputs(line.c_str(), out);
+  }
+}
+
+int cmd_simulate(const SimulateArgs& a) {
   solve::IntegratorOptions opt;
   opt.method = solve::parse_method(a.integrator);
   opt.rtol = a.rtol;
   opt.atol = a.atol;
   opt.max_step = a.max_step;
-
   std::FILE* info = a.out.empty() ? stderr : stdout;  // keep a CSV on stdout clean
-  mbs::AssemblyReport rep;
-  mbs::State x = mbs::assemble(model, 0.0, &rep);
-  if (rep.initial_residual > 1e-9) print_assembly(info, model, rep);
-  if (from_equilibrium) {
-    mbs::EquilibriumReport eq;
-    mbs::static_equilibrium(model, 0.0, x, &eq);
-    fmt::print(info, "static equilibrium: {} iteration(s)", eq.iterations);
-    if (eq.max_move > 0) fmt::print(info, ", largest move {:.4g} on {}", eq.max_move, model.coord_name(eq.largest));
+  const bool show_progress = isatty(STDERR_FILENO) && a.out.size() > 0;
+  auto progress = [&](double t, double t_end) {
+    if (show_progress) fmt::print(stderr, "\r  t = {:.4g} / {:.4g} s ({:3.0f} %)", t, t_end, 100 * t / t_end);
+  };
+  auto clear_progress = [&] {
+    if (show_progress) fmt::print(stderr, "\r{:60}\r", "");
+  };
+  auto run_line = [&](const std::string& name, double t_end, const solve::RunStats& st, bool centripetal) {
+    fmt::print(info,
+               "simulated {} to t = {:g} s: {} steps, {} RHS evaluations, wall {:.3f} s, "
+               "max constraint violation {:.3g} (velocity {:.3g}); integrator {}, rtol {:g}, atol {:g}, centripetal {}\n",
+               name, t_end, st.steps, st.rhs_evals, st.wall_s, st.max_violation, st.max_velocity_violation,
+               solve::method_name(opt.method), opt.rtol, opt.atol, centripetal ? "on" : "off");
+  };
+
+  if (!a.cat.catenary.empty()) {
+    // Pantographs under a catenary: from the coupled static equilibrium (no start-up jolt).
+    if (!(a.speed > 0)) throw CLI::ValidationError("--speed", "a run under a catenary needs --speed > 0");
+    auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
+    for (const auto& note : panto.model.notes) fmt::print(info, "note: {}\n", note);
+    std::vector<catenary::PantographOnLine> train;
+    for (double x0 : a.positions.empty() ? std::vector<double>{0.0} : parse_positions(a.positions))
+      train.push_back({panto, x0, cat.contact});
+    analysis::CoupledOptions co;
+    co.spans = a.spans;
+    co.t_end = a.t_end;
+    co.sample = a.sample;
+    co.integrator = opt;
+    const double v = to_ms(a.speed, a.cat.unit);
+    const analysis::CoupledSimulation r = analysis::simulate_coupled(train, *cat.catenary, v, co, progress);
+    clear_progress();
+    OutputFile file(a.out);
+    std::vector<const analysis::TimeHistory*> hs;
+    std::vector<std::string> prefixes;
+    for (std::size_t k = 0; k < r.histories.size(); ++k)
+      hs.push_back(&r.histories[k]), prefixes.push_back(train.size() > 1 ? fmt::format("p{}.", k + 1) : "");
+    write_csv(file.get(), hs, prefixes);
+    run_line(panto.model.name, r.t_end, r.stats, panto.model.options.centripetal);
+    fmt::print(info, "catenary: {}; {} contact, v = {:.4g} km/h\n", cat.catenary->describe(),
+               catenary::kind_name(cat.contact.kind), v * 3.6);
+    if (a.steady_from >= 0)
+      for (std::size_t k = 0; k < r.histories.size(); ++k)
+        print_steady(info, a.steady_from, analysis::summarise(r.histories[k], a.steady_from), prefixes[k]);
+    for (std::size_t k = 0; k < r.contacts.size(); ++k) {
+      const auto& c = r.contacts[k];
+      const analysis::ContactStatistics& cs = c.stats;
+      fmt::print(info,
+                 "{}contact force over the last {} spans (t >= {:.4g} s): mean {:.2f} N, std {:.2f} N, max {:.2f} N, "
+                 "min {:.2f} N, mean ± 3σ {:.2f} / {:.2f} N, contact loss {:.2f} %\n",
+                 train.size() > 1 ? fmt::format("pantograph {} (x0 = {:g} m): ", k + 1, train[k].x0) : "",
+                 co.window_spans, r.window_from, cs.mean, cs.std, cs.max, cs.min, cs.stat_max, cs.stat_min,
+                 cs.loss_pct);
+      if (c.lost_samples > 0)
+        fmt::print(info, "  contact lost in {} of {} samples; first at t = {:.6g} s, x = {:.6g} m along the line\n",
+                   c.lost_samples, r.histories[k].t.size(), c.first_loss_t, c.first_loss_x);
+    }
+    if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
+    return 0;
+  }
+  if (a.speed > 0) throw CLI::ValidationError("--speed", "needs --catenary FILE");
+  if (!a.positions.empty()) throw CLI::ValidationError("--positions", "needs --catenary FILE");
+  mbs::Model model = io::load_model(a.model);
+  if (a.no_centripetal) model.options.centripetal = false;
+  for (const auto& note : model.notes) fmt::print(info, "note: {}\n", note);
+  analysis::SimulateOptions so;
+  so.t_end = a.t_end;
+  so.sample = a.sample;
+  so.integrator = opt;
+  so.from_equilibrium = a.from_equilibrium;
+  so.steady_from = a.steady_from;
+  const analysis::Simulation r = analysis::simulate(model, so, progress);
+  clear_progress();
+  if (r.assembly.initial_residual > 1e-9) print_assembly(info, model, r.assembly);
+  if (r.equilibrium) {
+    fmt::print(info, "static equilibrium: {} iteration(s)", r.equilibrium->iterations);
+    if (r.equilibrium->max_move > 0)
+      fmt::print(info, ", largest move {:.4g} on {}", r.equilibrium->max_move, model.coord_name(r.equilibrium->largest));
     fmt::print(info, "\n");
   }
-
   OutputFile file(a.out);
-  std::FILE* out = file.get();
-  fmt::print(out, "t");
-  for (const auto& o : model.outputs) fmt::print(out, ",{}", o.name);
-  fmt::print(out, "\n");
-
-  const std::size_t no = model.outputs.size();
-  std::vector<double> first(no, 0), lo(no, INFINITY), hi(no, -INFINITY), sum(no, 0);
-  long n_steady = 0;
-  const bool progress = isatty(STDERR_FILENO) && a.out.size() > 0;
-  double next_report = 0;
-  std::string line;
-  int f_contact = -1;
-  for (std::size_t k = 0; k < no; ++k)
-    if (model.outputs[k].name == "F_contact" && span_time > 0) f_contact = static_cast<int>(k);
-  std::vector<double> F_window;  // contact force over the last two spans
-  auto observer = [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
-    if (f_contact >= 0) {
-      const double F = mbs::evaluate_output(model.outputs[static_cast<std::size_t>(f_contact)], model, t, s, ws);
-      if (bilateral && F < 0)
-        throw NumericalError(
-            fmt::format("t = {:.6g} s: the bilateral contact force is {:.4g} N < 0 (the head pulls "
-                        "the wire down); the run is invalid for a bilateral contact",
-                        t, F));
-      if (t >= t_end - 2 * span_time - 1e-9) F_window.push_back(F);
-    }
-    line.clear();
-    append_number(line, t);
-    const bool steady = a.steady_from >= 0 && t >= a.steady_from - 1e-12;
-    for (std::size_t k = 0; k < no; ++k) {
-      double v = mbs::evaluate_output(model.outputs[k], model, t, s, ws);
-      line += ',';
-      append_number(line, v);
-      if (t == 0.0) first[k] = v;
-      if (steady) lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v), sum[k] += v;
-    }
-    n_steady += steady;
-    line += '\n';
-    std::fputs(line.c_str(), out);
-    if (progress && t >= next_report) {
-      fmt::print(stderr, "\r  t = {:.4g} / {:.4g} s ({:3.0f} %)", t, t_end, 100 * t / t_end);
-      next_report += t_end / 50;
-    }
-  };
-  bool need_acc = false;
-  for (const auto& o : model.outputs) need_acc = need_acc || mbs::needs_accelerations(o);
-  solve::RunStats st = solve::integrate(model, x, 0.0, t_end, dt, opt, observer, need_acc);
-  if (progress) fmt::print(stderr, "\r{:60}\r", "");
-  fmt::print(info,
-             "simulated {} to t = {:g} s: {} steps, {} RHS evaluations, wall {:.3f} s, "
-             "max constraint violation {:.3g} (velocity {:.3g}); integrator {}, rtol {:g}, atol {:g}, centripetal {}\n",
-             model.name, t_end, st.steps, st.rhs_evals, st.wall_s, st.max_violation, st.max_velocity_violation,
-             solve::method_name(opt.method), opt.rtol, opt.atol, model.options.centripetal ? "on" : "off");
-  if (a.steady_from >= 0 && n_steady > 0) {
-    fmt::print(info, "steady state t >= {:g} s ({} samples):\n", a.steady_from, n_steady);
-    fmt::print(info, "  {:<14} {:>14} {:>14} {:>14} {:>14} {:>14}\n", "output", "initial", "min", "max", "peak-to-peak",
-               "mean-initial");
-    for (std::size_t k = 0; k < no; ++k)
-      fmt::print(info, "  {:<14} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g} {:>14.6g}\n", model.outputs[k].name, first[k],
-                 lo[k], hi[k], hi[k] - lo[k], sum[k] / static_cast<double>(n_steady) - first[k]);
-  }
-  if (f_contact >= 0) {
-    analysis::ContactStatistics cs = analysis::statistics(F_window);
-    fmt::print(info,
-               "contact force over the last 2 spans (t >= {:.4g} s): mean {:.2f} N, std {:.2f} N, max {:.2f} N, "
-               "min {:.2f} N, mean ± 3σ {:.2f} / {:.2f} N, contact loss {:.2f} %\n",
-               t_end - 2 * span_time, cs.mean, cs.std, cs.max, cs.min, cs.stat_max, cs.stat_min, cs.loss_pct);
-  }
+  write_csv(file.get(), {&r.history}, {""});
+  run_line(model.name, r.t_end, r.stats, model.options.centripetal);
+  print_steady(info, a.steady_from, r.steady);
   if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
   return 0;
 }
@@ -405,10 +436,8 @@ struct SweepArgs {
 };
 
 int cmd_sweep(const SweepArgs& a) {
-  mbs::Model model = io::load_model(a.model);
-  if (a.no_centripetal) model.options.centripetal = false;
-  auto [panto, cat] = pantograph_setup(model, a.cat);
-  for (const auto& note : panto.notes) fmt::print("note: {}\n", note);
+  auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
+  for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
   for (double s : v_user) {
     if (!(s > 0)) throw CLI::ValidationError("--speeds", "speeds must be > 0");
@@ -420,14 +449,13 @@ int cmd_sweep(const SweepArgs& a) {
   o.integrator.atol = a.atol;
   const bool tty = isatty(STDOUT_FILENO);
   const auto wall0 = std::chrono::steady_clock::now();
-  fmt::print("sweep: {} speeds, {} contact, k_c0 = {:g} N/m, span {:g} m, suspension {}\n", v.size(),
-             cat.contact.kind == catenary::Contact::Kind::Bilateral ? "bilateral" : "penalty", cat.catenary.k[0],
-             cat.catenary.span, a.cat.suspension.empty() ? "from the model" : a.cat.suspension);
+  fmt::print("sweep: {} speeds, {} contact, {}, suspension {}\n", v.size(), catenary::kind_name(cat.contact.kind),
+             cat.catenary->describe(), a.cat.suspension.empty() ? "from the model" : a.cat.suspension);
   std::vector<analysis::SpeedResult> results;
   if (a.method == "periodic")
-    results = analysis::sweep_periodic(panto, cat.catenary, cat.contact, v, a.harmonics);
+    results = analysis::sweep_periodic(panto, *cat.catenary, cat.contact, v, a.harmonics);
   else
-    results = analysis::sweep(panto, cat.catenary, cat.contact, v, o, [&](int done, int total) {
+    results = analysis::sweep(panto, *cat.catenary, cat.contact, v, o, [&](int done, int total) {
       if (!tty) return;
       const int width = 40, filled = width * done / total;
       fmt::print("\r  [{}{}] {}/{} speeds", std::string(static_cast<std::size_t>(filled), '#'),
@@ -467,23 +495,20 @@ struct ModesArgs {
 
 // Modes of the linearised model about its static equilibrium (spec/02 §2.5, spec/06 §6.3).
 int cmd_modes(const ModesArgs& a) {
-  mbs::Model model = io::load_model(a.model);
-  std::string setting;
+  analysis::ModalAnalysis ma;
   if (!a.cat.catenary.empty()) {
-    auto [panto, cat] = pantograph_setup(model, a.cat);
-    for (int i = 1; i <= 3; ++i) cat.catenary.k[i] = cat.catenary.m[i] = cat.catenary.c[i] = 0;  // mean catenary
-    model = catenary::couple(panto, cat.catenary, cat.contact, 1.0, panto.contact_marker, panto.rig_joint);
-    setting =
-        fmt::format("with the mean catenary (k_c0 = {:g} N/m, m_c0 = {:g} kg)", cat.catenary.k[0], cat.catenary.m[0]);
-  } else if (!model.rig_joint.empty()) {
-    double F = 0;
-    model = pantograph::release_head(model, &F);
-    setting = fmt::format("head free under its static contact force {:.2f} N", F);
+    auto [panto, cat] = pantograph_setup(a.model, a.cat);
+    ma = analysis::modal_analysis(panto, *cat.catenary, cat.contact);
+  } else if (const pantograph::Pantograph p = io::load_model_file(a.model); p.has_rig()) {
+    ma = analysis::modal_analysis_free_head(p);
+  } else {
+    ma = analysis::modal_analysis(p.model);
   }
-  mbs::State x = mbs::assemble(model, 0.0);
-  mbs::static_equilibrium(model, 0.0, x);
-  mbs::LinearModel lin = mbs::linearise(model, x, 0.0);
-  std::vector<mbs::Mode> ms = mbs::modes(model, lin);
+  const mbs::Model& model = ma.model;
+  const mbs::State& x = ma.equilibrium;
+  const mbs::LinearModel& lin = ma.linear;
+  const std::vector<mbs::Mode>& ms = ma.modes;
+  const std::string& setting = ma.setting;
   if (!a.export_json.empty()) {
     // The linear model for MATLAB/Python: Ẋ = A X, X = [ξ; ξ̇; z], q = q_e + N ξ; M, C, K reduced.
     OutputFile file(a.export_json);
@@ -537,7 +562,8 @@ struct FrfArgs {
 
 // Test-rig FRF (spec/04 §4.2, eq. 6.25): acceleration over contact force.
 int cmd_frf(const FrfArgs& a) {
-  mbs::Model model = io::load_model(a.model);
+  const pantograph::Pantograph rig = io::load_model_file(a.model);
+  const mbs::Model& model = rig.model;
   std::vector<std::string> outputs;
   std::stringstream ss(a.outputs);
   for (std::string o; std::getline(ss, o, ',');)
@@ -549,7 +575,7 @@ int cmd_frf(const FrfArgs& a) {
   const auto wall0 = std::chrono::steady_clock::now();
   analysis::Frf r;
   if (a.method == "linear") {
-    r = analysis::frf_linear(model, outputs, f);
+    r = analysis::frf_linear(rig, outputs, f);
   } else {
     analysis::SteppedSine o;
     o.vc = a.vc;
@@ -557,7 +583,7 @@ int cmd_frf(const FrfArgs& a) {
     o.analysed = a.analysed;
     if (!(o.analysed > 0 && o.analysed <= o.cycles))
       throw CLI::ValidationError("--analysed", "must be between 1 and --cycles");
-    r = analysis::frf_stepped_sine(model, outputs, f, o);
+    r = analysis::frf_stepped_sine(rig, outputs, f, o);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   OutputFile file(a.out);
@@ -594,7 +620,11 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
   const std::vector<double> fp = frequency_range(a.fp, "--fp");
   for (double f : fp)
     if (!(f > 0)) throw CLI::ValidationError("--fp", "pumping frequencies must be > 0");
-  auto r = analysis::catenary_response(c.catenary, a.force, fp);
+  const catenary::LumpedCatenary* lumped = c.catenary->point_model();
+  if (!lumped)
+    throw ModelError(fmt::format("{}: catenary-response analyses the lumped catenary (eq. 7.1); this file is a {}",
+                                 a.catenary, c.catenary->describe()));
+  auto r = analysis::catenary_response(*lumped, a.force, fp);
   OutputFile file(a.out);
   fmt::print(file.get(), "fp_hz,v_ms,v_kmh,acc_amplitude,disp_amplitude,mean_uplift,stable\n");
   std::size_t kmax = 0;
@@ -610,7 +640,7 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
   fmt::print(info,
              "catenary alone under {:g} N: natural frequency (1/2π)·sqrt(k_c0/m_c0) = {:.4f} Hz; largest steady "
              "acceleration amplitude {:.4g} m/s² at f_p = {:.4g} Hz (v = {:.4g} km/h)\n",
-             a.force, c.catenary.natural_frequency(), r[kmax].acc_amplitude, r[kmax].fp, r[kmax].speed * 3.6);
+             a.force, lumped->natural_frequency(), r[kmax].acc_amplitude, r[kmax].fp, r[kmax].speed * 3.6);
   if (!unstable.empty())
     fmt::print(info,
                "note: no steady state (the response grows: parametric resonance of the time-varying stiffness) for "
@@ -651,7 +681,7 @@ void draw_plots(const std::string& dir) {
 
 // Structure-based design (spec/07): optimise every layout of the study, print and write the table.
 int cmd_optimise(const OptimiseArgs& a) {
-  optim::Study study = optim::load_study(a.study);
+  optim::Study study = io::load_study(a.study);
   const bool tty = isatty(STDOUT_FILENO);
   fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), periodic fast path\n", study.name,
              study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts,
@@ -795,6 +825,8 @@ int main(int argc, char** argv) {
   sim->add_option("--speed", sa.speed, "Train speed (with --catenary), in --unit");
   sim->add_option("--spans", sa.spans, "Spans to simulate under a catenary (t_end = spans · L / v)")
       ->capture_default_str();
+  sim->add_option("--positions", sa.positions,
+                  "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200");
 
   AdmittanceArgs aa;
   auto* adm = app.add_subcommand("admittance", "Admittance Y = force / relative velocity of a network (CSV)");

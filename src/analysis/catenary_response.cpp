@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "inerta/catenary/coupling.hpp"
+#include "inerta/catenary/lumped.hpp"
 #include "inerta/mbs/applied_forces.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"

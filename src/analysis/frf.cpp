@@ -25,29 +25,27 @@ int output_index(const mbs::Model& m, const std::string& name) {
   throw ModelError(fmt::format("{}: no output '{}'", m.source, name));
 }
 
-int rig_joint(const mbs::Model& m) {
-  const int j = m.find_joint(m.rig_joint);
-  if (m.rig_joint.empty() || j < 0 || m.joints[static_cast<std::size_t>(j)].type != mbs::JointType::Driving)
-    throw ModelError(
-        fmt::format("{}: the FRF needs the pantograph's rig joint (pantograph: rig_joint), a driving joint", m.source));
+int rig_joint(const pantograph::Pantograph& p) {
+  const int j = p.rig_joint;
+  if (j < 0 || p.model.joints[static_cast<std::size_t>(j)].type != mbs::JointType::Driving)
+    throw ModelError(fmt::format("{}: the FRF needs the pantograph's rig joint (pantograph: rig_joint), a driving joint",
+                                 p.model.source));
   return j;
 }
 
 }  // namespace
 
-Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, const std::vector<double>& f) {
+Frf frf_linear(const pantograph::Pantograph& p, const std::vector<std::string>& outputs, const std::vector<double>& f) {
+  const mbs::Model& rig = p.model;
   const int n = rig.n_coords(), m = rig.n_constraints(), nz = rig.n_states();
-  const int jr = rig_joint(rig), row = rig.joints[static_cast<std::size_t>(jr)].row;
-  const int fc = output_index(rig, "F_contact");
+  const int jr = rig_joint(p), row = rig.joints[static_cast<std::size_t>(jr)].row;
   std::vector<int> outs;
   for (const auto& o : outputs) {
     outs.push_back(output_index(rig, o));
     if (rig.outputs[static_cast<std::size_t>(outs.back())].kind != mbs::Output::Kind::Acceleration)
       throw ModelError(fmt::format("output '{}' is not an acceleration", o));
   }
-  const auto& Fo = rig.outputs[static_cast<std::size_t>(fc)];
-  if (Fo.kind != mbs::Output::Kind::Reaction && Fo.kind != mbs::Output::Kind::Multiplier)
-    throw ModelError("F_contact must be the rig joint's reaction or multiplier for an FRF");
+  const mbs::Output Fo = p.rig_force();
 
   // Equilibrium with the head held, and its multipliers.
   mbs::State x = mbs::assemble(rig, 0.0);
@@ -110,13 +108,9 @@ Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, c
     // Contact force: the output's linear part in δλ (reaction on the held body, or the multiplier).
     cd F = 0;
     const auto& jt = rig.joints[static_cast<std::size_t>(Fo.index)];
-    if (Fo.kind == mbs::Output::Kind::Multiplier) {
-      F = dl[jt.row + Fo.component];
-    } else {
-      mbs::ConstraintRow rows[3];
-      const int nr = mbs::evaluate_joint(jt, 0.0, rig.frame(x, jt.body_i), rig.frame(x, jt.body_j), rows);
-      for (int r = 0; r < nr; ++r) F -= rows[r].gj[Fo.component] * dl[jt.row + r];
-    }
+    mbs::ConstraintRow rows[3];
+    const int nr = mbs::evaluate_joint(jt, 0.0, rig.frame(x, jt.body_i), rig.frame(x, jt.body_j), rows);
+    for (int r = 0; r < nr; ++r) F -= rows[r].gj[Fo.component] * dl[jt.row + r];
     F *= Fo.scale;
     for (std::size_t i = 0; i < outs.size(); ++i) {
       const auto& o = rig.outputs[static_cast<std::size_t>(outs[i])];
@@ -132,10 +126,11 @@ Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, c
   return out;
 }
 
-Frf frf_stepped_sine(const mbs::Model& rig, const std::vector<std::string>& outputs, const std::vector<double>& f,
-                     const SteppedSine& o) {
-  const int jr = rig_joint(rig);
-  const int fc = output_index(rig, "F_contact");
+Frf frf_stepped_sine(const pantograph::Pantograph& p, const std::vector<std::string>& outputs,
+                     const std::vector<double>& f, const SteppedSine& o) {
+  const mbs::Model& rig = p.model;
+  const int jr = rig_joint(p);
+  const mbs::Output Fo = p.rig_force();
   std::vector<int> outs;
   for (const auto& name : outputs) outs.push_back(output_index(rig, name));
   mbs::State x0 = mbs::assemble(rig, 0.0);
@@ -169,7 +164,7 @@ Frf frf_stepped_sine(const mbs::Model& rig, const std::vector<std::string>& outp
             std::vector<double> v(outs.size() + 1);
             for (std::size_t i = 0; i < outs.size(); ++i)
               v[i] = mbs::evaluate_output(m.outputs[static_cast<std::size_t>(outs[i])], m, t, s, ws);
-            v.back() = mbs::evaluate_output(m.outputs[static_cast<std::size_t>(fc)], m, t, s, ws);
+            v.back() = mbs::evaluate_output(Fo, m, t, s, ws);
             if (last_t >= t0 - 1e-12) {  // trapezoid of v e^{−iωt} over whole analysed cycles
               const double dt = t - last_t;
               const cd e1 = std::exp(cd(0, -w * last_t)), e2 = std::exp(cd(0, -w * t));

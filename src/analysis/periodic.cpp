@@ -7,6 +7,7 @@
 #include <complex>
 #include <numbers>
 
+#include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/mbs/applied_forces.hpp"
 #include "inerta/mbs/assembly.hpp"
@@ -17,19 +18,21 @@ namespace inerta::analysis {
 
 using cd = std::complex<double>;
 
-std::vector<SpeedResult> sweep_periodic(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds, int H) {
+  const catenary::LumpedCatenary* point = catenary.point_model();
+  if (!point)
+    throw ModelError(fmt::format("the periodic method needs a point model of the catenary (the lumped catenary); {} "
+                                 "has none: use the time method",
+                                 catenary.describe()));
+  const catenary::LumpedCatenary& cat = *point;
   if (cat.m[1] != 0 || cat.m[2] != 0 || cat.m[3] != 0)
     throw ModelError("the periodic method supports stiffness and damping harmonics only (mc1..mc3 must be 0)");
   catenary::LumpedCatenary mean = cat;
   for (int i = 1; i <= 3; ++i) mean.k[static_cast<std::size_t>(i)] = mean.c[static_cast<std::size_t>(i)] = 0;
-  mbs::Model m = catenary::couple(pantograph, mean, contact, 1.0, pantograph.contact_marker, pantograph.rig_joint);
-  const int wire = m.find_body("catenary"), wy = 3 * wire + 1;
-  int fo = -1, ce = -1;
-  for (std::size_t k = 0; k < m.outputs.size(); ++k)
-    if (m.outputs[k].name == "F_contact") fo = static_cast<int>(k);
-  for (std::size_t k = 0; k < m.forces.size(); ++k)
-    if (m.forces[k]->name() == "catenary") ce = static_cast<int>(k);
+  const catenary::LumpedCoupling lc = catenary::couple_lumped(pantograph, mean, contact, 1.0);
+  const mbs::Model& m = lc.model;
+  const int wire = lc.wire_body, wy = lc.wire_y;
   // The same model with a unit upward probe force on the wire: the input direction B and Λ_f.
   mbs::Model probe = m;
   probe.forces.push_back(std::make_shared<mbs::PointForce>("probe", wire, mbs::Vec2::Zero(), mbs::Vec2(0, 1),
@@ -40,7 +43,7 @@ std::vector<SpeedResult> sweep_periodic(const mbs::Model& pantograph, const cate
   mbs::static_equilibrium(m, 0.0, xe);
   const mbs::LinearModel L = mbs::linearise(m, xe);
   const int d = L.dof, nz = L.nz, S = 2 * d + nz;
-  const double ys = m.forces[static_cast<std::size_t>(ce)]->length(m, xe);  // static uplift
+  const double ys = xe.q[wy] - lc.y_unloaded;  // static uplift
 
   mbs::Workspace ws(m), wp(probe);
   auto state_of = [&](const Eigen::VectorXd& X) {
@@ -48,7 +51,7 @@ std::vector<SpeedResult> sweep_periodic(const mbs::Model& pantograph, const cate
   };
   auto F_of = [&](const mbs::Model& model, mbs::Workspace& w, const mbs::State& s) {
     mbs::accelerations(model, 0.0, s, w);
-    return mbs::evaluate_output(model.outputs[static_cast<std::size_t>(fo)], model, 0.0, s, w);
+    return mbs::evaluate_output(lc.contact_force, model, 0.0, s, w);
   };
   const Eigen::VectorXd X0 = Eigen::VectorXd::Zero(S);
   const double F_s = F_of(m, ws, state_of(X0));

@@ -875,11 +875,9 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
       if (ld.model.spatial()) rd.fail(p, "pantograph", "the pantograph-catenary analyses are planar (dimension: 2)");
       rd.keys(p, "pantograph", {"contact", "rig_joint"});
       contact = ld.marker(rd.need(p, "contact", "pantograph"), "contact");
-      ld.model.contact_marker = rd.text(p["contact"], "contact");
       if (p["rig_joint"].IsDefined()) {
         const std::string rig = rd.text(p["rig_joint"], "rig_joint");
         rig_joint = ld.model.find_joint(rig);
-        ld.model.rig_joint = rig;
         if (rig_joint < 0) rd.fail(p["rig_joint"], "rig_joint", fmt::format("unknown joint '{}'", rig));
       }
     }
@@ -938,6 +936,15 @@ std::string read_text(const std::string& path) {
 
 mbs::Model load_model(const std::string& path, const std::vector<std::string>& overrides) {
   return parse_model(read_text(path), path, overrides);
+}
+
+pantograph::Pantograph parse_model_file(const std::string& text, const std::string& source,
+                                        const std::vector<std::string>& overrides) {
+  return parse_file(text, source, overrides);
+}
+
+pantograph::Pantograph load_model_file(const std::string& path, const std::vector<std::string>& overrides) {
+  return parse_file(read_text(path), path, overrides);
 }
 
 pantograph::Pantograph load_pantograph(const std::string& path, const std::vector<std::string>& overrides) {

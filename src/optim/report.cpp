@@ -31,8 +31,10 @@ SpeedCurve curve_of(const std::string& label, const std::vector<analysis::SpeedR
 }
 
 // The pantograph with `net` in place of its suspension, relaxed at catenary i's operating length.
-mbs::Model candidate(const Study& study, const network::Network& net, std::size_t i) {
-  return pantograph::with_suspension(study.pantograph, net, study.operating_length[i]);
+pantograph::Pantograph candidate(const Study& study, const network::Network& net, std::size_t i) {
+  pantograph::Pantograph p = study.pantograph;
+  p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
+  return p;
 }
 
 }  // namespace
@@ -41,7 +43,7 @@ std::vector<SpeedCurve> sigma_curves(const Study& study, const network::Network&
   std::vector<SpeedCurve> curves;
   for (std::size_t i = 0; i < study.catenaries.size(); ++i)
     curves.push_back(
-        curve_of(study.catenary_labels[i], analysis::sweep_periodic(candidate(study, net, i), study.catenaries[i],
+        curve_of(study.catenary_labels[i], analysis::sweep_periodic(candidate(study, net, i), *study.catenaries[i],
                                                                     study.contact, study.speeds, study.harmonics)));
   return curves;
 }
@@ -55,9 +57,9 @@ std::vector<SpeedCurve> sigma_curves_time(const Study& study, const network::Net
   std::mutex mutex;
   int done = 0;
   tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
-    mbs::Model m = candidate(study, net, i);
-    m.options.centripetal = centripetal;
-    curves[i] = curve_of(study.catenary_labels[i], analysis::sweep(m, study.catenaries[i], study.contact, study.speeds,
+    pantograph::Pantograph m = candidate(study, net, i);
+    m.model.options.centripetal = centripetal;
+    curves[i] = curve_of(study.catenary_labels[i], analysis::sweep(m, *study.catenaries[i], study.contact, study.speeds,
                                                                    analysis::RunOptions{}, [&](int, int) {
                                                                      std::lock_guard<std::mutex> lock(mutex);
                                                                      ++done;
@@ -78,12 +80,16 @@ StudyCost worst_of(const std::vector<SpeedCurve>& curves) {
   return c;
 }
 
-mbs::Model rig_model(const Study& study, const network::Network& net) {
-  const mbs::Model& p = study.pantograph;
+pantograph::Pantograph rig_model(const Study& study, const network::Network& net) {
+  pantograph::Pantograph rig = study.pantograph;
+  const mbs::Model& p = study.pantograph.model;
   mbs::State x = mbs::assemble(p, 0.0);
   mbs::static_equilibrium(p, 0.0, x);
   for (const auto& f : p.forces)
-    if (std::dynamic_pointer_cast<const mbs::Actuator>(f)) return pantograph::with_suspension(p, net, f->length(p, x));
+    if (std::dynamic_pointer_cast<const mbs::Actuator>(f)) {
+      rig.model = pantograph::with_suspension(p, net, f->length(p, x));
+      return rig;
+    }
   throw ModelError(fmt::format("{}: the pantograph has no actuator", study.source));
 }
 
@@ -95,12 +101,9 @@ std::vector<ForceHistory> contact_histories(const Study& study, const network::N
   const analysis::RunOptions defaults;
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     try {
-      const mbs::Model p = candidate(study, net, i);
-      const mbs::Model m =
-          catenary::couple(p, study.catenaries[i], study.contact, speed, p.contact_marker, p.rig_joint);
-      analysis::RunOptions o = defaults;
-      o.speed = speed;
-      analysis::SpeedResult r = analysis::run_speed(m, o, study.contact.kind == catenary::Contact::Kind::Bilateral);
+      const auto sys = study.catenaries[i]->couple(candidate(study, net, i), study.contact, speed);
+      const analysis::RunOptions o = defaults;
+      analysis::SpeedResult r = analysis::run_speed(*sys, o);
       const std::size_t per = r.F.size() / static_cast<std::size_t>(r.spans),
                         keep = std::min(r.F.size(), per * static_cast<std::size_t>(o.window_spans));
       h[i].catenary = study.catenary_labels[i];

@@ -38,10 +38,10 @@ mbs::Model with_suspension(const mbs::Model& model, const network::Network& boun
   return m;
 }
 
-mbs::Model release_head(const mbs::Model& model, double* static_force) {
-  const int j = model.find_joint(model.rig_joint);
-  if (model.rig_joint.empty() || j < 0)
-    throw ModelError(fmt::format("{}: no rig joint (pantograph: rig_joint) to release", model.source));
+mbs::Model release_head(const Pantograph& p, double* static_force) {
+  const mbs::Model& model = p.model;
+  const int j = p.rig_joint;
+  if (j < 0) throw ModelError(fmt::format("{}: no rig joint (pantograph: rig_joint) to release", model.source));
   mbs::State x = mbs::assemble(model, 0.0);
   mbs::static_equilibrium(model, 0.0, x);
   mbs::Workspace ws(model);
@@ -49,7 +49,7 @@ mbs::Model release_head(const mbs::Model& model, double* static_force) {
   const mbs::Vec3 r = mbs::joint_reaction(model, j, 0.0, x, ws.lambda);  // on the held body
   const int head = model.joints[static_cast<std::size_t>(j)].body_j;
   mbs::Model m = model;
-  m.remove_joint(model.rig_joint);
+  m.remove_joint(model.joints[static_cast<std::size_t>(j)].name);
   const mbs::Vec2 F = r.head<2>();
   if (F.norm() > 0)
     m.forces.push_back(std::make_shared<mbs::PointForce>("static_contact", head, mbs::Vec2::Zero(), F / F.norm(),

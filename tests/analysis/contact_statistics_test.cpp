@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "inerta/error.hpp"
+#include "inerta/catenary/lumped.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
@@ -53,10 +54,10 @@ TEST(ContactStatistics, FormulasOnAKnownSeries) {
 }
 
 TEST(SpeedRun, NoHarmonicsGiveConstantForceAtAnySpeed) {
-  mbs::Model panto = io::parse_model(mini(168.1), "mini.yaml");
+  const pantograph::Pantograph panto = io::parse_pantograph(mini(168.1), "mini.yaml");
   io::CatenaryFile c = io::load_catenary(kCatenary, {"catenary.kc1=0", "catenary.kc2=0", "catenary.kc3=0"});
   analysis::RunOptions o;
-  auto r = analysis::sweep(panto, c.catenary, c.contact, {50 / 3.6, 150 / 3.6, 300 / 3.6}, o);
+  auto r = analysis::sweep(panto, *c.catenary, c.contact, {50 / 3.6, 150 / 3.6, 300 / 3.6}, o);
   for (const auto& s : r) {
     EXPECT_NEAR(s.stats.mean, 70.0, 0.01);
     EXPECT_LT(s.stats.std, 1e-3);  // integrator noise only (σ ≈ 14 N with the harmonics)
@@ -65,13 +66,12 @@ TEST(SpeedRun, NoHarmonicsGiveConstantForceAtAnySpeed) {
 
 TEST(SpeedRun, StatisticsAreConverged) {
   // Doubling the window changes σ by less than 1 % (issue 4).
-  mbs::Model panto = io::parse_model(mini(168.1), "mini.yaml");
+  const pantograph::Pantograph panto = io::parse_pantograph(mini(168.1), "mini.yaml");
   io::CatenaryFile c = io::load_catenary(kCatenary);
   for (double v : {80 / 3.6, 250 / 3.6}) {
-    mbs::Model m = catenary::couple(panto, c.catenary, c.contact, v, "head.top", "contact");
+    auto sys = c.catenary->couple(panto, c.contact, v);
     analysis::RunOptions o;
-    o.speed = v;
-    analysis::SpeedResult r = analysis::run_speed(m, o, true);
+    analysis::SpeedResult r = analysis::run_speed(*sys, o);
     EXPECT_LT(r.sigma_change, 0.005);
     const long per = static_cast<long>(r.F.size()) / r.spans;
     ASSERT_GE(r.spans, 4);
@@ -85,13 +85,12 @@ TEST(SpeedRun, StatisticsAreConverged) {
 
 TEST(SpeedRun, BilateralTensionStopsTheRun) {
   // Actuator force reduced below the head's weight: the head is pulled down by the wire.
-  mbs::Model panto = io::parse_model(mini(90), "mini.yaml");
+  const pantograph::Pantograph panto = io::parse_pantograph(mini(90), "mini.yaml");
   io::CatenaryFile c = io::load_catenary(kCatenary);
-  mbs::Model m = catenary::couple(panto, c.catenary, c.contact, 200 / 3.6, "head.top", "contact");
+  auto sys = c.catenary->couple(panto, c.contact, 200 / 3.6);
   analysis::RunOptions o;
-  o.speed = 200 / 3.6;
   try {
-    analysis::run_speed(m, o, true);
+    analysis::run_speed(*sys, o);
     FAIL() << "expected the bilateral sign check to stop the run";
   } catch (const NumericalError& e) {
     std::string msg = e.what();
@@ -100,20 +99,20 @@ TEST(SpeedRun, BilateralTensionStopsTheRun) {
   }
   // The same with a penalty contact runs and reports contact loss instead.
   c.contact.kind = catenary::Contact::Kind::Penalty;
-  mbs::Model mp = catenary::couple(panto, c.catenary, c.contact, 200 / 3.6, "head.top", "contact");
-  analysis::SpeedResult r = analysis::run_speed(mp, o, false);
+  auto penalty = c.catenary->couple(panto, c.contact, 200 / 3.6);
+  analysis::SpeedResult r = analysis::run_speed(*penalty, o);
   EXPECT_GT(r.stats.loss_pct, 0.0);
 }
 
 TEST(Suspension, ReplacingTheActuatorNetworkKeepsItsConstantForce) {
-  mbs::Model panto = io::parse_model(mini(168.1), "mini.yaml");
-  EXPECT_EQ(panto.n_states(), 1);  // S2-default
-  mbs::Model s = pantograph::with_suspension(panto, network::resolve("S2-1", {{"b", 500}, {"c", 100}, {"k", 5e4}}));
+  const pantograph::Pantograph panto = io::parse_pantograph(mini(168.1), "mini.yaml");
+  EXPECT_EQ(panto.model.n_states(), 1);  // S2-default
+  mbs::Model s = pantograph::with_suspension(panto.model, network::resolve("S2-1", {{"b", 500}, {"c", 100}, {"k", 5e4}}));
   EXPECT_EQ(s.n_states(), 0);
   const auto& a = dynamic_cast<const mbs::Actuator&>(*s.forces[1]);
   EXPECT_EQ(a.params().constant_force, -168.1);
   EXPECT_NEAR(a.realisation().d2, 500, 1e-9);
-  EXPECT_THROW(pantograph::with_suspension(panto, network::resolve("k", {{"k", INFINITY}})), ModelError);
+  EXPECT_THROW(pantograph::with_suspension(panto.model, network::resolve("k", {{"k", INFINITY}})), ModelError);
 }
 
 TEST(CatenaryFile, ErrorsNameTheFileLineOrOverride) {
@@ -131,8 +130,9 @@ TEST(CatenaryFile, ErrorsNameTheFileLineOrOverride) {
   EXPECT_NE(message({"catenary.kc1=8000"}).find("kc0 must exceed"), std::string::npos);
   EXPECT_EQ(message({"catenary.kc0=5000", "contact.type=penalty"}), "");
   io::CatenaryFile c = io::load_catenary(kCatenary, {"catenary.kc0=5000"});
-  EXPECT_EQ(c.catenary.k[0], 5000);
-  EXPECT_EQ(c.catenary.k[1], 2100);
+  ASSERT_NE(c.catenary->point_model(), nullptr);
+  EXPECT_EQ(c.catenary->point_model()->k[0], 5000);
+  EXPECT_EQ(c.catenary->point_model()->k[1], 2100);
   // A file with a bad key names its line.
   const std::string bad = (std::filesystem::temp_directory_path() / "bad_catenary.yaml").string();
   std::ofstream(bad) << "catenary:\n  span: 60\n  kc: [7000, 1, 2]\n";

@@ -11,7 +11,7 @@
 using namespace inerta;
 
 TEST(Frf, LinearEqualsSteppedSineAtSmallAmplitude) {
-  mbs::Model hsx = io::load_model(inerta::testing::model_path("hsx.yaml"));
+  const pantograph::Pantograph hsx = io::load_pantograph(inerta::testing::model_path("hsx.yaml"));
   const std::vector<std::string> outs = {"P_ay", "E_ay", "B_ay"};
   const std::vector<double> f = {0.8, 3.0, 6.5, 8.7, 12.0};
   analysis::Frf lin = analysis::frf_linear(hsx, outs, f);
@@ -31,7 +31,7 @@ TEST(Frf, LinearEqualsSteppedSineAtSmallAmplitude) {
 
 TEST(Frf, HeadPeakNearTheHeadModeAndFlexiblePeakNearTenHz) {
   // The identified model reproduces the thesis's peaks: head ≈ 6 Hz, upper-arm flexibility ≈ 10 Hz.
-  mbs::Model hsx = io::load_model(inerta::testing::model_path("hsx.yaml"));
+  const pantograph::Pantograph hsx = io::load_pantograph(inerta::testing::model_path("hsx.yaml"));
   std::vector<double> f;
   for (double x = 2.0; x <= 15.0; x += 0.05) f.push_back(x);
   analysis::Frf lin = analysis::frf_linear(hsx, {"P_ay", "E_ay"}, f);

@@ -100,7 +100,7 @@ TEST(FrfFit, HsxRecoversFourPerturbedParametersFromNoisyFrfs) {
   std::vector<std::string> set;
   for (std::size_t i = 0; i < keys.size(); ++i) set.push_back(keys[i] + "=" + fmt::format("{:.17g}", truth[i]));
   const std::vector<std::string> outs = {"P_ay", "E_ay", "B_ay"};
-  analysis::Frf meas = analysis::frf_linear(io::parse_model(text, path, set), outs, grid(0.5, 0.25, 11));
+  analysis::Frf meas = analysis::frf_linear(io::parse_model_file(text, path, set), outs, grid(0.5, 0.25, 11));
   std::mt19937 rng(7);
   for (auto& row : meas.H)
     for (auto& h : row) h = inerta::testing::noisy(h, 0.01, rng);
@@ -115,7 +115,7 @@ TEST(FrfFit, HsxRecoversFourPerturbedParametersFromNoisyFrfs) {
   auto model_of = [&](const std::vector<double>& v) {
     std::vector<std::string> s;
     for (std::size_t i = 0; i < v.size(); ++i) s.push_back(keys[i] + "=" + fmt::format("{:.17g}", v[i]));
-    return io::parse_model(text, path, s);
+    return io::parse_model_file(text, path, s);
   };
   const analysis::FrfFit r = analysis::fit_frf(model_of, vars, meas, o);
   for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -144,9 +144,9 @@ TEST(ModelOverrides, OverrideEqualsEditedFile) {
   ASSERT_NE(edited.find(from), std::string::npos);
   edited.replace(edited.find(from), from.size(), to);
   const std::vector<double> f = {3.0, 6.0, 9.0};
-  const auto a = analysis::frf_linear(io::parse_model(text, path, {"c2.c=60"}), {"P_ay"}, f);
-  const auto b = analysis::frf_linear(io::parse_model(edited, path), {"P_ay"}, f);
-  const auto c = analysis::frf_linear(io::parse_model(text, path), {"P_ay"}, f);
+  const auto a = analysis::frf_linear(io::parse_model_file(text, path, {"c2.c=60"}), {"P_ay"}, f);
+  const auto b = analysis::frf_linear(io::parse_model_file(edited, path), {"P_ay"}, f);
+  const auto c = analysis::frf_linear(io::parse_model_file(text, path), {"P_ay"}, f);
   for (std::size_t k = 0; k < f.size(); ++k) {
     EXPECT_EQ(a.H[0][k], b.H[0][k]);
     EXPECT_GT(std::abs(a.H[0][k] - c.H[0][k]), 1e-3 * std::abs(c.H[0][k]));  // the override acts

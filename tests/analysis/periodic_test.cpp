@@ -14,11 +14,11 @@
 using namespace inerta;
 
 namespace {
-void compare(const mbs::Model& panto) {
+void compare(const pantograph::Pantograph& panto) {
   io::CatenaryFile c = io::load_catenary(inerta::testing::model_path("catenary.yaml"));
   const std::vector<double> v = {70 / 3.6, 140 / 3.6, 210 / 3.6, 280 / 3.6};
-  auto time = analysis::sweep(panto, c.catenary, c.contact, v, analysis::RunOptions{});
-  auto fast = analysis::sweep_periodic(panto, c.catenary, c.contact, v, 8);
+  auto time = analysis::sweep(panto, *c.catenary, c.contact, v, analysis::RunOptions{});
+  auto fast = analysis::sweep_periodic(panto, *c.catenary, c.contact, v, 8);
   for (std::size_t i = 0; i < v.size(); ++i) {
     SCOPED_TRACE("v = " + std::to_string(v[i] * 3.6) + " km/h");
     EXPECT_GT(time[i].stats.std, 0.5);
@@ -29,18 +29,19 @@ void compare(const mbs::Model& panto) {
 }  // namespace
 
 TEST(Periodic, AgreesWithTimeDomainForTheDefaultSuspension) {
-  compare(io::load_model(inerta::testing::model_path("hsx.yaml")));
+  compare(io::load_pantograph(inerta::testing::model_path("hsx.yaml")));
 }
 
 TEST(Periodic, AgreesWithTimeDomainForAnInerterLayout) {
-  mbs::Model hsx = io::load_model(inerta::testing::model_path("hsx.yaml"));
-  compare(pantograph::with_suspension(hsx, network::resolve("S2-1", {{"b", 500}, {"c", 100}, {"k", 5e4}})));
+  pantograph::Pantograph hsx = io::load_pantograph(inerta::testing::model_path("hsx.yaml"));
+  hsx.model = pantograph::with_suspension(hsx.model, network::resolve("S2-1", {{"b", 500}, {"c", 100}, {"k", 5e4}}));
+  compare(hsx);
 }
 
 TEST(Periodic, NoHarmonicsNoFluctuation) {
   io::CatenaryFile c = io::load_catenary(inerta::testing::model_path("catenary.yaml"),
                                          {"catenary.kc1=0", "catenary.kc2=0", "catenary.kc3=0"});
-  auto r = analysis::sweep_periodic(io::load_model(inerta::testing::model_path("hsx.yaml")), c.catenary, c.contact,
+  auto r = analysis::sweep_periodic(io::load_pantograph(inerta::testing::model_path("hsx.yaml")), *c.catenary, c.contact,
                                     {100 / 3.6, 250 / 3.6});
   for (const auto& x : r) EXPECT_LT(x.stats.std, 1e-9);
 }

@@ -124,7 +124,7 @@ TEST_F(Identify, FrfFitRecoversTwoHsxParametersFromInertaFrfOutput) {
   const std::string model = std::string(INERTA_SOURCE_DIR) + "/models/hsx.yaml";
   const std::vector<double> f = {0.5, 1, 1.5, 2, 3, 4, 5, 5.5, 6, 6.5, 7, 8, 9, 10, 11};
   const auto H =
-      inerta::analysis::frf_linear(inerta::io::load_model(model, {"c2.c=60", "kf_cf.c=150"}), {"P_ay", "E_ay"}, f);
+      inerta::analysis::frf_linear(inerta::io::load_model_file(model, {"c2.c=60", "kf_cf.c=150"}), {"P_ay", "E_ay"}, f);
   std::string s = "f_hz,P_ay_mag,P_ay_phase_deg,E_ay_mag,E_ay_phase_deg\n";
   for (std::size_t k = 0; k < f.size(); ++k)
     s += fmt::format("{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", f[k], std::abs(H.H[0][k]),

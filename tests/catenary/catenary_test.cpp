@@ -1,5 +1,5 @@
 // The lumped catenary (spec/05 §5.1) and its coupling to a pantograph (spec/05 §5.2).
-#include "inerta/catenary/coupling.hpp"
+#include "inerta/catenary/lumped.hpp"
 
 #include <gtest/gtest.h>
 
@@ -87,6 +87,9 @@ outputs:
   - {name: F_contact, type: reaction, joint: contact, component: y, scale: -1}
 )";
 
+// The mini model as a pantograph: contact point head.top, rig joint `contact`.
+pantograph::Pantograph on_rig(const mbs::Model& m) { return {m, m.find_marker("head.top"), m.find_joint("contact")}; }
+
 struct Stats {
   double mean, sd;
 };
@@ -116,7 +119,7 @@ TEST(Coupling, StaticContactForceAndConstantForceWithoutHarmonics) {
   for (auto kind : {Contact::Kind::Bilateral, Contact::Kind::Penalty}) {
     Contact contact;
     contact.kind = kind;
-    mbs::Model m = couple(panto, flat, contact, 180 / 3.6, "head.top");
+    mbs::Model m = couple_lumped(on_rig(panto), flat, contact, 180 / 3.6).model;
     ASSERT_EQ(m.outputs.back().name, "F_contact");
     ASSERT_EQ(m.find_joint("contact") >= 0, kind == Contact::Kind::Bilateral);
     mbs::State x = mbs::assemble(m, 0.0);
@@ -144,7 +147,7 @@ TEST(Coupling, PenaltyConvergesToBilateralAsContactStiffens) {
   mbs::Model panto = io::parse_model(kMini, "mini.yaml");
   LumpedCatenary cat;  // default harmonics
   auto sigma = [&](const Contact& c) {
-    mbs::Model m = couple(panto, cat, c, 180 / 3.6, "head.top");
+    mbs::Model m = couple_lumped(on_rig(panto), cat, c, 180 / 3.6).model;
     mbs::State x = mbs::assemble(m, 0.0);
     mbs::static_equilibrium(m, 0.0, x);
     solve::IntegratorOptions opt;

@@ -65,7 +65,7 @@ TEST(Linearisation, LinearResponseMatchesNonlinearAtSmallAmplitude) {
 }
 
 TEST(Modes, HsxHasFrameHeadAndFlexibleModesInTheThesisBands) {
-  mbs::Model m = pantograph::release_head(io::load_model(inerta::testing::model_path("hsx.yaml")));
+  mbs::Model m = pantograph::release_head(io::load_pantograph(inerta::testing::model_path("hsx.yaml")));
   mbs::State x = mbs::assemble(m, 0.0);
   mbs::static_equilibrium(m, 0.0, x);
   auto ms = mbs::modes(m, mbs::linearise(m, x));
@@ -84,7 +84,7 @@ TEST(Modes, HsxHasFrameHeadAndFlexibleModesInTheThesisBands) {
 TEST(Linearisation, JacobianPredictsTheNonlinearRightHandSide) {
   // HSX (free head) with its actuator's network state: for random directions X, the change of the
   // nonlinear right-hand side over ±εX (ε independent of the linearisation's own step) is ε A X.
-  mbs::Model m = pantograph::release_head(io::load_model(inerta::testing::model_path("hsx.yaml")));
+  mbs::Model m = pantograph::release_head(io::load_pantograph(inerta::testing::model_path("hsx.yaml")));
   mbs::State x = mbs::assemble(m, 0.0);
   mbs::static_equilibrium(m, 0.0, x);
   mbs::LinearModel lin = mbs::linearise(m, x);

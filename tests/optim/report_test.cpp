@@ -1,4 +1,5 @@
 // The figures' data of a design study (optim/report.hpp) on a reduced HSX study.
+#include "inerta/io/study_file.hpp"
 #include "inerta/optim/report.hpp"
 
 #include <gtest/gtest.h>
@@ -23,7 +24,7 @@ std::string study_text(const std::string& catenaries, const std::string& speeds,
          "\nsearch: {starts: 1, seed: 3, min_step: 0.05}\nlayouts: " + layouts + "\n";
 }
 const optim::Study& two_catenaries() {
-  static const optim::Study s = optim::load_study(
+  static const optim::Study s = io::load_study(
       write_study("report_study.yaml", study_text("[[catenary.kc0=5000], [catenary.kc0=10000]]",
                                                   "{from: 150, to: 250, step: 25, unit: kmh}", "[S2-default, b|k]")));
   return s;
@@ -75,7 +76,7 @@ TEST(Report, CostMapEqualsEvaluateAndTheOptimumBeatsTheGrid) {
 }
 
 TEST(Report, CentripetalOptionReachesTheInerterOnly) {
-  const optim::Study s = optim::load_study(
+  const optim::Study s = io::load_study(
       write_study("report_study_c.yaml",
                   study_text("[[catenary.kc0=7000]]", "{from: 150, to: 200, step: 50, unit: kmh}", "[b|k]")));
   const network::Network with_b = network::resolve("b|k", {{"b", 800}, {"k", 6e4}}),
@@ -98,7 +99,7 @@ TEST(Report, CentripetalOptionReachesTheInerterOnly) {
 }
 
 TEST(Report, ReportDataAndCsvFiles) {
-  const optim::Study s = optim::load_study(write_study(
+  const optim::Study s = io::load_study(write_study(
       "report_study_r.yaml",
       study_text("[[catenary.kc0=7000]]", "{from: 150, to: 250, step: 50, unit: kmh}", "[S2-default, b|k]")));
   std::vector<optim::LayoutResult> results{optim::optimise_layout(s, "S2-default"), optim::optimise_layout(s, "b|k")};
@@ -122,7 +123,7 @@ TEST(Report, ReportDataAndCsvFiles) {
   ASSERT_EQ(r.history_best.size(), 1u);
   const auto& h = r.history_best[0];
   EXPECT_NEAR(analysis::statistics(h.F).std, h.stats.std, 1e-12);
-  const double span_time = s.catenaries[0].span / (180 / 3.6);
+  const double span_time = s.catenaries[0]->span() / (180 / 3.6);
   EXPECT_NEAR(h.t.back() - h.t.front(), 2 * span_time, 1.01 * span_time / 400);
   ASSERT_TRUE(r.map.has_value());
   EXPECT_EQ(r.map->layout, "b|k");

@@ -1,4 +1,5 @@
 // Study files and layout optimisation (spec/07) on a reduced HSX study (one catenary, 5 speeds).
+#include "inerta/io/study_file.hpp"
 #include "inerta/optim/study.hpp"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,7 @@ const std::string kStudy = std::string("name: small\nmodel: ") + INERTA_SOURCE_D
 }  // namespace
 
 TEST(Study, OptimisingTheDefaultLayoutNeverDoesWorseAndIsDeterministic) {
-  optim::Study s = optim::load_study(write_study("small_study.yaml", kStudy));
+  optim::Study s = io::load_study(write_study("small_study.yaml", kStudy));
   ASSERT_EQ(s.speeds.size(), 5u);
   EXPECT_NEAR(s.speeds.front(), 100 / 3.6, 1e-12);
   const optim::StudyCost def = optim::evaluate(s, optim::default_suspension(s));
@@ -41,13 +42,13 @@ TEST(Study, FileErrorsNameTheLineAndKey) {
   std::string bad = kStudy;
   bad.replace(bad.find("layouts: [S2-default, k-c]"), 26, "layouts: [S2-default, b-k|c]");
   try {
-    optim::load_study(write_study("bad_study.yaml", bad));
+    io::load_study(write_study("bad_study.yaml", bad));
     FAIL();
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find("bad_study.yaml:7: 'layouts': 'b-k|c'"), std::string::npos) << e.what();
   }
   std::string unknown = kStudy + "colour: red\n";
-  EXPECT_THROW(optim::load_study(write_study("bad_study2.yaml", unknown)), ModelError);
+  EXPECT_THROW(io::load_study(write_study("bad_study2.yaml", unknown)), ModelError);
 }
 
 TEST(Study, CandidateSuspensionsCarryNoStaticLoad) {
@@ -57,7 +58,7 @@ TEST(Study, CandidateSuspensionsCarryNoStaticLoad) {
   // force follows the span's stiffness variation; the optimiser's table reports that mean.)
   std::string text = kStudy;
   text.replace(text.find("[[catenary.kc0=7000]]"), 21, "[[catenary.kc1=0, catenary.kc2=0, catenary.kc3=0]]");
-  optim::Study s = optim::load_study(write_study("small_study3.yaml", text));
+  optim::Study s = io::load_study(write_study("small_study3.yaml", text));
   const optim::StudyCost def = optim::evaluate(s, optim::default_suspension(s));
   for (double k : {1e4, 3e5, 1e7}) {
     const optim::StudyCost c = optim::evaluate(s, network::resolve("S2-5", {{"k", k}}));
@@ -70,7 +71,7 @@ TEST(Study, WrongNodeTypesAreModelErrorsWithTheLine) {
   std::string bad = kStudy;
   bad.replace(bad.find("layouts: [S2-default, k-c]"), 26, "layouts: [{S2-default: 1}]");
   try {
-    optim::load_study(write_study("bad_study4.yaml", bad));
+    io::load_study(write_study("bad_study4.yaml", bad));
     FAIL();
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find("bad_study4.yaml:7: "), std::string::npos) << e.what();

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "inerta/catenary/coupling.hpp"
+#include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/solve/integrator.hpp"
 
@@ -20,7 +20,6 @@ struct ContactStatistics {
 ContactStatistics statistics(const std::vector<double>& F);
 
 struct RunOptions {
-  double speed = 0;          ///< m/s
   int min_spans = 6;         ///< at least this many spans (a doubled window then misses the start)
   int max_spans = 40;        ///< give up converging after this many
   double tolerance = 0.005;  ///< span-to-span relative change of σ that ends the run
@@ -33,21 +32,27 @@ struct RunOptions {
 
 struct SpeedResult {
   double speed = 0;
-  ContactStatistics stats;
-  int spans = 0;             ///< spans simulated
-  double sigma_change = 0;   ///< last span-to-span relative change of σ
-  std::vector<double> t, F;  ///< contact-force history (all spans)
+  ContactStatistics stats;                  ///< of the first contact (the leading pantograph)
+  std::vector<ContactStatistics> contacts;  ///< of every contact, in the order of the pantographs
+  int spans = 0;                            ///< spans simulated
+  double sigma_change = 0;                  ///< last span-to-span relative change of σ (largest over the contacts)
+  std::vector<double> t, F;                 ///< contact-force history of the first contact (all spans)
 };
 
-/// Static equilibrium of the coupled model, then span by span until σ over one span changes by less
-/// than `tolerance` from the previous span, for `settled_spans` spans in a row (spec/06 §6.1); statistics over the last
-/// `window_spans` spans. A bilateral contact whose force becomes negative throws NumericalError with t and F.
-SpeedResult run_speed(const mbs::Model& coupled, const RunOptions& options, bool bilateral);
+/// From the static equilibrium of the coupled system, span by span until σ of every contact over
+/// one span changes by less than `tolerance` from the previous span, for `settled_spans` spans in a
+/// row (spec/06 §6.1); statistics over the last `window_spans` spans. A bilateral contact whose
+/// force becomes negative throws NumericalError with t and F.
+SpeedResult run_speed(catenary::Coupled& system, const RunOptions& options);
 
-/// Speed sweep (spec/06 §6.1): couples `pantograph` to the catenary at every speed and runs them in
-/// parallel (oneTBB). `progress(done, total)` is called after each speed (from worker threads,
+/// Speed sweep (spec/06 §6.1): couples the pantographs to the catenary at every speed and runs them
+/// in parallel (oneTBB). `progress(done, total)` is called after each speed (from worker threads,
 /// serialised). Results are in the order of `speeds`; the first failure is rethrown.
-std::vector<SpeedResult> sweep(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pantographs,
+                               const catenary::Catenary& catenary, const std::vector<double>& speeds,
+                               const RunOptions& options, const std::function<void(int, int)>& progress = {});
+/// One pantograph at x0 = 0.
+std::vector<SpeedResult> sweep(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                const catenary::Contact& contact, const std::vector<double>& speeds,
                                const RunOptions& options, const std::function<void(int, int)>& progress = {});
 

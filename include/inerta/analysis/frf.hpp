@@ -1,12 +1,14 @@
 #pragma once
 // Test-rig FRFs (spec/04 §4.2, eq. 6.25): the head's vertical displacement is imposed through the
 // pantograph's rig joint (a driving joint); FRF_i(f) = Fourier component of output i (a vertical
-// acceleration) over that of the contact force F_contact, at the excitation frequency.
+// acceleration) over that of the contact force (the rig joint's reaction on the head,
+// Pantograph::rig_force), at the excitation frequency.
 #include <complex>
 #include <string>
 #include <vector>
 
 #include "inerta/mbs/model.hpp"
+#include "inerta/pantograph/pantograph.hpp"
 #include "inerta/solve/integrator.hpp"
 
 namespace inerta::analysis {
@@ -20,7 +22,7 @@ struct Frf {
 /// Linear FRF from the model linearised about its static equilibrium with the head held: per
 /// frequency the complex system [−ω²M + iωC + K (+ network states), C_qᵀ; C_q, 0] is solved for a
 /// unit harmonic displacement of the rig joint (exact in the frequency domain, no Baumgarte).
-Frf frf_linear(const mbs::Model& rig, const std::vector<std::string>& outputs, const std::vector<double>& f);
+Frf frf_linear(const pantograph::Pantograph& rig, const std::vector<std::string>& outputs, const std::vector<double>& f);
 
 struct SteppedSine {
   double vc = 0.06;   ///< constant mean velocity amplitude V_c, m/s: A(f) = V_c / (2π f)
@@ -31,7 +33,7 @@ struct SteppedSine {
 };
 
 /// Stepped-sine FRF by time simulation of the nonlinear model (frequencies in parallel, oneTBB).
-Frf frf_stepped_sine(const mbs::Model& rig, const std::vector<std::string>& outputs, const std::vector<double>& f,
+Frf frf_stepped_sine(const pantograph::Pantograph& rig, const std::vector<std::string>& outputs, const std::vector<double>& f,
                      const SteppedSine& options);
 
 }  // namespace inerta::analysis

@@ -48,8 +48,8 @@ double frf_misfit(const Frf& model, const Frf& measured);
 /// The frequencies of `frf` in [f_lo, f_hi]; ModelError if none.
 Frf frf_band(const Frf& frf, double f_lo, double f_hi);
 
-/// The rig model for parameter values (in the order of the variables).
-using ModelOf = std::function<mbs::Model(const std::vector<double>& values)>;
+/// The pantograph on its rig for parameter values (in the order of the variables).
+using ModelOf = std::function<pantograph::Pantograph(const std::vector<double>& values)>;
 
 struct FrfFit {
   std::vector<double> values;  ///< fitted parameters

@@ -13,9 +13,10 @@
 namespace inerta::analysis {
 
 /// Contact statistics of the periodic steady state at each speed (m/s), H harmonics of the pumping
-/// frequency. Mass harmonics m_c1..m_c3 must be zero (ModelError otherwise). The linearisation is
-/// done once; speeds are independent solves.
-std::vector<SpeedResult> sweep_periodic(const mbs::Model& pantograph, const catenary::LumpedCatenary& cat,
+/// frequency. The catenary must have a point model (Catenary::point_model: the lumped catenary),
+/// without mass harmonics m_c1..m_c3 (ModelError otherwise). The linearisation is done once; speeds
+/// are independent solves.
+std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds,
                                         int harmonics = 8);
 

@@ -10,6 +10,7 @@
 #include <array>
 #include <string>
 
+#include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/force_element.hpp"
 #include "inerta/mbs/kinematics.hpp"
 
@@ -25,13 +26,16 @@ struct LumpedCatenary {
   static double harmonic(const std::array<double, 4>& x, double fp, double t);
   static double harmonic_rate(const std::array<double, 4>& x, double fp, double t);
   double natural_frequency() const;  ///< (1/2π) sqrt(k_c0 / m_c0), Hz
+  /// InvalidArgument with the offending coefficient (see Lumped).
+  void validate() const;
 };
 
 /// The catenary's mass variation, damping and stiffness acting on the vertical coordinate of the
 /// catenary body (which carries the constant mass m_c0); y measured from y_unloaded.
 class CatenaryElement : public mbs::ForceElement {
  public:
-  CatenaryElement(std::string name, int body, LumpedCatenary cat, double speed, double y_unloaded);
+  /// Needs the wire body's coordinate address (q index of its vertical coordinate).
+  CatenaryElement(std::string name, int body, int wire_y, LumpedCatenary cat, double speed, double y_unloaded);
   const LumpedCatenary& catenary() const { return cat_; }
   double speed() const { return v_; }
   double pumping_frequency() const { return v_ / cat_.span; }
@@ -43,33 +47,53 @@ class CatenaryElement : public mbs::ForceElement {
   double length(const mbs::Model&, const mbs::State& x) const override;  ///< uplift y − y_unloaded
 
  private:
-  int body_;
+  int body_, iy_;
   LumpedCatenary cat_;
   double v_, y0_;
 };
 
-/// Unilateral penalty contact along Y between the pantograph's contact point P_i and the wire
-/// point P_j (spec/05 §5.2): F = max(0, k_s δ + c_s δ̇) with δ = y_i − y_j + δ0 the overlap;
-/// F pushes the wire up and the head down; `force` reports F (compression positive).
-class PenaltyContact : public mbs::ForceElement {
+/// The lumped catenary as a catenary type: embedded (the wire is a body of the pantograph's
+/// multibody model: mass m_c0 on a vertical slider under the contact point, with the
+/// CatenaryElement), one pantograph (a point model has no distance between pantographs).
+class Lumped final : public Catenary {
  public:
-  PenaltyContact(std::string name, int body_i, mbs::Vec2 u_i, int body_j, mbs::Vec2 u_j, double stiffness,
-                 double damping, double overlap0);
-  void add(const mbs::Model&, double t, const mbs::State& x, mbs::Workspace& ws) const override;
-  double energy(const mbs::Model&, double t, const mbs::State& x) const override;
-  double power(const mbs::Model&, double t, const mbs::State& x) const override;
-  double force(const mbs::Model&, double t, const mbs::State& x, const mbs::Workspace& ws) const override;
-  double length(const mbs::Model&, const mbs::State& x) const override;  ///< overlap δ (> 0 in contact)
+  /// InvalidArgument unless span > 0, m_c0 > 0, k_c0 > 0, c_c0 >= 0 and the coefficients stay
+  /// positive (non-negative for c) over a span.
+  explicit Lumped(LumpedCatenary params);
+  const LumpedCatenary& params() const { return p_; }
+  std::string describe() const override;
+  double span() const override { return p_.span; }
+  int max_pantographs() const override { return 1; }
+  std::shared_ptr<const Catenary> mean() const override;  ///< harmonics zeroed
+  const LumpedCatenary* point_model() const override { return &p_; }
+
+ protected:
+  std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs, double speed) const override;
 
  private:
-  struct Eval {
-    double delta, delta_dot, F;
-    mbs::PointKinematics pi, pj;
-  };
-  Eval evaluate(const mbs::BodyFrame& fi, const mbs::BodyFrame& fj) const;
-  int bi_, bj_;
-  mbs::Vec2 ui_, uj_;
-  double ks_, cs_, d0_;
+  LumpedCatenary p_;
 };
+
+/// One pantograph coupled to a lumped catenary (spec/05 §5.2): the multibody model and its typed
+/// handles (the wire body, its vertical coordinate, the catenary element, the contact force).
+struct LumpedCoupling {
+  mbs::Model model;
+  int wire_body = -1;         ///< index of the wire body
+  int wire_y = -1;            ///< index of its vertical coordinate in q
+  int element = -1;           ///< index of the CatenaryElement in model.forces
+  mbs::Output contact_force;  ///< compression positive; also the model's output F_contact
+  double y_unloaded = 0;      ///< the wire's unloaded height (the contact point's assembled height), m
+  bool bilateral = true;
+};
+
+/// Removes the rig's hold of the head (and its outputs), adds the wire at the contact point's
+/// assembled height, the CatenaryElement for `speed` (m/s) and the contact (bilateral coupling
+/// joint or PenaltyContact), and the output F_contact (replacing an output of that name).
+LumpedCoupling couple_lumped(const pantograph::Pantograph& p, const LumpedCatenary& cat, const Contact& contact,
+                             double speed);
+
+/// Adds the wire body "catenary" (mass m_c0, rotation and x locked) at (x, y_unloaded) and its
+/// CatenaryElement for `speed` (m/s) to a model. Returns the body index. Call Model::finalize afterwards.
+int add_catenary(mbs::Model& model, const LumpedCatenary& cat, double speed, double x, double y_unloaded);
 
 }  // namespace inerta::catenary

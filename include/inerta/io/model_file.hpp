@@ -24,6 +24,10 @@ mbs::Model parse_model(const std::string& text, const std::string& source,
 /// A pantograph: the model and its `pantograph:` section (contact marker, rig joint). ModelError
 /// if the file has no such section.
 pantograph::Pantograph load_pantograph(const std::string& path, const std::vector<std::string>& overrides = {});
+/// The model and its `pantograph:` section if it has one (contact_marker = rig_joint = −1 otherwise).
+pantograph::Pantograph load_model_file(const std::string& path, const std::vector<std::string>& overrides = {});
+pantograph::Pantograph parse_model_file(const std::string& text, const std::string& source,
+                                        const std::vector<std::string>& overrides = {});
 pantograph::Pantograph parse_pantograph(const std::string& text, const std::string& source,
                                         const std::vector<std::string>& overrides = {});
 

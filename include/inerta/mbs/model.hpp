@@ -58,8 +58,6 @@ struct Model {
   std::vector<std::shared_ptr<const ForceElement>> forces;
   std::vector<Output> outputs;
   std::vector<int> held;           ///< coordinates held fixed during assembly
-  std::string contact_marker;      ///< TRANSITION (goes with the catenary interface): pantograph::Pantograph
-  std::string rig_joint;           ///< TRANSITION
   std::vector<std::string> notes;  ///< things the loader decided that a user should read (printed by the CLI)
 
   int dimension = 2;  ///< 2 (planar) or 3 (spatial)

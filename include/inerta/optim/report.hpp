@@ -45,7 +45,7 @@ StudyCost worst_of(const std::vector<SpeedCurve>& curves);
 /// The pantograph on its test rig (head held by the rig joint) with the suspension `net`, relaxed
 /// at the actuator's length of the rig's static equilibrium with the model's own suspension (so the
 /// network carries no static load there). Input of analysis::frf_linear.
-mbs::Model rig_model(const Study& study, const network::Network& net);
+pantograph::Pantograph rig_model(const Study& study, const network::Network& net);
 
 /// The contact force under one catenary at one speed (time domain, analysis::run_speed: static
 /// equilibrium, then span by span until σ settles); t and F over the analysed window (the last

@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "inerta/catenary/coupling.hpp"
+#include <memory>
+
+#include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/network/network.hpp"
 #include "inerta/optim/pattern_search.hpp"
@@ -13,8 +15,8 @@ namespace inerta::optim {
 
 struct Study {
   std::string name, source;
-  mbs::Model pantograph;
-  std::vector<catenary::LumpedCatenary> catenaries;  ///< the variants (J1: one)
+  pantograph::Pantograph pantograph;
+  std::vector<std::shared_ptr<const catenary::Catenary>> catenaries;  ///< the variants (J1: one)
   std::vector<std::string> catenary_labels;
   catenary::Contact contact;
   std::vector<double> speeds;        ///< m/s
@@ -28,8 +30,9 @@ struct Study {
   std::vector<double> operating_length;
 };
 
-/// Reads a study file (docs/model-format.md#study-files); paths are relative to the file.
-Study load_study(const std::string& path);
+/// Per catenary: the actuator's length at the static equilibrium of the pantograph with its own
+/// suspension under that catenary (Study::operating_length).
+std::vector<double> operating_lengths(const Study& study);
 
 struct StudyCost {
   double J = 0;      ///< max over catenaries of σ_max, N

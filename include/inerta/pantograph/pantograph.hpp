@@ -13,6 +13,17 @@ struct Pantograph {
 
   const mbs::Marker& contact() const { return model.markers[static_cast<std::size_t>(contact_marker)]; }
   bool has_rig() const { return rig_joint >= 0; }
+  /// The contact force on the rig: the rig joint's reaction on the head (a driving joint's body j),
+  /// vertical, compression positive. Only with has_rig().
+  mbs::Output rig_force() const {
+    mbs::Output o;
+    o.name = "F_contact";
+    o.kind = mbs::Output::Kind::Reaction;
+    o.index = rig_joint;
+    o.component = 1;
+    o.scale = -1;
+    return o;
+  }
 };
 
 }  // namespace inerta::pantograph

@@ -3,6 +3,7 @@
 // actuator becomes any network; the constant force, piston mass and friction stay.
 #include "inerta/mbs/model.hpp"
 #include "inerta/network/network.hpp"
+#include "inerta/pantograph/pantograph.hpp"
 
 namespace inerta::pantograph {
 
@@ -16,6 +17,6 @@ mbs::Model with_suspension(const mbs::Model& model, const network::Network& net,
 /// equal to the joint's static reaction (the static contact force), so the static equilibrium is
 /// unchanged and the head is free (modes of the free pantograph, spec/06 §6.3). `static_force`
 /// receives that force (N, compression positive). Throws ModelError without a rig joint.
-mbs::Model release_head(const mbs::Model& model, double* static_force = nullptr);
+mbs::Model release_head(const Pantograph& pantograph, double* static_force = nullptr);
 
 }  // namespace inerta::pantograph

@@ -1,0 +1,87 @@
+#pragma once
+// Time simulation as a library call (`inerta simulate`, the Python module): the outputs of a model
+// sampled over a run, their summaries, and the same for pantographs running under a catenary with
+// the contact-force statistics of spec/06 §6.1.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/catenary/catenary.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/solve/integrator.hpp"
+
+namespace inerta::analysis {
+
+/// Sampled outputs: t and one column per output, in the order of the model's outputs.
+struct TimeHistory {
+  std::vector<std::string> names;
+  std::vector<double> t;                     ///< s
+  std::vector<std::vector<double>> columns;  ///< columns[k][i]: output k at t[i] (SI)
+};
+
+/// min / max / mean of one output over the steady part of a run, and its initial value.
+struct OutputSummary {
+  std::string name;
+  double initial = 0, min = 0, max = 0, mean = 0;
+  long samples = 0;
+};
+
+/// Summaries of every output over t ≥ from (initial value: the first sample).
+std::vector<OutputSummary> summarise(const TimeHistory& history, double from);
+
+/// progress(t, t_end), called now and then from the integrating thread.
+using TimeProgress = std::function<void(double t, double t_end)>;
+
+struct SimulateOptions {
+  double t_end = -1;   ///< s; ≤ 0: the model's options.t_end
+  double sample = -1;  ///< s; ≤ 0: the model's options.sample
+  solve::IntegratorOptions integrator;
+  bool from_equilibrium = false;  ///< start from the static equilibrium under all loads
+  double steady_from = -1;        ///< ≥ 0: summaries of every output over t ≥ steady_from
+};
+
+struct Simulation {
+  TimeHistory history;
+  mbs::AssemblyReport assembly;
+  std::optional<mbs::EquilibriumReport> equilibrium;  ///< with from_equilibrium
+  solve::RunStats stats;
+  std::vector<OutputSummary> steady;  ///< with steady_from ≥ 0
+  double t_end = 0, sample = 0;
+};
+
+/// Assembles the model at t = 0 (and its static equilibrium if asked), integrates to t_end and
+/// samples every output. NumericalError with the time on failure.
+Simulation simulate(const mbs::Model& model, const SimulateOptions& options, const TimeProgress& progress = {});
+
+struct CoupledOptions {
+  int spans = 12;      ///< run length in spans (t_end = spans · L / v) unless t_end > 0
+  double t_end = -1;   ///< s
+  double sample = -1;  ///< s; ≤ 0: L / (400 v)
+  int window_spans = 2;  ///< contact statistics over the last window_spans spans
+  solve::IntegratorOptions integrator;
+};
+
+/// Contact-force statistics of one contact over the window, and where contact was first lost.
+struct ContactSummary {
+  ContactStatistics stats;           ///< over the window (loss_pct: % of samples with F ≤ 0)
+  double first_loss_t = -1;          ///< s, time of the first sample with F ≤ 0 over the whole run (−1: none)
+  double first_loss_x = 0;           ///< m, the contact point's position along the line there
+  long lost_samples = 0;             ///< over the whole run
+};
+
+struct CoupledSimulation {
+  std::vector<TimeHistory> histories;     ///< per contact: the outputs of its multibody model (F_contact last)
+  std::vector<ContactSummary> contacts;   ///< per contact
+  solve::RunStats stats;
+  double speed = 0, span = 0, t_end = 0, sample = 0, window_from = 0;
+};
+
+/// Couples the pantographs to the catenary at `speed` (m/s), starts from the static equilibrium
+/// (no start-up jolt), integrates and samples every output of each pantograph's model.
+CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>& pantographs,
+                                   const catenary::Catenary& catenary, double speed, const CoupledOptions& options,
+                                   const TimeProgress& progress = {});
+
+}  // namespace inerta::analysis

@@ -1,0 +1,99 @@
+#pragma once
+// The catenary interface (docs/architecture.md#catenaries). Every catenary type implements
+// `Catenary`; coupling pantographs to it gives a `Coupled` system, which is all that analyses,
+// studies, the CLI and the Python module see. Two kinds coexist behind the same interface:
+//   - embedded: the catenary is part of each pantograph's multibody model (its coordinates are
+//     bodies, its forces force elements) and is integrated with it by the multibody integrator —
+//     the lumped catenary of eq. 7.1, and the prescribed wire profile (no coordinates at all);
+//   - co-simulated: the catenary has its own structural integrator (e.g. Newmark on a finite-
+//     element wire) and exchanges, at every coupling step, the contact force and the motion of the
+//     contact points with the pantographs' multibody models, which it integrates in between.
+// Contacts are addressed by typed handles (ContactId), one per pantograph, in the order given.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "inerta/catenary/contact.hpp"
+#include "inerta/mbs/model.hpp"
+#include "inerta/pantograph/pantograph.hpp"
+#include "inerta/solve/integrator.hpp"
+
+namespace inerta::catenary {
+
+struct LumpedCatenary;  // lumped.hpp
+
+/// One pantograph running on the line.
+struct PantographOnLine {
+  pantograph::Pantograph pantograph;
+  double x0 = 0;    ///< position of its contact point along the line at t = 0, m (x = 0: a mast)
+  Contact contact;  ///< its contact law
+};
+
+/// Typed handle of one contact of a coupled system (pantograph k of the list given to couple).
+struct ContactId {
+  int index = -1;
+};
+
+/// One sample of a coupled run, for one contact: the multibody model integrated for that
+/// pantograph (with an embedded catenary it holds the wire too), its state and workspace (frames;
+/// accelerations and multipliers when asked for), and the contact force.
+struct Sample {
+  ContactId contact;
+  double t = 0;          ///< s
+  double x_contact = 0;  ///< position of the contact point along the line, m
+  double force = 0;      ///< contact force, N, compression positive
+  const mbs::Model& model;
+  const mbs::State& state;
+  const mbs::Workspace& ws;
+};
+using SampleObserver = std::function<void(const Sample&)>;
+
+/// Pantographs coupled to a catenary at one speed. Mutable: it holds the current state.
+class Coupled {
+ public:
+  virtual ~Coupled() = default;
+  virtual int n_contacts() const = 0;
+  /// The handle of contact k; InvalidArgument outside 0 ≤ k < n_contacts().
+  ContactId contact(int k) const;
+  virtual double speed() const = 0;  ///< m/s
+  virtual double span() const = 0;   ///< the catenary's span, m
+  /// The multibody model integrated for the contact's pantograph, and its current state.
+  virtual const mbs::Model& model(ContactId c) const = 0;
+  virtual const mbs::State& state(ContactId c) const = 0;
+  virtual double time() const = 0;  ///< current time, s
+  /// Every part to its static equilibrium at t = 0 (the static uplift against the catenary).
+  virtual void equilibrate() = 0;
+  /// Integrates from time() to t_end, calling `observer` every dt (from time() on, for each
+  /// contact in time order). A bilateral contact whose force becomes negative stops the run with
+  /// NumericalError (time, speed, force). `accelerations`: the samples' workspaces hold
+  /// accelerations and multipliers. Returns the integrator statistics (summed over the parts).
+  virtual solve::RunStats advance(double t_end, double dt, const solve::IntegratorOptions& options,
+                                  const SampleObserver& observer, bool accelerations = false) = 0;
+};
+
+/// A catenary type (lumped.hpp, wire_profile.hpp, ...).
+class Catenary {
+ public:
+  virtual ~Catenary() = default;
+  virtual std::string describe() const = 0;  ///< one line for reports, with its key numbers
+  virtual double span() const = 0;           ///< m: the period of the line (statistics windows)
+  virtual int max_pantographs() const = 0;   ///< how many pantographs it carries at once
+  /// The catenary without its variation along the line (for modes about a static equilibrium).
+  virtual std::shared_ptr<const Catenary> mean() const = 0;
+  /// The point model with time-periodic coefficients (eq. 7.1), if the catenary is one: the
+  /// harmonic-balance fast path needs it. nullptr otherwise.
+  virtual const LumpedCatenary* point_model() const { return nullptr; }
+  /// Couples the pantographs at `speed` (m/s > 0). ModelError if it cannot carry them (too many,
+  /// a contact law it does not support, a pantograph without a contact point).
+  std::unique_ptr<Coupled> couple(const std::vector<PantographOnLine>& pantographs, double speed) const;
+  /// One pantograph at x0 = 0.
+  std::unique_ptr<Coupled> couple(const pantograph::Pantograph& p, const Contact& contact, double speed) const;
+
+ protected:
+  /// After couple's checks (count, speed, contact laws valid, contact markers present).
+  virtual std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs,
+                                                double speed) const = 0;
+};
+
+}  // namespace inerta::catenary

@@ -1,0 +1,108 @@
+#include "inerta/analysis/simulate.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "inerta/error.hpp"
+#include "inerta/mbs/output.hpp"
+
+namespace inerta::analysis {
+
+namespace {
+
+TimeHistory empty_history(const mbs::Model& m) {
+  TimeHistory h;
+  for (const auto& o : m.outputs) h.names.push_back(o.name);
+  h.columns.resize(m.outputs.size());
+  return h;
+}
+
+void record(TimeHistory& h, const mbs::Model& m, double t, const mbs::State& s, const mbs::Workspace& ws) {
+  h.t.push_back(t);
+  for (std::size_t k = 0; k < m.outputs.size(); ++k) h.columns[k].push_back(mbs::evaluate_output(m.outputs[k], m, t, s, ws));
+}
+
+bool needs_acc(const mbs::Model& m) {
+  return std::any_of(m.outputs.begin(), m.outputs.end(), [](const mbs::Output& o) { return mbs::needs_accelerations(o); });
+}
+
+}  // namespace
+
+Simulation simulate(const mbs::Model& model, const SimulateOptions& o, const TimeProgress& progress) {
+  Simulation r;
+  r.t_end = o.t_end > 0 ? o.t_end : model.options.t_end;
+  r.sample = o.sample > 0 ? o.sample : model.options.sample;
+  if (!(r.t_end > 0) || !(r.sample > 0) || !std::isfinite(r.t_end) || !std::isfinite(r.sample))
+    throw InvalidArgument("simulate: t_end and the sampling interval must be positive numbers of seconds");
+  mbs::State x = mbs::assemble(model, 0.0, &r.assembly);
+  if (o.from_equilibrium) {
+    r.equilibrium.emplace();
+    mbs::static_equilibrium(model, 0.0, x, &*r.equilibrium);
+  }
+  r.history = empty_history(model);
+  double next_report = 0;
+  r.stats = solve::integrate(
+      model, x, 0.0, r.t_end, r.sample, o.integrator,
+      [&](double t, const mbs::State& s, const mbs::Workspace& ws) {
+        record(r.history, model, t, s, ws);
+        if (progress && t >= next_report) progress(t, r.t_end), next_report += r.t_end / 50;
+      },
+      needs_acc(model));
+  if (o.steady_from >= 0) r.steady = summarise(r.history, o.steady_from);
+  return r;
+}
+
+std::vector<OutputSummary> summarise(const TimeHistory& h, double from) {
+  std::vector<OutputSummary> out;
+  for (std::size_t k = 0; k < h.names.size(); ++k) {
+    OutputSummary s{h.names[k], h.columns[k].empty() ? 0.0 : h.columns[k].front(), INFINITY, -INFINITY, 0, 0};
+    double sum = 0;
+    for (std::size_t i = 0; i < h.t.size(); ++i)
+      if (h.t[i] >= from - 1e-12) {
+        const double v = h.columns[k][i];
+        s.min = std::min(s.min, v), s.max = std::max(s.max, v), sum += v, ++s.samples;
+      }
+    s.mean = s.samples > 0 ? sum / static_cast<double>(s.samples) : NAN;
+    out.push_back(s);
+  }
+  return out;
+}
+
+CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>& pantographs,
+                                   const catenary::Catenary& catenary, double speed, const CoupledOptions& o,
+                                   const TimeProgress& progress) {
+  auto sys = catenary.couple(pantographs, speed);
+  CoupledSimulation r;
+  r.speed = speed;
+  r.span = sys->span();
+  const double T = r.span / speed;
+  if (o.t_end <= 0 && o.spans < 1) throw InvalidArgument("simulate: at least one span (or a positive t_end)");
+  r.t_end = o.t_end > 0 ? o.t_end : o.spans * T;
+  r.sample = o.sample > 0 ? o.sample : T / 400;
+  r.window_from = std::max(0.0, r.t_end - o.window_spans * T);
+  const int nc = sys->n_contacts();
+  std::vector<std::vector<double>> window(static_cast<std::size_t>(nc));
+  r.contacts.resize(static_cast<std::size_t>(nc));
+  for (int c = 0; c < nc; ++c) r.histories.push_back(empty_history(sys->model(sys->contact(c))));
+  bool acc = false;
+  for (int c = 0; c < nc; ++c) acc = acc || needs_acc(sys->model(sys->contact(c)));
+  sys->equilibrate();
+  double next_report = 0;
+  r.stats = sys->advance(
+        r.t_end, r.sample, o.integrator,
+        [&](const catenary::Sample& s) {
+          const auto c = static_cast<std::size_t>(s.contact.index);
+          record(r.histories[c], s.model, s.t, s.state, s.ws);
+          ContactSummary& cs = r.contacts[c];
+          if (s.force <= 0) {
+            if (cs.lost_samples++ == 0) cs.first_loss_t = s.t, cs.first_loss_x = s.x_contact;
+          }
+          if (s.t >= r.window_from - 1e-9) window[c].push_back(s.force);
+          if (progress && c == 0 && s.t >= next_report) progress(s.t, r.t_end), next_report += r.t_end / 50;
+        },
+        acc);
+  for (int c = 0; c < nc; ++c) r.contacts[static_cast<std::size_t>(c)].stats = statistics(window[static_cast<std::size_t>(c)]);
+  return r;
+}
+
+}  // namespace inerta::analysis

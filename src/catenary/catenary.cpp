@@ -1,0 +1,36 @@
+#include "inerta/catenary/catenary.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "inerta/error.hpp"
+
+namespace inerta::catenary {
+
+std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& pantographs, double speed) const {
+  if (pantographs.empty()) throw InvalidArgument("couple: no pantograph given");
+  if (!(speed > 0) || !std::isfinite(speed))
+    throw InvalidArgument(fmt::format("couple: the speed must be a positive number of m/s, got {}", speed));
+  if (static_cast<int>(pantographs.size()) > max_pantographs())
+    throw ModelError(fmt::format("{} carries at most {} pantograph(s), {} were given{}", describe(), max_pantographs(),
+                                 pantographs.size(),
+                                 max_pantographs() == 1 ? " (a point model has no distance between pantographs)" : ""));
+  for (std::size_t k = 0; k < pantographs.size(); ++k) {
+    const PantographOnLine& p = pantographs[k];
+    const mbs::Model& m = p.pantograph.model;
+    if (p.pantograph.contact_marker < 0 || p.pantograph.contact_marker >= static_cast<int>(m.markers.size()))
+      throw ModelError(fmt::format("{}: pantograph {} has no contact point (pantograph: contact) to couple", m.source,
+                                   k + 1));
+    if (m.spatial()) throw ModelError(fmt::format("{}: the pantograph-catenary analyses are planar", m.source));
+    if (!std::isfinite(p.x0)) throw InvalidArgument(fmt::format("pantograph {}: position x0 = {}", k + 1, p.x0));
+    p.contact.validate();
+  }
+  return make_coupled(pantographs, speed);
+}
+
+std::unique_ptr<Coupled> Catenary::couple(const pantograph::Pantograph& p, const Contact& contact, double speed) const {
+  return couple(std::vector<PantographOnLine>{{p, 0.0, contact}}, speed);
+}
+
+}  // namespace inerta::catenary

@@ -1,0 +1,133 @@
+#include "inerta/io/study_file.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "inerta/error.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/io/model_file.hpp"
+#include "inerta/io/yaml_errors.hpp"
+#include "inerta/network/layouts.hpp"
+
+namespace inerta::io {
+
+namespace {
+optim::Study read_study(const std::string& path) {
+  YAML::Node loaded;
+  try {
+    loaded = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw ModelError(fmt::format("{}: cannot open the study file", path));
+  } catch (const YAML::ParserException& e) {
+    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+  }
+  const YAML::Node& root = loaded;
+  if (!root.IsMap()) yaml_fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    static const char* allowed[] = {"name",   "model",   "catenary", "catenaries",
+                                    "speeds", "layouts", "search",   "harmonics"};
+    if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
+        std::end(allowed))
+      yaml_fail(path, it->first, k,
+                    "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics");
+  }
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  auto rel = [&](const YAML::Node& n, const char* key) {
+    if (!n.IsDefined() || !n.IsScalar())
+      yaml_fail(path, n.IsDefined() ? n : root, key, "missing; expected a file path");
+    return (dir / n.Scalar()).string();
+  };
+  optim::Study s;
+  s.source = path;
+  s.name = root["name"].IsDefined() ? root["name"].as<std::string>() : path;
+  s.pantograph = load_pantograph(rel(root["model"], "model"));
+  const std::string cat_path = rel(root["catenary"], "catenary");
+  const YAML::Node cats = root["catenaries"];
+  if (cats.IsDefined()) {
+    if (!cats.IsSequence() || cats.size() == 0)
+      yaml_fail(path, cats, "catenaries", "expected a list of override lists");
+    for (const auto& c : cats) {
+      std::vector<std::string> sets;
+      if (!c.IsSequence()) yaml_fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
+      for (const auto& x : c) sets.push_back(x.as<std::string>());
+      CatenaryFile f = load_catenary(cat_path, sets);
+      s.catenaries.push_back(f.catenary);
+      s.contact = f.contact;
+      std::string label;
+      for (const auto& x : sets) label += (label.empty() ? "" : " ") + x;
+      s.catenary_labels.push_back(label.empty() ? "default" : label);
+    }
+  } else {
+    CatenaryFile f = load_catenary(cat_path);
+    s.catenaries.push_back(f.catenary), s.contact = f.contact, s.catenary_labels.push_back("default");
+  }
+  const YAML::Node sp = root["speeds"];
+  if (!sp.IsMap()) yaml_fail(path, sp.IsDefined() ? sp : root, "speeds", "expected {from, to, step, unit: kmh|ms}");
+  const double from = yaml_number(path, sp["from"], "from"), to = yaml_number(path, sp["to"], "to"),
+               step = yaml_number(path, sp["step"], "step");
+  const std::string unit = sp["unit"].IsDefined() ? sp["unit"].as<std::string>() : "ms";
+  if (unit != "kmh" && unit != "ms") yaml_fail(path, sp["unit"], "unit", "expected kmh or ms");
+  if (!(from > 0) || !(to >= from) || !(step > 0))
+    yaml_fail(path, sp, "speeds", "expected 0 < from <= to and step > 0");
+  for (long k = 0; from + k * step <= to + 1e-9 * step; ++k)
+    s.speeds.push_back((from + k * step) / (unit == "kmh" ? 3.6 : 1.0));
+  const YAML::Node ls = root["layouts"];
+  if (!ls.IsSequence() || ls.size() == 0)
+    yaml_fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts");
+  for (const auto& l : ls) {
+    const std::string name = l.as<std::string>();
+    try {
+      network::parse(network::find_layout(name) ? network::find_layout(name)->expression : name);
+    } catch (const network::NetworkError& e) {
+      yaml_fail(path, l, "layouts", fmt::format("'{}': {}", name, e.what()));
+    }
+    s.layouts.push_back(name);
+  }
+  if (const YAML::Node se = root["search"]; se.IsDefined()) {
+    for (auto it = se.begin(); it != se.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      const YAML::Node v = it->second;
+      if (k == "starts")
+        s.search.starts = static_cast<int>(yaml_number(path, v, k));
+      else if (k == "seed")
+        s.search.seed = static_cast<unsigned>(yaml_number(path, v, k));
+      else if (k == "lo")
+        s.lo = yaml_number(path, v, k);
+      else if (k == "hi")
+        s.hi = yaml_number(path, v, k);
+      else if (k == "min_step")
+        s.search.min_step = yaml_number(path, v, k);
+      else if (k == "max_evaluations")
+        s.search.max_evaluations = static_cast<int>(yaml_number(path, v, k));
+      else
+        yaml_fail(path, it->first, k,
+                      "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
+    }
+    if (!(s.lo > 0) || !(s.hi > s.lo)) yaml_fail(path, se, "search", "expected 0 < lo < hi");
+    if (s.search.starts < 1) yaml_fail(path, se["starts"], "starts", "must be >= 1");
+  }
+  if (root["harmonics"].IsDefined())
+    s.harmonics = static_cast<int>(yaml_number(path, root["harmonics"], "harmonics"));
+  try {
+    s.operating_length = optim::operating_lengths(s);
+  } catch (const ModelError& e) {
+    yaml_fail(path, root["model"], "model", e.what());
+  }
+  return s;
+}
+}  // namespace
+
+optim::Study load_study(const std::string& path) {
+  try {
+    return read_study(path);
+  } catch (const YAML::Exception& e) {  // a wrong node type (a map where a layout name belongs, ...)
+    throw ModelError(
+        fmt::format("{}:{}: {}; expected the study file format of docs/model-format.md", path, e.mark.line + 1, e.msg));
+  }
+}
+
+}  // namespace inerta::io
