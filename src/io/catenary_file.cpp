@@ -84,7 +84,10 @@ void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {
       if (!v.IsSequence() || v.size() < 2) yaml_fail(path, v, k, "expected a list of [x, height] pairs (m), at least 2");
       for (const auto& row : v) {
         if (!row.IsSequence() || row.size() != 2) yaml_fail(path, row, k, "expected [x, height] in m");
-        c.profile.x.push_back(yaml_number(path, row[0], k));
+        const double x = yaml_number(path, row[0], k);
+        if (!c.profile.x.empty() && !(x > c.profile.x.back()))
+          yaml_fail(path, row, k, fmt::format("x must increase strictly ({:g} m after {:g} m)", x, c.profile.x.back()));
+        c.profile.x.push_back(x);
         c.profile.h.push_back(yaml_number(path, row[1], k));
       }
     } else if (k == "file") {
@@ -96,15 +99,15 @@ void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {
       t.require_rows(2, "a wire profile");
       c.profile.x = t.column("x");
       c.profile.h = t.column("height");
+      for (std::size_t r = 1; r < t.rows(); ++r)
+        if (!(c.profile.x[r] > c.profile.x[r - 1]))
+          throw ModelError(fmt::format("{}:{}: column 'x': x must increase strictly ({:g} m after {:g} m)", csv,
+                                       t.line(r), c.profile.x[r], c.profile.x[r - 1]));
     } else {
       yaml_fail(path, it->first, k, "unknown key in profile; expected heights, file, periodic, span");
     }
   }
   if (!have) yaml_fail(path, pr, "profile", "expected heights: [[x, height], ...] or file: heights.csv");
-  for (std::size_t i = 1; i < c.profile.x.size(); ++i)
-    if (!(c.profile.x[i] > c.profile.x[i - 1]))
-      yaml_fail(path, pr, "profile", fmt::format("x must increase strictly (point {}: {:g} m after {:g} m)", i + 1,
-                                                 c.profile.x[i], c.profile.x[i - 1]));
 }
 
 void read_contact(const std::string& path, const YAML::Node& ct, catenary::Contact& contact) {
