@@ -674,7 +674,7 @@ int cmd_optimise(const OptimiseArgs& a) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   auto value = [](const network::Params& p, const char* k) {
     auto it = p.find(k);
-    return it == p.end() ? std::string("-") : optim::describe(it->second);
+    return it == p.end() ? std::string("-") : numerics::describe(it->second);
   };
   fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
              "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");

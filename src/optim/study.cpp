@@ -183,13 +183,13 @@ std::vector<std::string> free_parameters(const std::string& layout) {
   return names;
 }
 
-LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress) {
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress) {
   LayoutResult r;
   r.layout = layout;
   auto named = network::find_layout(layout);
   r.expression = named ? named->expression : layout;
   const network::Params fixed = named ? named->fixed : network::Params{};
-  std::vector<Variable> vars;
+  std::vector<numerics::Variable> vars;
   for (const auto& name : free_parameters(layout)) vars.push_back({name, study.lo, study.hi, true, true});
   auto params_of = [&](const std::vector<double>& values) {
     network::Params p;
@@ -207,7 +207,7 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   if (vars.empty()) {
     r.evaluations = 1;
   } else {
-    Result s = pattern_search(vars, J, study.search, progress);
+    numerics::Result s = numerics::pattern_search(vars, J, study.search, progress);
     best = s.values;
     r.evaluations = s.evaluations;
   }

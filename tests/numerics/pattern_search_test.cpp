@@ -1,12 +1,12 @@
 // Pattern search on analytic problems (issue 6): interior optimum in log space, optima at the
 // limits 0 (open) and ∞ (rigid), determinism for a seed.
-#include "inerta/optim/pattern_search.hpp"
+#include "inerta/numerics/pattern_search.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-using namespace inerta::optim;
+using namespace inerta::numerics;
 
 TEST(PatternSearch, FindsAnInteriorOptimumAcrossDecades) {
   // Minimum at b = 250, c = 3e4, k = 7e2: a bowl in log10 space, ten decades wide.
