@@ -95,7 +95,7 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
       if (progress) progress(start, total + evals, std::min(best.cost, fu));
     }
     total += evals;
-    if (fu < best.cost) {
+    if (fu < best.cost || best.values.empty()) {  // the first start stands even if nothing was finite
       best.cost = fu, best.u = u, best.values = values_of(u), best.best_start = start;
     }
   }

@@ -37,9 +37,9 @@ struct Options {
 };
 
 struct Result {
-  std::vector<double> values;  ///< decoded (0 and ∞ possible)
+  std::vector<double> values;  ///< decoded (0 and ∞ possible), one per variable
   std::vector<double> u;       ///< search coordinates
-  double cost = 0;
+  double cost = 0;             ///< +∞ (or NaN) if no point had a finite cost: values are the first start's
   int evaluations = 0;  ///< all starts
   int best_start = 0;
 };
