@@ -197,10 +197,13 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     return p;
   };
   auto J = [&](const std::vector<double>& values) {
+    const network::Network net = network::resolve(layout, params_of(values));
+    // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
+    if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
     try {
-      return evaluate(study, network::resolve(layout, params_of(values))).J;
-    } catch (const std::exception&) {
-      return static_cast<double>(INFINITY);  // a rigid suspension, or no valid steady state
+      return evaluate(study, net).J;
+    } catch (const NumericalError&) {
+      return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
     }
   };
   std::vector<double> best;
