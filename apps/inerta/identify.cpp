@@ -132,10 +132,10 @@ int frf_fit() {
   ss << in.rdbuf();
   const std::string text = ss.str();
   // Parameters "NAME.KEY" (bounds: ÷10 … ×10 the file's value) or "NAME.KEY=LO:HI".
-  std::vector<optim::Variable> vars;
+  std::vector<numerics::Variable> vars;
   for (const auto& spec : args.fit) {
     const std::size_t eq = spec.find('=');
-    optim::Variable v;
+    numerics::Variable v;
     v.name = spec.substr(0, eq);
     v.can_open = v.can_rigid = false;
     if (eq != std::string::npos) {
@@ -176,7 +176,7 @@ int frf_fit() {
     for (const auto& v : vars) centre.push_back(std::sqrt(v.lo * v.hi));
     (void)model_of(centre);
   }
-  optim::Options opt;
+  numerics::Options opt;
   opt.starts = args.starts;
   opt.seed = args.seed;
   opt.min_step = args.min_step;

@@ -25,8 +25,10 @@
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
+#include "inerta/io/linear_model_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/study_file.hpp"
+#include "inerta/io/study_results.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/mbs/linearisation.hpp"
@@ -505,30 +507,11 @@ int cmd_modes(const ModesArgs& a) {
     ma = analysis::modal_analysis(p.model);
   }
   const mbs::Model& model = ma.model;
-  const mbs::State& x = ma.equilibrium;
   const mbs::LinearModel& lin = ma.linear;
   const std::vector<mbs::Mode>& ms = ma.modes;
   const std::string& setting = ma.setting;
   if (!a.export_json.empty()) {
-    // The linear model for MATLAB/Python: Ẋ = A X, X = [ξ; ξ̇; z], q = q_e + N ξ; M, C, K reduced.
-    OutputFile file(a.export_json);
-    auto matrix = [&](const Eigen::MatrixXd& m) {
-      std::string s = "[";
-      for (Eigen::Index i = 0; i < m.rows(); ++i) {
-        s += i ? ",\n    [" : "\n    [";
-        for (Eigen::Index j = 0; j < m.cols(); ++j) s += fmt::format("{}{:.17g}", j ? ", " : "", m(i, j));
-        s += "]";
-      }
-      return s + "]";
-    };
-    std::string coords;
-    for (int k = 0; k < model.n_coords(); ++k) coords += fmt::format("{}\"{}\"", k ? ", " : "", model.coord_name(k));
-    fmt::print(file.get(),
-               "{{\n  \"model\": \"{}\",\n  \"state\": \"X = [xi; xi_dot; z], q = q_e + N xi, dX/dt = A X\",\n"
-               "  \"coordinates\": [{}],\n  \"dof\": {},\n  \"internal_states\": {},\n  \"q_e\": {},\n"
-               "  \"N\": {},\n  \"A\": {},\n  \"M\": {},\n  \"C\": {},\n  \"K\": {}\n}}\n",
-               model.name, coords, lin.dof, lin.nz, matrix(x.q.transpose()), matrix(lin.N), matrix(lin.A),
-               matrix(lin.M), matrix(lin.C), matrix(lin.K));
+    io::write_linear_model(a.export_json, model, lin);  // for MATLAB/Python
     fmt::print("wrote {} (linear model: A, N, M, C, K)\n", a.export_json);
   }
   fmt::print("modes of {} about its static equilibrium{}{}: {} independent coordinates, {} internal states\n",
@@ -704,7 +687,7 @@ int cmd_optimise(const OptimiseArgs& a) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   auto value = [](const network::Params& p, const char* k) {
     auto it = p.find(k);
-    return it == p.end() ? std::string("-") : optim::describe(it->second);
+    return it == p.end() ? std::string("-") : numerics::describe(it->second);
   };
   fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
              "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
@@ -718,29 +701,7 @@ int cmd_optimise(const OptimiseArgs& a) {
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].cost.J < results[best].cost.J) best = i;
   if (!a.out.empty()) {
-    std::filesystem::create_directories(a.out);
-    OutputFile csv((std::filesystem::path(a.out) / "results.csv").string());
-    fmt::print(csv.get(), "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations\n");
-    for (const auto& r : results)
-      fmt::print(csv.get(), "{},{},{},{},{},{:.6g},{:.4g},{:.6g},{:.6g},{}\n", r.layout, r.expression,
-                 value(r.values, "b"), value(r.values, "c"), value(r.values, "k"), r.cost.J,
-                 100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean, r.evaluations);
-    OutputFile json((std::filesystem::path(a.out) / "results.json").string());
-    fmt::print(json.get(), "{{\n  \"study\": \"{}\",\n  \"default_J2\": {:.10g},\n  \"layouts\": [", study.name, def.J);
-    for (std::size_t i = 0; i < results.size(); ++i) {
-      const auto& r = results[i];
-      std::string vals;
-      for (const auto& [k, v] : r.values)
-        vals += fmt::format("{}\"{}\": {}", vals.empty() ? "" : ", ", k,
-                            v == 0          ? std::string("0")
-                            : std::isinf(v) ? std::string("\"inf\"")
-                                            : fmt::format("{:.10g}", v));
-      fmt::print(json.get(),
-                 "{}\n    {{\"layout\": \"{}\", \"network\": \"{}\", \"values\": {{{}}}, \"J2\": {:.10g}, "
-                 "\"v_kmh\": {:.6g}, \"mean_N\": {:.6g}, \"evaluations\": {}}}",
-                 i ? "," : "", r.layout, r.expression, vals, r.cost.J, r.cost.speed * 3.6, r.cost.mean, r.evaluations);
-    }
-    fmt::print(json.get(), "\n  ]\n}}\n");
+    io::write_study_results(a.out, study.name, def, results);
     fmt::print("wrote {}/results.csv and {}/results.json\n", a.out, a.out);
   }
   // The winner re-checked in the time domain (the reference method): with --out, as part of the

@@ -11,6 +11,7 @@
 #include "inerta/error.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
+#include "inerta/numerics/finite_difference.hpp"
 
 namespace inerta::analysis {
 
@@ -54,34 +55,21 @@ Frf frf_linear(const pantograph::Pantograph& p, const std::vector<std::string>& 
   mbs::accelerations(rig, 0.0, x, ws);
   const Eigen::VectorXd lambda0 = ws.lambda;
   const Eigen::MatrixXd M = ws.M, Cq = ws.Cq;
-  // Central differences of Q − C_qᵀλ0 and ż in q, q̇ and z (t = 0: the rig's motion is the input).
-  auto eval = [&](const mbs::State& s, Eigen::VectorXd& R, Eigen::VectorXd& zd) {
+  // Central differences (absolute step 1e-6) of [Q − C_qᵀλ0; ż] in y = [q; q̇; z] (t = 0: the rig's
+  // motion is the input): K = −∂R/∂q, D = −∂R/∂q̇, Qz = ∂R/∂z and Zq, Zqd, Az the rows of ż.
+  auto eval = [&](const Eigen::VectorXd& y) {
+    const mbs::State s{y.head(n), y.segment(n, n), y.tail(nz)};
     mbs::evaluate_forces(rig, 0.0, s, ws);
     mbs::evaluate_constraints(rig, 0.0, s, ws);
-    R = ws.Q - ws.Cq.transpose() * lambda0;
-    zd = ws.zd;
+    Eigen::VectorXd out(n + nz);
+    out << ws.Q - ws.Cq.transpose() * lambda0, ws.zd;
+    return out;
   };
-  Eigen::MatrixXd K(n, n), D(n, n), Qz(n, nz), Zq(nz, n), Zqd(nz, n), Az(nz, nz);
-  Eigen::VectorXd Rp, Rm, zp, zm;
-  const double h = 1e-6;
-  for (int k = 0; k < 2 * n + nz; ++k) {
-    mbs::State p = x, q = x;
-    if (k < n)
-      p.q[k] += h, q.q[k] -= h;
-    else if (k < 2 * n)
-      p.qd[k - n] += h, q.qd[k - n] -= h;
-    else
-      p.z[k - 2 * n] += h, q.z[k - 2 * n] -= h;
-    eval(p, Rp, zp);
-    eval(q, Rm, zm);
-    Eigen::VectorXd dR = (Rp - Rm) / (2 * h), dz = (zp - zm) / (2 * h);
-    if (k < n)
-      K.col(k) = -dR, Zq.col(k) = dz;
-    else if (k < 2 * n)
-      D.col(k - n) = -dR, Zqd.col(k - n) = dz;
-    else
-      Qz.col(k - 2 * n) = dR, Az.col(k - 2 * n) = dz;
-  }
+  Eigen::VectorXd y0(2 * n + nz);
+  y0 << x.q, x.qd, x.z;
+  const Eigen::MatrixXd J = numerics::central_difference_jacobian(eval, y0, 1e-6, numerics::Step::Absolute);
+  const Eigen::MatrixXd K = -J.block(0, 0, n, n), D = -J.block(0, n, n, n), Qz = J.block(0, 2 * n, n, nz),
+                        Zq = J.block(n, 0, nz, n), Zqd = J.block(n, n, nz, n), Az = J.block(n, 2 * n, nz, nz);
   Frf out;
   out.f = f;
   out.outputs = outputs;

@@ -100,8 +100,8 @@ Frf frf_band(const Frf& frf, double f_lo, double f_hi) {
   return out;
 }
 
-FrfFit fit_frf(const ModelOf& model_of, const std::vector<optim::Variable>& vars, const Frf& measured,
-               const optim::Options& options) {
+FrfFit fit_frf(const ModelOf& model_of, const std::vector<numerics::Variable>& vars, const Frf& measured,
+               const numerics::Options& options) {
   if (vars.empty()) throw ModelError("FRF fit: no parameter to fit");
   // The box centre (the first start) is evaluated outside the search so that input errors surface.
   std::vector<double> centre;
@@ -115,7 +115,7 @@ FrfFit fit_frf(const ModelOf& model_of, const std::vector<optim::Variable>& vars
       return double(INFINITY);  // e.g. no static equilibrium for these values
     }
   };
-  const optim::Result r = optim::pattern_search(vars, cost, options);
+  const numerics::Result r = numerics::pattern_search(vars, cost, options);
   fit.values = r.values;
   fit.cost = r.cost;
   fit.evaluations = r.evaluations + 1;
@@ -212,13 +212,13 @@ ActuatorDynamicFit fit_actuator_dynamic(const std::vector<DynamicTest>& tests, d
     const cd Fd = harmonic_amplitude(T.t, F, T.f) + piston_mass * w * w * X;  // − m_p ẍ, ẍ = −ω² X
     fit.points.push_back({T.f, Fd / (cd(0, w) * X), std::abs(X)});
   }
-  std::vector<optim::Variable> vars{{"k1", 1e2, 1e9, false, false}};
+  std::vector<numerics::Variable> vars{{"k1", 1e2, 1e9, false, false}};
   if (fit_c1) vars.push_back({"c1", 1e0, 1e8, false, false});
-  optim::Options o;
+  numerics::Options o;
   o.starts = 3;
   o.min_step = 1e-7;
   o.max_evaluations = 20000;
-  const optim::Result r = optim::pattern_search(
+  const numerics::Result r = numerics::pattern_search(
       vars, [&](const std::vector<double>& p) { return admittance_cost(p[0], fit_c1 ? p[1] : c1, fit.points); }, o);
   fit.k1 = r.values[0];
   fit.c1 = fit_c1 ? r.values[1] : c1;

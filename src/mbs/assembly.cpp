@@ -7,6 +7,7 @@
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/dynamics.hpp"
+#include "inerta/numerics/finite_difference.hpp"
 
 namespace inerta::mbs {
 
@@ -105,7 +106,7 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
   for (const Body& b : model.bodies) fscale = std::max(fscale, b.mass * model.options.g.norm());
   fscale = std::max(fscale, ws.Q.cwiseAbs().maxCoeff());
 
-  Eigen::VectorXd R(N), Rp(N), Rm(N), Rtrial(N);
+  Eigen::VectorXd R(N), Rp(N), Rtrial(N);
   Eigen::MatrixXd J(N, N);
   EquilibriumReport rep;
   const int max_iter = 100;
@@ -126,15 +127,13 @@ void static_equilibrium(const Model& model, double t0, State& x, EquilibriumRepo
                       it, rep.force_residual, model.coord_name(k)));
     }
     // Jacobian: central differences in q, analytic −C_qᵀ in λ.
-    for (int k = 0; k < n; ++k) {
-      double h = 1e-6 * std::max(1.0, std::abs(x.q[k]));
-      Eigen::VectorXd q = x.q;
-      q[k] += h;
-      residual(q, lambda, Rp);
-      q[k] -= 2 * h;
-      residual(q, lambda, Rm);
-      J.col(k) = (Rp - Rm) / (2 * h);
-    }
+    // Step 1e-6 · max(1, |q_k|).
+    numerics::central_difference_jacobian(
+        [&](const Eigen::VectorXd& q) {
+          residual(q, lambda, Rp);
+          return Rp;
+        },
+        x.q, 1e-6, numerics::Step::Relative, J.leftCols(n));
     {
       State s = at_rest(x.q);
       evaluate_constraints(model, t0, s, ws);

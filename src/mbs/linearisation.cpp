@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "inerta/mbs/dynamics.hpp"
+#include "inerta/numerics/finite_difference.hpp"
 
 namespace inerta::mbs {
 
@@ -36,13 +37,8 @@ LinearModel linearise(const Model& model, const State& x, double t) {
     out << X.segment(d, d), L.N.transpose() * ws.qdd, ws.zd;
     return out;
   };
-  L.A.resize(S, S);
-  for (int k = 0; k < S; ++k) {
-    const double h = 1e-6;
-    Eigen::VectorXd Xp = Eigen::VectorXd::Zero(S), Xm = Eigen::VectorXd::Zero(S);
-    Xp[k] = h, Xm[k] = -h;
-    L.A.col(k) = (g(Xp) - g(Xm)) / (2 * h);
-  }
+  // A = ∂g/∂X at X = 0; absolute step 1e-6 (X is a perturbation about the equilibrium).
+  L.A = numerics::central_difference_jacobian(g, Eigen::VectorXd::Zero(S), 1e-6, numerics::Step::Absolute);
   evaluate_forces(model, t, x, ws);
   L.M = L.N.transpose() * ws.M * L.N;
   L.K = -L.M * L.A.block(d, 0, d, d);

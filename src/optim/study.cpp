@@ -73,13 +73,13 @@ std::vector<std::string> free_parameters(const std::string& layout) {
   return names;
 }
 
-LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress) {
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress) {
   LayoutResult r;
   r.layout = layout;
   auto named = network::find_layout(layout);
   r.expression = named ? named->expression : layout;
   const network::Params fixed = named ? named->fixed : network::Params{};
-  std::vector<Variable> vars;
+  std::vector<numerics::Variable> vars;
   for (const auto& name : free_parameters(layout)) vars.push_back({name, study.lo, study.hi, true, true});
   auto params_of = [&](const std::vector<double>& values) {
     network::Params p;
@@ -87,17 +87,20 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     return p;
   };
   auto J = [&](const std::vector<double>& values) {
+    const network::Network net = network::resolve(layout, params_of(values));
+    // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
+    if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
     try {
-      return evaluate(study, network::resolve(layout, params_of(values))).J;
-    } catch (const std::exception&) {
-      return static_cast<double>(INFINITY);  // a rigid suspension, or no valid steady state
+      return evaluate(study, net).J;
+    } catch (const NumericalError&) {
+      return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
     }
   };
   std::vector<double> best;
   if (vars.empty()) {
     r.evaluations = 1;
   } else {
-    Result s = pattern_search(vars, J, study.search, progress);
+    numerics::Result s = numerics::pattern_search(vars, J, study.search, progress);
     best = s.values;
     r.evaluations = s.evaluations;
   }

@@ -104,12 +104,12 @@ TEST(FrfFit, HsxRecoversFourPerturbedParametersFromNoisyFrfs) {
   std::mt19937 rng(7);
   for (auto& row : meas.H)
     for (auto& h : row) h = inerta::testing::noisy(h, 0.01, rng);
-  std::vector<optim::Variable> vars;
+  std::vector<numerics::Variable> vars;
   for (const auto& k : keys) {
     const double v = *io::model_value(text, path, k);
     vars.push_back({k, v / 10, v * 10, false, false});
   }
-  optim::Options o;
+  numerics::Options o;
   o.starts = 1;
   o.min_step = 1e-4;
   auto model_of = [&](const std::vector<double>& v) {

@@ -1,5 +1,6 @@
 // `inerta optimise STUDY --out DIR` on a tiny study (one catenary, two speeds, one layout, one start):
 // the table, the results and the figures' CSV files, and the PNGs or a note that they cannot be drawn.
+// The study's name has double quotes, a backslash and non-ASCII characters: results.json stays valid.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -38,7 +40,8 @@ TEST(OptimiseCli, TinyStudyWritesTheTableResultsAndFigureData) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path study = dir / "tiny.yaml", out = dir / "out";
-  std::ofstream(study) << "name: tiny\nmodel: " << INERTA_SOURCE_DIR
+  const std::string name = "my \"quoted\" \\ study \xc3\xa9";
+  std::ofstream(study) << "name: '" << name << "'\nmodel: " << INERTA_SOURCE_DIR
                        << "/models/hsx.yaml\ncatenary: " << INERTA_SOURCE_DIR
                        << "/models/catenary.yaml\n"
                           "speeds: {from: 150, to: 200, step: 50, unit: kmh}\n"
@@ -55,12 +58,20 @@ TEST(OptimiseCli, TinyStudyWritesTheTableResultsAndFigureData) {
   EXPECT_TRUE(contains(text, "time-domain re-check")) << text;
 
   EXPECT_EQ(first_line(out / "results.csv"), "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations");
+  nlohmann::ordered_json results;
+  ASSERT_NO_THROW(results = nlohmann::ordered_json::parse(read(out / "results.json"))) << read(out / "results.json");
+  EXPECT_EQ(results["study"], name);
+  ASSERT_EQ(results["layouts"].size(), 1u);
+  EXPECT_EQ(results["layouts"][0]["layout"], "b|k");
+  EXPECT_EQ(results["layouts"][0]["values"].size(), 2u);  // b and k
+  EXPECT_GT(results["layouts"][0]["J2"].get<double>(), 0.0);
   EXPECT_EQ(first_line(out / "sigma.csv"), "design,catenary,v_kmh,sigma_N,mean_N");
   EXPECT_EQ(first_line(out / "frf.csv"), "design,f_hz,mag,phase_deg");
   EXPECT_EQ(first_line(out / "contact.csv"), "design,catenary,t_s,F_N");
   EXPECT_EQ(first_line(out / "j2_map.csv"), "b,k,J2_N");
   EXPECT_EQ(first_line(out / "centripetal.csv"), "design,centripetal,catenary,v_kmh,sigma_N,mean_N");
   EXPECT_TRUE(fs::exists(out / "report.json"));
+  EXPECT_TRUE(nlohmann::json::accept(read(out / "report.json"))) << read(out / "report.json");
   // Either the PNGs were drawn, or the program said why not and still succeeded.
   if (contains(text, "note: no plots")) {
     EXPECT_FALSE(fs::exists(out / "sigma.png"));

@@ -7,7 +7,7 @@
 
 #include "inerta/analysis/frf.hpp"
 #include "inerta/mbs/model.hpp"
-#include "inerta/optim/pattern_search.hpp"
+#include "inerta/numerics/pattern_search.hpp"
 
 namespace inerta::analysis {
 
@@ -59,11 +59,11 @@ struct FrfFit {
   Frf fitted;  ///< model FRF at the fit
 };
 
-/// Minimises eq. 6.47 over the variables by the log-scaled pattern search (optim::pattern_search,
+/// Minimises eq. 6.47 over the variables by the log-scaled pattern search (numerics::pattern_search,
 /// multi-start, deterministic for the seed); the model FRF is frf_linear at the measured
 /// frequencies. A model that fails numerically for some values costs +∞ there.
-FrfFit fit_frf(const ModelOf& model_of, const std::vector<optim::Variable>& vars, const Frf& measured,
-               const optim::Options& options);
+FrfFit fit_frf(const ModelOf& model_of, const std::vector<numerics::Variable>& vars, const Frf& measured,
+               const numerics::Options& options);
 
 // ---- Pneumatic actuator (spec/03 §3.3) ------------------------------------------------------------
 

@@ -9,7 +9,7 @@
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/network/network.hpp"
-#include "inerta/optim/pattern_search.hpp"
+#include "inerta/numerics/pattern_search.hpp"
 
 namespace inerta::optim {
 
@@ -21,7 +21,7 @@ struct Study {
   catenary::Contact contact;
   std::vector<double> speeds;        ///< m/s
   std::vector<std::string> layouts;  ///< named layouts or expressions
-  Options search;
+  numerics::Options search;
   double lo = 0.1, hi = 1e9;  ///< bounds of every free value (SI), 0 and ∞ reachable
   int harmonics = 8;
   /// Per catenary: the actuator's length at the static equilibrium of the pantograph with its own
@@ -62,6 +62,6 @@ StudyCost evaluate_time(const Study& study, const network::Network& net);
 std::vector<std::string> free_parameters(const std::string& layout);
 
 /// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
-LayoutResult optimise_layout(const Study& study, const std::string& layout, const Progress& progress = {});
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress = {});
 
 }  // namespace inerta::optim

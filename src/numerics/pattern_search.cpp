@@ -1,15 +1,15 @@
-#include "inerta/optim/pattern_search.hpp"
+#include "inerta/numerics/pattern_search.hpp"
 
-#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <random>
 #include <stdexcept>
 
-namespace inerta::optim {
+namespace inerta::numerics {
 
 namespace {
 double box_lo(const Variable& v) { return std::log10(v.lo) - (v.can_open ? 1.0 : 0.0); }
@@ -26,7 +26,9 @@ double decode(const Variable& v, double u) {
 std::string describe(double value) {
   if (value == 0) return "open";
   if (std::isinf(value)) return "rigid";
-  return fmt::format("{:.4g}", value);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", value);
+  return buf;
 }
 
 Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& o, const Progress& progress) {
@@ -93,7 +95,7 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
       if (progress) progress(start, total + evals, std::min(best.cost, fu));
     }
     total += evals;
-    if (fu < best.cost) {
+    if (fu < best.cost || best.values.empty()) {  // the first start stands even if nothing was finite
       best.cost = fu, best.u = u, best.values = values_of(u), best.best_start = start;
     }
   }
@@ -101,4 +103,4 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
   return best;
 }
 
-}  // namespace inerta::optim
+}  // namespace inerta::numerics

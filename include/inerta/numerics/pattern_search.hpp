@@ -7,11 +7,14 @@
 // Each variable lives in a box [log10 lo − 1, log10 hi + 1] of decades: the last half decade below
 // lo means "0" (open) and the last half decade above hi means "∞" (rigid), when allowed — so the
 // limits are reachable and reported as such (the thesis reads values at its bounds as rigid).
+//
+// The cost is called from worker threads. It may return +∞ for a point it cannot evaluate; any
+// exception it throws propagates out of pattern_search (a bug is never read as a bad design).
 #include <functional>
 #include <string>
 #include <vector>
 
-namespace inerta::optim {
+namespace inerta::numerics {
 
 struct Variable {
   std::string name;
@@ -34,9 +37,9 @@ struct Options {
 };
 
 struct Result {
-  std::vector<double> values;  ///< decoded (0 and ∞ possible)
+  std::vector<double> values;  ///< decoded (0 and ∞ possible), one per variable
   std::vector<double> u;       ///< search coordinates
-  double cost = 0;
+  double cost = 0;             ///< +∞ (or NaN) if no point had a finite cost: values are the first start's
   int evaluations = 0;  ///< all starts
   int best_start = 0;
 };
@@ -45,8 +48,9 @@ using Cost = std::function<double(const std::vector<double>& values)>;
 /// progress(start, evaluations so far, best cost so far)
 using Progress = std::function<void(int, int, double)>;
 
-/// Minimises cost(values). Deterministic for a given seed (ties broken by poll order).
+/// Minimises cost(values). Throws std::invalid_argument unless 0 < lo < hi for every variable.
+/// Deterministic for a given seed (ties broken by poll order).
 Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& options = {},
                       const Progress& progress = {});
 
-}  // namespace inerta::optim
+}  // namespace inerta::numerics
