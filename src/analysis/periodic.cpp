@@ -13,6 +13,7 @@
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/mbs/linearisation.hpp"
+#include "inerta/numerics/finite_difference.hpp"
 
 namespace inerta::analysis {
 
@@ -60,13 +61,10 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
   Eigen::VectorXd B(S);  // response of [ξ̇; ξ̈; ż] to a unit wire force
   B << Eigen::VectorXd::Zero(d), L.N.transpose() * (wp.qdd - qdd0), wp.zd - zd0;
   const double Lf = F_p - F_s;
-  Eigen::RowVectorXd LX(S);
-  for (int k = 0; k < S; ++k) {
-    const double h = 1e-6;
-    Eigen::VectorXd Xp = X0, Xm = X0;
-    Xp[k] = h, Xm[k] = -h;
-    LX[k] = (F_of(m, ws, state_of(Xp)) - F_of(m, ws, state_of(Xm))) / (2 * h);
-  }
+  // Λ = ∂F/∂X at X = 0 (central differences, h = 1e-6).
+  const Eigen::RowVectorXd LX = numerics::central_difference_jacobian(
+      [&](const Eigen::VectorXd& X) { return Eigen::VectorXd::Constant(1, F_of(m, ws, state_of(X))); }, X0, 1e-6,
+      numerics::Step::Absolute);
   // Wire displacement and velocity as rows over X.
   Eigen::RowVectorXd P = Eigen::RowVectorXd::Zero(S), Pd = Eigen::RowVectorXd::Zero(S);
   P.head(d) = L.N.row(wy);

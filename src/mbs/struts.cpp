@@ -34,7 +34,7 @@ double Spring::force(const Model& model, double, const State& x, const Workspace
 }
 
 // Damper ---------------------------------------------------------------------------------------
-void Damper::add(const Model& model, double, const State&, Workspace& ws) const {
+void Damper::add(const Model&, double, const State&, Workspace& ws) const {
   StrutKinematics s = kinematics(ws);
   add_tension(c_ * s.l_dot, s, ws);
 }
@@ -70,7 +70,7 @@ double Inerter::force(const Model& model, double, const State&, const Workspace&
 }
 
 // Constant axial force -------------------------------------------------------------------------
-void AxialForce::add(const Model& model, double, const State&, Workspace& ws) const { add_tension(F_, kinematics(ws), ws); }
+void AxialForce::add(const Model&, double, const State&, Workspace& ws) const { add_tension(F_, kinematics(ws), ws); }
 double AxialForce::energy(const Model& model, double, const State& x) const { return F_ * kinematics(model, x).l; }
 
 }  // namespace inerta::mbs
