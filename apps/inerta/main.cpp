@@ -28,6 +28,7 @@
 #include "inerta/io/linear_model_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/study_file.hpp"
+#include "inerta/io/study_report.hpp"
 #include "inerta/io/study_results.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -731,7 +732,7 @@ int cmd_optimise(const OptimiseArgs& a) {
           std::fflush(stdout);
         });
     check = report.time_check;
-    const auto files = optim::write_report(report, a.out);
+    const auto files = io::write_study_report(report, a.out);
     fmt::print("wrote");
     for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
     fmt::print(" in {}\n", a.out);

@@ -1,8 +1,10 @@
 // The figures' data of a design study (optim/report.hpp) on a reduced HSX study.
 #include "inerta/io/study_file.hpp"
+#include "inerta/io/study_report.hpp"
 #include "inerta/optim/report.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -132,7 +134,7 @@ TEST(Report, ReportDataAndCsvFiles) {
 
   const auto dir = std::filesystem::temp_directory_path() / "inerta_report_test";
   std::filesystem::remove_all(dir);
-  const auto files = optim::write_report(r, dir.string());
+  const auto files = io::write_study_report(r, dir.string());
   EXPECT_EQ(files.size(), 6u);
   auto sigma = lines(dir / "sigma.csv");
   ASSERT_FALSE(sigma.empty());
@@ -155,5 +157,8 @@ TEST(Report, ReportDataAndCsvFiles) {
   EXPECT_EQ(cen.size(), rows);
   std::stringstream json;
   json << std::ifstream(dir / "report.json").rdbuf();
-  EXPECT_NE(json.str().find("\"map\": {\"layout\": \"b|k\""), std::string::npos) << json.str();
+  const auto j = nlohmann::json::parse(json.str());
+  EXPECT_EQ(j["map"]["layout"], "b|k") << json.str();
+  EXPECT_EQ(j["best_cost"]["J2"].get<double>(), r.best_cost.J);  // full precision
+  EXPECT_EQ(j["catenaries"].size(), r.catenaries.size());
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The data behind the figures of a design study (spec/07 "extra outputs", spec/06 §6.5), computed
 // from a study and its optimised layouts. `inerta optimise --out DIR` writes them as CSV
-// (write_report) and scripts/plot-study draws them:
+// (io::write_study_report) and scripts/plot-study draws them:
 //   (a) σ(v) of the default and the best design for each catenary (periodic fast path, as J2);
 //   (b) the head FRF on the test rig (P_ay over the contact force, analysis::frf_linear), default vs best;
 //   (c) the contact force in time at one speed (180 km/h) under each catenary (time domain), default vs best;
@@ -131,9 +131,5 @@ using ReportProgress = std::function<void(int, int, const std::string&, int, int
 /// Computes (a)–(e) for the study's default suspension and its best layout result.
 Report make_report(const Study& study, const std::vector<LayoutResult>& results, const ReportOptions& options = {},
                    const ReportProgress& progress = {});
-
-/// Writes DIR/sigma.csv, frf.csv, contact.csv, j2_map.csv (if there is a map), centripetal.csv and
-/// report.json (docs/cli.md#inerta-optimise lists their columns). Returns the files written.
-std::vector<std::string> write_report(const Report& report, const std::string& dir);
 
 }  // namespace inerta::optim
