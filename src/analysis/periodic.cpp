@@ -23,7 +23,7 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
                                         const catenary::Contact& contact, const std::vector<double>& speeds, int H) {
   const catenary::LumpedCatenary* point = catenary.point_model();
   if (!point)
-    throw ModelError(fmt::format("the periodic method needs a point model of the catenary (the lumped catenary); {} "
+    throw ModelError(fmt::format("the periodic method needs a point model of the catenary (the lumped catenary); the {} "
                                  "has none: use the time method",
                                  catenary.describe()));
   const catenary::LumpedCatenary& cat = *point;

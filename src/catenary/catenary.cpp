@@ -13,7 +13,7 @@ std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& p
   if (!(speed > 0) || !std::isfinite(speed))
     throw InvalidArgument(fmt::format("couple: the speed must be a positive number of m/s, got {}", speed));
   if (static_cast<int>(pantographs.size()) > max_pantographs())
-    throw ModelError(fmt::format("{} carries at most {} pantograph(s), {} were given{}", describe(), max_pantographs(),
+    throw ModelError(fmt::format("the {} carries at most {} pantograph(s), {} were given{}", describe(), max_pantographs(),
                                  pantographs.size(),
                                  max_pantographs() == 1 ? " (a point model has no distance between pantographs)" : ""));
   for (std::size_t k = 0; k < pantographs.size(); ++k) {
