@@ -233,3 +233,34 @@ TEST(WireProfileFile, ReadsHeightsOrACsvAndNamesTheLineOfAnError) {
   const io::CatenaryFile bundled = io::load_catenary(inerta::testing::model_path("wire-profile.yaml"));
   EXPECT_EQ(bundled.catenary->span(), 60);
 }
+
+TEST(CatenaryConstructors, RejectNonPhysicalParametersWithATypedError) {
+  EXPECT_THROW((catenary::Contact{catenary::Contact::Kind::Penalty, -1e5, 0}.validate()), InvalidArgument);
+  EXPECT_THROW((catenary::Contact{catenary::Contact::Kind::Penalty, NAN, 0}.validate()), InvalidArgument);
+  EXPECT_THROW((catenary::Contact{catenary::Contact::Kind::Penalty, 1e5, -1}.validate()), InvalidArgument);
+  EXPECT_THROW(catenary::PenaltyContact("c", 0, {}, 1, {}, -1.0, 0.0, 0.0), InvalidArgument);
+  catenary::LumpedCatenary p;
+  p.m[0] = 0;
+  EXPECT_THROW(catenary::Lumped{p}, InvalidArgument);
+  p = {};
+  p.k[0] = -7000;
+  EXPECT_THROW(catenary::Lumped{p}, InvalidArgument);
+  p = {};
+  p.span = NAN;
+  EXPECT_THROW(catenary::Lumped{p}, InvalidArgument);
+  catenary::WireProfile w;
+  w.x = {0, 10};
+  w.h = {0, 0.1};  // periodic but does not close
+  EXPECT_THROW(catenary::WireProfileCatenary{w}, InvalidArgument);
+  w.periodic = false;  // not periodic: needs a span
+  EXPECT_THROW(catenary::WireProfileCatenary{w}, InvalidArgument);
+  w.span = 10;
+  EXPECT_NO_THROW(catenary::WireProfileCatenary{w});
+  // Coupling checks its arguments too.
+  const catenary::WireProfileCatenary ok{w};
+  EXPECT_THROW(ok.couple(two_mass(), penalty(1e5), 0.0), InvalidArgument);
+  EXPECT_THROW(ok.couple(two_mass(), penalty(1e5), NAN), InvalidArgument);
+  pantograph::Pantograph no_contact = two_mass();
+  no_contact.contact_marker = -1;
+  EXPECT_THROW(ok.couple(no_contact, penalty(1e5), 10.0), ModelError);
+}
