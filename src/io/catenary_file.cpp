@@ -168,14 +168,7 @@ void apply_override(Parsed& c, const std::string& o) {
 }
 
 CatenaryFile read_catenary(const std::string& path, const std::vector<std::string>& overrides) {
-  YAML::Node loaded;
-  try {
-    loaded = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ModelError(fmt::format("{}: cannot open the catenary file", path));
-  } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
-  }
+  const YAML::Node loaded = yaml_load_file(path, "catenary file");
   const YAML::Node& root = loaded;
   if (!root.IsMap()) yaml_fail(path, root, "", "expected a mapping with 'catenary' (or 'profile') and optional 'contact'");
   Parsed c;

@@ -16,14 +16,7 @@ namespace inerta::io {
 
 namespace {
 optim::Study read_study(const std::string& path) {
-  YAML::Node loaded;
-  try {
-    loaded = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ModelError(fmt::format("{}: cannot open the study file", path));
-  } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
-  }
+  const YAML::Node loaded = yaml_load_file(path, "study file");
   const YAML::Node& root = loaded;
   if (!root.IsMap()) yaml_fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
   for (auto it = root.begin(); it != root.end(); ++it) {

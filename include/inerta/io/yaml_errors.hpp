@@ -17,6 +17,17 @@ namespace inerta::io {
   throw ModelError(fmt::format("{}: '{}': {}", where, key, what));
 }
 
+/// Reads a YAML file: ModelError "file: cannot open the <what>" or "file:line: YAML syntax error: …".
+inline YAML::Node yaml_load_file(const std::string& path, const std::string& what) {
+  try {
+    return YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw ModelError(fmt::format("{}: cannot open the {}", path, what));
+  } catch (const YAML::ParserException& e) {
+    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+  }
+}
+
 inline double yaml_number(const std::string& file, const YAML::Node& n, const std::string& key) {
   try {
     return n.as<double>();
