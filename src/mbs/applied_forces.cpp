@@ -1,9 +1,68 @@
 #include "inerta/mbs/applied_forces.hpp"
 
+#include "inerta/error.hpp"
 #include "inerta/mbs/model.hpp"
+#include "inerta/mbs/parameter_check.hpp"
 #include "inerta/mbs/state.hpp"
 
 namespace inerta::mbs {
+
+namespace {
+// f, if TimeFunction::validate accepts it; otherwise InvalidArgument naming the element ("value").
+TimeFunction valid(const check::Element& who, TimeFunction f) {
+  try {
+    f.validate();
+  } catch (const InvalidArgument& e) {
+    check::fail(who, "value", e.what());
+  }
+  return f;
+}
+}  // namespace
+
+Gravity::Gravity(Vec2 g)
+    : ForceElement("gravity"), g_(check::finite_vector({"gravity", ""}, "g", g)), g3_(g.x(), g.y(), 0.0) {}
+Gravity::Gravity(Vec3 g)
+    : ForceElement("gravity"), g_(g.head<2>()), g3_(check::finite_vector({"gravity", ""}, "g", g)), spatial_(true) {}
+
+PointForce::PointForce(std::string name, int body, Vec2 u, Vec2 direction, TimeFunction f)
+    : ForceElement(std::move(name)),
+      body_(body),
+      u_(check::finite_vector({"point force", this->name()}, "marker", u)),
+      d_(check::direction({"point force", this->name()}, "direction", direction).normalized()),
+      f_(valid({"point force", this->name()}, std::move(f))) {}
+PointForce::PointForce(std::string name, int body, Vec3 u, Vec3 direction, TimeFunction f, std::true_type)
+    : ForceElement(std::move(name)),
+      body_(body),
+      u3_(check::finite_vector({"point force", this->name()}, "marker", u)),
+      d3_(check::direction({"point force", this->name()}, "direction", direction).normalized()),
+      f_(valid({"point force", this->name()}, std::move(f))),
+      spatial_(true) {}
+
+PointTorque::PointTorque(std::string name, int body, Vec3 axis, TimeFunction f)
+    : ForceElement(std::move(name)),
+      body_(body),
+      n_(check::direction({"point torque", this->name()}, "axis", axis).normalized()),
+      f_(valid({"point torque", this->name()}, std::move(f))) {}
+
+RotationalSpringDamper::RotationalSpringDamper(std::string name, int body_i, int body_j, double k, double angle0,
+                                               double c)
+    : ForceElement(std::move(name)),
+      bi_(body_i),
+      bj_(body_j),
+      k_(check::nonnegative({"rotational spring-damper", this->name()}, "k", k, "N·m/rad")),
+      a0_(check::finite({"rotational spring-damper", this->name()}, "angle0", angle0, "rad")),
+      c_(check::nonnegative({"rotational spring-damper", this->name()}, "c", c, "N·m·s/rad")) {}
+RotationalSpringDamper::RotationalSpringDamper(std::string name, int body_i, int body_j, double k, double angle0,
+                                               double c, Spatial sp)
+    : RotationalSpringDamper(std::move(name), body_i, body_j, k, angle0, c) {
+  const check::Element who{"rotational spring-damper", this->name()};
+  check::direction(who, "joint", sp.s_i);  // the joint's axis and reference directions
+  check::direction(who, "joint", sp.h_i);
+  check::direction(who, "joint", sp.h_j);
+  check::finite(who, "joint", sp.angle_init, "rad");
+  sp_ = sp;
+  spatial_ = true;
+}
 
 void Gravity::add(const Model& model, double, const State&, Workspace& ws) const {
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "inerta/mbs/parameter_check.hpp"
 #include "inerta/mbs/state.hpp"
 
 namespace inerta::mbs {
@@ -37,7 +38,28 @@ std::string Model::coord_name(int k) const {
   return bodies[static_cast<std::size_t>(k / nc)].name + "." + (spatial() ? names3 : names)[k % nc];
 }
 
+void Body::validate() const {
+  const check::Element who{"body", name};
+  check::nonnegative(who, "mass", mass);
+  check::nonnegative(who, "inertia", inertia);
+  check::finite_vector(who, "inertia", inertia3);
+  if (!inertia3.isApprox(inertia3.transpose(), 1e-12)) check::fail(who, "inertia", "the inertia tensor must be symmetric");
+  const Vec3 I = Eigen::SelfAdjointEigenSolver<Mat3>(inertia3).eigenvalues();  // ascending
+  if (!(I.minCoeff() >= 0) || I[0] + I[1] < I[2] * (1 - 1e-12))
+    check::fail(who, "inertia",
+                "must be positive semi-definite and satisfy the triangle inequality I1 + I2 >= I3 of a rigid body");
+  check::finite_vector(who, "position", q0.head<2>().eval());
+  check::finite(who, "angle", q0.z(), "rad");
+  check::finite_vector(who, "velocity", qd0.head<2>().eval());
+  check::finite(who, "angular_velocity", qd0.z(), "rad/s");
+  check::finite_vector(who, "position", q0s.head<3>().eval());
+  check::finite_vector(who, "quaternion", q0s.tail<4>().eval());
+  check::finite_vector(who, "velocity", qd0s.head<3>().eval());
+  check::finite_vector(who, "angular_velocity", qd0s.tail<4>().eval());
+}
+
 void Model::finalize() {
+  for (const Body& b : bodies) b.validate();
   q_adr_.resize(bodies.size());
   for (std::size_t b = 0; b < bodies.size(); ++b) q_adr_[b] = body_coords() * static_cast<int>(b);
   n_states_ = 0;

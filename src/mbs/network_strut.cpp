@@ -1,20 +1,39 @@
 #include "inerta/mbs/network_strut.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "inerta/mbs/model.hpp"
+#include "inerta/mbs/parameter_check.hpp"
 #include "inerta/mbs/state.hpp"
 
 namespace inerta::mbs {
 
+namespace {
+// A network a strut can realise: simplified (neither open nor rigid, spec/03 §3.1) with finite
+// element values >= 0 (0 is kept: an open network is replaced by a zero damper by the callers).
+const network::Network& realisable(const check::Element& who, const network::Network& net) {
+  using K = network::Network::Kind;
+  if (net.kind == K::Open || net.kind == K::Rigid)
+    check::fail(who, "network",
+                fmt::format("is {}; expected a simplified network with a finite admittance (network::simplify; an "
+                            "open network exerts no force, a rigid one is a distance joint)",
+                            net.kind == K::Open ? "open" : "rigid"));
+  if (net.is_element() && !(std::isfinite(net.value) && net.value >= 0))
+    check::fail(who, "params", fmt::format("element '{}' = {} must be a finite number >= 0", net.name, net.value));
+  for (const network::Network& c : net.children) realisable(who, c);
+  return net;
+}
+}  // namespace
+
 NetworkStrut::NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net,
                            double l_ref, bool centripetal)
     : Strut(std::move(name), bi, ui, bj, uj),
-      net_(net),
-      r_(network::realise(net)),
-      l_ref_(l_ref),
-      centripetal_(centripetal) {
-}
+      net_(realisable({"network strut", this->name()}, net)),
+      r_(network::realise(net_)),
+      l_ref_(check::nonnegative({"network strut", this->name()}, "free_length", l_ref, "m")),
+      centripetal_(centripetal) {}
 
 bool NetworkStrut::centripetal(const Model& model) const { return centripetal_ && model.options.centripetal; }
 
@@ -67,10 +86,15 @@ void NetworkStrut::relax(const Model& model, State& x) const {
 // Actuator -------------------------------------------------------------------------------------
 Actuator::Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref,
                    Params p, bool centripetal)
-    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, centripetal),
-      p_(p),
-      rod_body_(bj),
-      rod_u_(uj) {}
+    : NetworkStrut(std::move(name), bi, ui, bj, uj, net, l_ref, centripetal), p_(p), rod_body_(bj), rod_u_(uj) {
+  const check::Element who{"actuator", this->name()};
+  check::finite(who, "constant_force", p.constant_force, "N");
+  check::nonnegative(who, "piston_mass", p.piston_mass, "kg");
+  check::nonnegative(who, "friction", p.friction, "N");
+  check::positive(who, "friction_velocity", p.friction_velocity, "m/s");
+  if (p.piston_mass > 0 && bj < 0)
+    check::fail(who, "piston_mass", "the rod end (second marker) is on ground; expected the rod end on a body");
+}
 
 void Actuator::add(const Model& model, double t, const State& x, Workspace& ws) const {
   NetworkStrut::add(model, t, x, ws);

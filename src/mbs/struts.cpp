@@ -5,6 +5,16 @@
 
 namespace inerta::mbs {
 
+Strut::Strut(std::string name, int body_i, StrutEnd u_i, int body_j, StrutEnd u_j)
+    : ForceElement(std::move(name)), body_i_(body_i), body_j_(body_j), u_i_(u_i.u), u_j_(u_j.u), spatial_(u_i.spatial) {
+  const check::Element who{"strut", this->name()};
+  if (body_i == body_j)
+    check::fail(who, "markers", "both terminals are on the same body; a strut needs two bodies");
+  if (u_i.spatial != u_j.spatial) check::fail(who, "markers", "one terminal is planar and the other spatial");
+  check::finite_vector(who, "markers", u_i_);
+  check::finite_vector(who, "markers", u_j_);
+}
+
 StrutKinematics Strut::kinematics(const Model& model, const State& x) const {
   if (spatial_) return strut_kinematics(model.sframe(x, body_i_), u_i_, model.sframe(x, body_j_), u_j_);
   return strut_kinematics(model.frame(x, body_i_), u_i(), model.frame(x, body_j_), u_j());

@@ -1,14 +1,58 @@
 #include "inerta/mbs/time_function.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "inerta/mbs/parameter_check.hpp"
+
 namespace inerta::mbs {
+
+void TimeFunction::validate() const {
+  switch (kind) {
+    case Kind::Constant:
+      check::finite({"constant function", ""}, "value", offset);
+      return;
+    case Kind::Sine: {
+      const check::Element who{"sine function", ""};
+      check::finite(who, "amplitude", amplitude);
+      check::nonnegative(who, "frequency", frequency, "Hz");
+      check::finite(who, "phase", phase, "rad");
+      check::finite(who, "offset", offset);
+      return;
+    }
+    case Kind::Table: {
+      const check::Element who{"table function", ""};
+      if (t.empty()) check::fail(who, "points", "expected at least one [t, value] pair");
+      if (t.size() != v.size())
+        check::fail(who, "points", fmt::format("has {} times but {} values", t.size(), v.size()));
+      for (std::size_t k = 0; k < t.size(); ++k) {
+        const std::string at = fmt::format("points[{}]", k);
+        check::finite(who, at, t[k], "s");
+        check::finite(who, at, v[k]);
+        if (k > 0 && !(t[k] > t[k - 1]))
+          check::fail(who, at, fmt::format("times must be strictly increasing (t = {} after t = {})", t[k], t[k - 1]));
+      }
+      return;
+    }
+  }
+}
 
 TimeFunction TimeFunction::constant(double value) {
   TimeFunction f;
   f.offset = value;
+  f.validate();
+  return f;
+}
+
+TimeFunction TimeFunction::table(std::vector<double> t, std::vector<double> v) {
+  TimeFunction f;
+  f.kind = Kind::Table;
+  f.t = std::move(t);
+  f.v = std::move(v);
+  f.validate();
   return f;
 }
 
@@ -19,6 +63,7 @@ TimeFunction TimeFunction::sine(double amplitude, double frequency_hz, double ph
   f.frequency = frequency_hz;
   f.phase = phase;
   f.offset = offset;
+  f.validate();
   return f;
 }
 

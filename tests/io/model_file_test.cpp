@@ -745,3 +745,160 @@ TEST(ModelFile, NetworkDuplicateParameter) {
 )"),
                "k", "duplicate element in params");
 }
+
+// ----------------------------------------------------------------------------------------------
+// Physical values are checked by the element constructors (inerta::InvalidArgument); the file
+// reports them at the key's line, as file:line: 'key': ... in <element>
+// ----------------------------------------------------------------------------------------------
+
+TEST(ModelFile, NegativeSpringStiffness) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: k
+    type: spring
+    markers: [bar.b, blk.cm]
+    k: -5   # <-- here
+)",
+               "k", "must be >= 0 (N/m), got -5 in force element 'k'");
+}
+
+TEST(ModelFile, NaNInertance) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: b
+    type: inerter
+    markers: [bar.b, blk.cm]
+    b: .nan   # <-- here
+)",
+               "b", "must be a finite number (kg), got nan in force element 'b'");
+}
+
+TEST(ModelFile, InfiniteDamping) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: c
+    type: damper
+    markers: [bar.b, blk.cm]
+    c: .inf   # <-- here
+)",
+               "c", "must be a finite number (N·s/m), got inf in force element 'c'");
+}
+
+TEST(ModelFile, NegativeFreeLength) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: k
+    type: spring
+    markers: [bar.b, blk.cm]
+    k: 10
+    free_length: -1   # <-- here
+)",
+               "free_length", "must be >= 0 (m), got -1 in force element 'k'");
+  // A rigid network is a distance joint, not a NetworkStrut, and gets the same check.
+  expect_error(strut_model(R"(    type: network
+    markers: [bar.b, blk.cm]
+    network: "k|c"
+    params: {k: inf, c: 1}
+    free_length: -2   # <-- here
+)"),
+               "free_length", "must be >= 0 (m), got -2 in force element 'strut'");
+}
+
+TEST(ModelFile, StrutWithBothTerminalsOnOneBody) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: k
+    type: spring
+    markers: [bar.a, bar.b]   # <-- here
+    k: 10
+)",
+               "markers", "both terminals are on the same body; a strut needs two bodies");
+}
+
+TEST(ModelFile, NegativeRotationalDamping) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: kr
+    type: rotational_spring
+    joint: pin
+    k: 10
+    c: -1   # <-- here
+)",
+               "c", "must be >= 0 (N·m·s/rad), got -1 in force element 'kr'");
+}
+
+TEST(ModelFile, NaNAngleInDegreesIsReportedAtItsKey) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: kr
+    type: rotational_spring_damper
+    joint: pin
+    k: 10
+    c: 1
+    angle0_deg: .nan   # <-- here
+)",
+               "angle0_deg", "must be a finite number (rad), got nan in force element 'kr'");
+}
+
+TEST(ModelFile, RotationalDamperTakesOnlyC) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: d
+    type: rotational_damper
+    joint: pin
+    c: 1
+    k: 10   # <-- here
+)",
+               "k",
+               "unknown key in force element 'd'; expected one of: name, type, joint, c; a rotational_damper takes "
+               "only c; use rotational_spring_damper for both");
+}
+
+TEST(ModelFile, PointForceWithZeroDirection) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: F
+    type: point_force
+    marker: bar.b
+    direction: [0, 0]   # <-- here
+    value: 5
+)",
+               "direction", "must be a non-zero vector in force element 'F'");
+}
+
+TEST(ModelFile, SineWithNegativeFrequency) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: F
+    type: point_force
+    marker: bar.b
+    direction: [0, 1]
+    value: {type: sine, amplitude: 1,
+            frequency: -2}   # <-- here
+)",
+               "frequency", "must be >= 0 (Hz), got -2 in value (sine)");
+}
+
+TEST(ModelFile, TablePointThatIsNaN) {
+  expect_error(kHead + kJoints + R"(forces:
+  - name: F
+    type: point_force
+    marker: bar.b
+    direction: [0, 1]
+    value:
+      type: table
+      points:
+        - [0, 0]
+        - [1, .nan]   # <-- here
+)",
+               "points", "must be a finite number (got nan) in value (table)");
+}
+
+TEST(ModelFile, NaNMass) {
+  expect_error("bodies:\n  - name: b\n    mass: .nan   # <-- here\n    inertia: 1\n    position: [0, 0]\n", "mass",
+               "must be a finite number (got nan) in body 'b'");
+}
+
+TEST(ModelFile, NaNGravity) {
+  expect_error("options:\n  gravity: [0, .nan]   # <-- here\nbodies:\n  - {name: b, mass: 1, inertia: 1, position: [0, "
+               "0]}\n",
+               "gravity", "must be finite");
+}
+
+TEST(ModelFile, ActuatorPistonMassOnAGroundRodEnd) {
+  expect_error(strut_model(R"(    type: actuator
+    markers: [blk.cm, ground.O]
+    piston_mass: 2   # <-- here
+)"),
+               "piston_mass", "the rod end (second marker) is on ground; expected the rod end on a body");
+}

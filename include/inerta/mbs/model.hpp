@@ -27,6 +27,12 @@ struct Body {
   Vec7 q0s = (Vec7() << 0, 0, 0, 1, 0, 0, 0).finished();  ///< 3D: tabulated [R; p]
   Vec7 qd0s = Vec7::Zero();                               ///< 3D: [Ṙ; ṗ]
   bool weighs = true;  ///< gravity acts on it (not on an equivalent mass such as the lumped catenary's)
+
+  /// InvalidArgument (naming the body, the parameter and the value) unless mass and inertia are
+  /// finite and >= 0 (zero is allowed where the joints constrain the direction, docs/model-format.md),
+  /// the 3D inertia tensor is symmetric, positive semi-definite and satisfies the triangle inequality
+  /// of a rigid body, and the initial positions and velocities are finite. Model::finalize calls it.
+  void validate() const;
 };
 
 /// Body-fixed point. body = kGround means a fixed point with u in global coordinates.
@@ -83,7 +89,7 @@ struct Model {
   /// every force element's internal-state offset (an element whose states must move is replaced by
   /// a relocated copy, ForceElement::with_state_offset). Call after any change of bodies, joints or
   /// forces; the transformations in this library (remove_joint, coupling, suspension replacement)
-  /// do, so no offset can go stale.
+  /// do, so no offset can go stale. Checks every body (Body::validate).
   void finalize();
 
   // Address table (valid after finalize) and the per-body views that use it.

@@ -13,8 +13,8 @@ namespace inerta::mbs {
 
 class NetworkStrut : public Strut {
  public:
-  /// `net` must be simplified and neither open nor rigid; z occupies State::z[state_offset() ...],
-  /// placed by Model::finalize.
+  /// `net` must be simplified and neither open nor rigid, with finite values >= 0, and l_ref >= 0 (m)
+  /// (InvalidArgument otherwise); z occupies State::z[state_offset() ...], placed by Model::finalize.
   NetworkStrut(std::string name, int bi, StrutEnd ui, int bj, StrutEnd uj, const network::Network& net, double l_ref,
                bool centripetal = true);
   const network::Network& network() const { return net_; }
@@ -49,11 +49,13 @@ class NetworkStrut : public Strut {
 /// regularised by tanh with v_r (default 1 mm/s); off (F_r = 0) by default as in the thesis.
 class Actuator : public NetworkStrut {
  public:
+  /// Checked by the constructor (InvalidArgument): all finite, m_p ≥ 0 (and 0 if the rod end is on
+  /// ground), F_r ≥ 0, v_r > 0.
   struct Params {
     double constant_force = 0;        ///< F_c, N (tension positive)
-    double piston_mass = 0;           ///< m_p, kg
+    double piston_mass = 0;           ///< m_p, kg (≥ 0)
     double friction = 0;              ///< F_r, N (≥ 0)
-    double friction_velocity = 1e-3;  ///< v_r, m/s
+    double friction_velocity = 1e-3;  ///< v_r, m/s (> 0)
   };
   Actuator(std::string name, int bi, Vec2 ui, int bj, Vec2 uj, const network::Network& net, double l_ref, Params p,
            bool centripetal = true);
