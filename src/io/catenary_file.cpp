@@ -69,6 +69,7 @@ void read_lumped(const std::string& path, const YAML::Node& cat, Parsed& c) {
 void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {
   if (!pr.IsMap()) yaml_fail(path, pr, "profile", "missing; expected heights (or file), periodic, span");
   bool have = false;
+  YAML::Node source;  // the heights (or the file key), for the checks of the whole table
   for (auto it = pr.begin(); it != pr.end(); ++it) {
     std::string k = it->first.as<std::string>();
     const YAML::Node v = it->second;
@@ -81,6 +82,7 @@ void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {
     } else if (k == "heights") {
       if (have) yaml_fail(path, it->first, k, "give either heights or file, not both");
       have = true;
+      source = v;
       if (!v.IsSequence() || v.size() < 2) yaml_fail(path, v, k, "expected a list of [x, height] pairs (m), at least 2");
       for (const auto& row : v) {
         if (!row.IsSequence() || row.size() != 2) yaml_fail(path, row, k, "expected [x, height] in m");
@@ -93,6 +95,7 @@ void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {
     } else if (k == "file") {
       if (have) yaml_fail(path, it->first, k, "give either heights or file, not both");
       have = true;
+      source = v;
       if (!v.IsScalar()) yaml_fail(path, v, k, "expected the path of a CSV file with columns x and height (m)");
       const std::string csv = (std::filesystem::path(path).parent_path() / v.Scalar()).string();
       const CsvTable t = CsvTable::read(csv);
@@ -108,6 +111,14 @@ void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {
     }
   }
   if (!have) yaml_fail(path, pr, "profile", "expected heights: [[x, height], ...] or file: heights.csv");
+  const std::string key = pr["heights"].IsDefined() ? "heights" : "file";
+  if (c.profile.periodic && c.profile.h.back() != c.profile.h.front())
+    yaml_fail(path, source, key,
+              fmt::format("a periodic profile must end with its first height ({:g} m), got {:g} m; close it, or set "
+                          "periodic: false and a span",
+                          c.profile.h.front(), c.profile.h.back()));
+  if (!c.profile.periodic && !pr["span"].IsDefined())
+    yaml_fail(path, pr, "span", "missing; a profile that does not repeat needs its span (m) for the statistics windows");
 }
 
 void read_contact(const std::string& path, const YAML::Node& ct, catenary::Contact& contact) {

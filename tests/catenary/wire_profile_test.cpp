@@ -264,3 +264,21 @@ TEST(CatenaryConstructors, RejectNonPhysicalParametersWithATypedError) {
   no_contact.contact_marker = -1;
   EXPECT_THROW(ok.couple(no_contact, penalty(1e5), 10.0), ModelError);
 }
+
+TEST(WireProfileFile, AnOpenPeriodicProfileOrAMissingSpanNamesTheLineAndKey) {
+  const std::string yaml = (std::filesystem::temp_directory_path() / "inerta_profile_open.yaml").string();
+  auto message = [&](const std::string& text) {
+    std::ofstream(yaml) << text;
+    try {
+      io::load_catenary(yaml);
+    } catch (const ModelError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string open = message("type: wire_profile\nprofile:\n  heights: [[0, 0], [10, 0.01]]\n");
+  EXPECT_NE(open.find(yaml + ":3: 'heights': a periodic profile must end with its first height"), std::string::npos)
+      << open;
+  const std::string no_span = message("type: wire_profile\nprofile:\n  periodic: false\n  heights: [[0, 0], [10, 0.01]]\n");
+  EXPECT_NE(no_span.find(yaml + ":3: 'span': missing"), std::string::npos) << no_span;
+}
