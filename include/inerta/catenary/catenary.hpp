@@ -10,6 +10,7 @@
 //     contact points with the pantographs' multibody models, which it integrates in between.
 // Contacts are addressed by typed handles (ContactId), one per pantograph, in the order given.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,9 @@ struct Sample {
   const mbs::Model& model;
   const mbs::State& state;
   const mbs::Workspace& ws;
+  /// Height of the wire at the contact point above its static height without pantographs, m
+  /// (NaN where the catenary has no such wire, e.g. a prescribed profile).
+  double wire_uplift = std::numeric_limits<double>::quiet_NaN();
 };
 using SampleObserver = std::function<void(const Sample&)>;
 
@@ -68,6 +72,10 @@ class Coupled {
   /// contact in time order). A bilateral contact whose force becomes negative stops the run with
   /// NumericalError (time, speed, force). `accelerations`: the samples' workspaces hold
   /// accelerations and multipliers. Returns the integrator statistics (summed over the parts).
+  /// Positions along the line of the supports whose uplift the catenary reports (none by default),
+  /// and their current uplift (m, up, from the static state without pantographs).
+  virtual std::vector<double> support_x() const { return {}; }
+  virtual std::vector<double> support_uplift() const { return {}; }
   virtual solve::RunStats advance(double t_end, double dt, const solve::IntegratorOptions& options,
                                   const SampleObserver& observer, bool accelerations = false) = 0;
 };
@@ -79,6 +87,14 @@ class Catenary {
   virtual std::string describe() const = 0;  ///< one line for reports, with its key numbers
   virtual double span() const = 0;           ///< m: the period of the line (statistics windows)
   virtual int max_pantographs() const = 0;   ///< how many pantographs it carries at once
+  /// Length of the line, m: a run ends when the leading pantograph reaches it (infinite for a
+  /// periodic catenary, which runs until its statistics settle).
+  virtual double line_length() const { return std::numeric_limits<double>::infinity(); }
+  /// The analysis section of a finite line (EN 50317 statistics are taken there), m along the line.
+  struct Section {
+    double from = 0, to = 0;
+  };
+  virtual Section section() const { return {0, line_length()}; }
   /// The catenary without its variation along the line (for modes about a static equilibrium).
   virtual std::shared_ptr<const Catenary> mean() const = 0;
   /// The point model with time-periodic coefficients (eq. 7.1), if the catenary is one: the

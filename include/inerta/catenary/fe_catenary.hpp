@@ -1,0 +1,210 @@
+#pragma once
+// Finite-element catenary (spec/05 §5.3): messenger and contact wire as tensioned Euler–Bernoulli
+// beams, droppers as bars that carry tension only, supports and registrations at the masts, any
+// number of spans, both wires pinned at the line's ends. Planar, vertical plane; transverse
+// displacement w (up) and slope θ = w′ at each node; axial motion is not modelled (for a tensioned
+// wire under small deflection it decouples from the transverse motion).
+//
+//   beam element (length ℓ, Hermite cubics N1..N4 on [w_i, θ_i, w_j, θ_j]):
+//     K_e = EI/ℓ³ [12 6ℓ −12 6ℓ; 6ℓ 4ℓ² −6ℓ 2ℓ²; …] + T/(30ℓ) [36 3ℓ −36 3ℓ; 3ℓ 4ℓ² −3ℓ −ℓ²; …]
+//     M_e = ρA ℓ/420 [156 22ℓ 54 −13ℓ; …]          (consistent mass)
+//   dropper d between messenger node m and contact-wire node c, unstretched length L_d:
+//     tension T_d = max(0, EA/L_d · e_d), e_d = (y_m − y_c) − L_d; half its mass at each end, plus
+//     the clamp masses
+//   damping: Rayleigh, C = a M + b K₀ (K₀: all droppers taut; kept when droppers slacken)
+//
+// Form-finding: the dropper tensions (and the registration and support forces) are solved so that,
+// under gravity, the contact wire passes through the prescribed pre-sag at every dropper and at
+// height 0 at every mast, and the messenger at height `encumbrance` at every mast; the unstretched
+// dropper lengths then follow from the geometry. The dynamic coordinates u are displacements from
+// that static state.
+//
+// Time integration: HHT-α (Hilber–Hughes–Taylor), α ∈ [−1/3, 0], γ = ½ − α, β = (1 − α)²/4
+// (α = 0: the trapezoidal rule, no numerical dissipation). The effective matrix of the line with
+// all droppers taut is factorised once (Eigen sparse Cholesky); slack droppers and the moving
+// penalty contacts are low-rank changes of it, solved exactly by the Woodbury identity from cached
+// columns of its inverse, with an active-set iteration per step (a dropper slackens when its
+// tension would become negative, a contact opens when its force would).
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "inerta/catenary/catenary.hpp"
+
+namespace inerta::catenary {
+
+/// A tensioned wire.
+struct FeWire {
+  double tension = 0;          ///< T, N
+  double mass_per_length = 0;  ///< ρA, kg/m
+  double EI = 0;               ///< bending stiffness, N·m²
+  double wave_speed() const;   ///< sqrt(T/ρA), m/s
+};
+
+/// Everything a catenary file gives (docs/model-format.md#finite-element-catenary).
+struct FeCatenaryData {
+  double span = 55;          ///< m, distance between masts
+  int spans = 10;            ///< number of spans; masts at x = 0, span, …, spans·span
+  double encumbrance = 1.2;  ///< m, messenger height above the contact wire at the masts
+  std::vector<double> dropper_x;  ///< m from the span's first mast, strictly inside (0, span), increasing
+  std::vector<double> presag;     ///< m, contact-wire pre-sag at each dropper (positive down)
+  std::vector<double> nominal_dropper_length;  ///< m, optional (for comparison with the form-finding)
+  FeWire messenger, contact_wire;
+  double dropper_EA = 200e3;                 ///< N
+  double dropper_mass_per_length = 0.117;    ///< kg/m
+  double clamp_mass_messenger = 0.195;       ///< kg, at each dropper's messenger end
+  double clamp_mass_contact = 0.165;         ///< kg, at each dropper's contact-wire end
+  double support_stiffness = 500e3;          ///< N/m, messenger support at each mast
+  double support_mass = 0;                   ///< kg, at each messenger support
+  double registration_stiffness = 2673.58;   ///< N/m, contact-wire registration (steady arm) at each mast
+  double registration_mass = 0;              ///< kg, at each registration
+  double element_length = 0.25;              ///< m, largest element; nodes at every dropper and mast
+  double rayleigh_mass = 0.0125;             ///< a, 1/s
+  double rayleigh_stiffness = 1e-4;          ///< b, s
+  double gravity = 9.81;                     ///< m/s²
+  double time_step = 5e-4;                   ///< s, structural (and coupling) step
+  double hht_alpha = 0.0;                    ///< α of HHT-α, in [−1/3, 0]
+  int section_first = -1, section_last = -1;  ///< analysis section: spans first..last (1-based); −1: default
+  /// InvalidArgument naming the offending value.
+  void validate() const;
+};
+
+/// The assembled line: mesh, matrices and the form-found static state. Immutable.
+class FeLine {
+ public:
+  explicit FeLine(FeCatenaryData data);
+  const FeCatenaryData& data() const { return d_; }
+
+  int n_nodes() const { return static_cast<int>(x_.size()); }  ///< stations along the line (both wires)
+  int n_dofs() const { return n_dofs_; }
+  double length() const { return d_.span * d_.spans; }
+  const std::vector<double>& node_x() const { return x_; }
+  /// Free-DOF index of wire `w` (0 messenger, 1 contact wire) at node i, component c (0: w, 1: θ);
+  /// −1 where the DOF is fixed (the line's ends).
+  int dof(int wire, int node, int c) const;
+
+  const Eigen::SparseMatrix<double>& M() const { return M_; }
+  const Eigen::SparseMatrix<double>& K() const { return K_; }  ///< K₀: all droppers taut
+  const Eigen::SparseMatrix<double>& C() const { return C_; }
+
+  struct Dropper {
+    double x;          ///< m along the line
+    int node;          ///< station
+    int dof_m, dof_c;  ///< free DOFs of w at its messenger and contact-wire ends
+    double length;     ///< unstretched length from the form-finding, m
+    double stiffness;  ///< EA / length, N/m
+    double tension;    ///< static tension, N
+  };
+  const std::vector<Dropper>& droppers() const { return droppers_; }
+  /// Interior masts (the line's end masts are anchors): x and the contact wire's w DOF there.
+  const std::vector<double>& support_x() const { return support_x_; }
+  const std::vector<int>& support_dofs() const { return support_dofs_; }
+
+  /// Static heights (form-found state, no pantograph) of the contact wire at x, and its slope.
+  double static_height(double x) const;
+  double static_slope(double x) const;
+  /// Shape of the contact wire at x: the 4 free-DOF indices (−1: fixed) and the Hermite values N,
+  /// and their x-derivatives dN. ModelError outside [0, length()].
+  struct Shape {
+    std::array<int, 4> dofs;
+    std::array<double, 4> N, dN;
+  };
+  Shape contact_shape(double x) const;
+  double contact_displacement(const Eigen::VectorXd& u, double x) const;  ///< N(x)ᵀ u
+
+  /// Linear static uplift per newton at x (all droppers taut): N(x)ᵀ K₀⁻¹ N(x), m/N.
+  double elasticity(double x) const;
+  /// Static displacement under upward point forces F_k at x_k on the contact wire, droppers free to
+  /// slacken (active-set); `slack` receives which droppers are slack.
+  Eigen::VectorXd static_displacement(const std::vector<double>& x, const std::vector<double>& F,
+                                      std::vector<char>* slack = nullptr) const;
+
+  std::string describe() const;
+
+ private:
+  FeCatenaryData d_;
+  std::vector<double> x_;
+  int n_dofs_ = 0;
+  std::vector<int> dof_;  ///< [wire][node][c] → free DOF or −1
+  Eigen::SparseMatrix<double> M_, K_, C_;
+  std::vector<Dropper> droppers_;
+  std::vector<double> support_x_;
+  std::vector<int> support_dofs_;
+  std::vector<double> y_contact_;  ///< form-found contact-wire heights at the nodes
+  std::vector<double> s_contact_;  ///< and slopes
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> K_llt_;
+  friend class FeIntegrator;
+};
+
+/// A load on the contact wire at x for one step: either a prescribed upward force, or a penalty
+/// contact with a head whose height and vertical velocity at the end of the step are given
+/// (absolute heights: the wire at x is at static_height(x) + N(x)ᵀu).
+struct FeLoad {
+  double x = 0;
+  bool penalty = false;
+  double force = 0;                ///< N, prescribed (penalty = false)
+  double head_y = 0, head_v = 0;   ///< m, m/s (penalty)
+  double stiffness = 0, damping = 0;
+  double speed = 0;                ///< m/s, for the convective part of the wire's velocity
+};
+
+/// The line's dynamic state: displacements from the static state, velocities, accelerations.
+struct FeState {
+  Eigen::VectorXd u, v, a;
+  std::vector<char> slack;  ///< per dropper
+  Eigen::VectorXd q;        ///< net internal force at this time (for HHT-α)
+  double t = 0;
+};
+
+/// HHT-α stepping of one FeLine with a fixed step; holds the factorisation and the cache (a
+/// workspace: one per run).
+class FeIntegrator {
+ public:
+  FeIntegrator(const FeLine& line, double dt, double alpha);
+  double dt() const { return h_; }
+  /// A state at rest in the static state under `loads` (prescribed forces or penalty heads).
+  FeState initial(const std::vector<FeLoad>& loads) const;
+  /// One step from s.t to s.t + dt with the loads at the end of the step; `forces` receives the
+  /// force on the wire of each load (N, up; 0 for an open contact). NumericalError if the active
+  /// set does not settle.
+  void step(FeState& s, const std::vector<FeLoad>& loads, std::vector<double>& forces);
+  /// Kinetic + elastic energy of the state relative to the static state (droppers as in s.slack).
+  double energy(const FeState& s) const;
+  long solves() const { return solves_; }
+
+ private:
+  const Eigen::VectorXd& column(int dof);  ///< A⁻¹ e_dof, cached
+  const FeLine& L_;
+  double h_, alpha_, beta_, gamma_;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> A_llt_;
+  std::vector<int> cache_slot_;
+  std::vector<Eigen::VectorXd> cache_;
+  std::vector<int> cache_dof_;
+  std::size_t cache_next_ = 0;
+  long solves_ = 0;
+  Eigen::VectorXd r_, x0_, tmp_;
+};
+
+/// The finite-element catenary as a catenary type (co-simulated: the line is stepped by
+/// FeIntegrator, each pantograph's multibody model by the multibody integrator; see fe_coupled).
+class FeCatenary final : public Catenary {
+ public:
+  explicit FeCatenary(FeCatenaryData data);
+  const FeLine& line() const { return *line_; }
+  std::string describe() const override;
+  double span() const override { return line_->data().span; }
+  int max_pantographs() const override { return 64; }
+  double line_length() const override { return line_->length(); }
+  Section section() const override;
+  std::shared_ptr<const Catenary> mean() const override;
+
+ protected:
+  std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs, double speed) const override;
+
+ private:
+  std::shared_ptr<const FeLine> line_;
+};
+
+}  // namespace inerta::catenary
