@@ -1,0 +1,87 @@
+// FeCatenaryData checks (catenary/fe_catenary.hpp); file readers turn them into file:line errors.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/error.hpp"
+
+namespace inerta::catenary {
+
+double FeWire::wave_speed() const { return std::sqrt(tension / mass_per_length); }
+
+namespace {
+void positive(const char* what, const char* key, double v, const char* unit) {
+  if (!(v > 0) || !std::isfinite(v))
+    throw InvalidArgument(fmt::format("finite-element catenary: {}", what), key,
+                          fmt::format("must be > 0 ({}), got {}", unit, v));
+}
+void non_negative(const char* what, const char* key, double v, const char* unit) {
+  if (!(v >= 0) || !std::isfinite(v))
+    throw InvalidArgument(fmt::format("finite-element catenary: {}", what), key,
+                          fmt::format("must be >= 0 ({}), got {}", unit, v));
+}
+void wire(const char* which, const FeWire& w) {
+  positive(which, "tension", w.tension, "N");
+  positive(which, "mass_per_length", w.mass_per_length, "kg/m");
+  non_negative(which, "EI", w.EI, "N·m²");
+}
+}  // namespace
+
+void FeCatenaryData::validate() const {
+  positive("line", "span", span, "m");
+  if (spans < 1 || spans > 1000)
+    throw InvalidArgument("finite-element catenary: line", "spans", fmt::format("must be 1 … 1000, got {}", spans));
+  positive("line", "encumbrance", encumbrance, "m");
+  wire("messenger", messenger);
+  wire("contact_wire", contact_wire);
+  if (dropper_x.empty())
+    throw InvalidArgument("finite-element catenary: droppers", "x", "at least one dropper a span is needed");
+  for (std::size_t i = 0; i < dropper_x.size(); ++i) {
+    const double x = dropper_x[i];
+    if (!(x > 0 && x < span) || (i > 0 && !(x > dropper_x[i - 1])))
+      throw InvalidArgument("finite-element catenary: droppers", fmt::format("x[{}]", i),
+                            fmt::format("must increase strictly inside (0, span = {} m), got {} m", span, x));
+  }
+  if (presag.size() != dropper_x.size())
+    throw InvalidArgument("finite-element catenary: droppers", "presag",
+                          fmt::format("needs one value per dropper ({}), got {}", dropper_x.size(), presag.size()));
+  for (std::size_t i = 0; i < presag.size(); ++i)
+    if (!std::isfinite(presag[i]) || std::abs(presag[i]) >= encumbrance)
+      throw InvalidArgument("finite-element catenary: droppers", fmt::format("presag[{}]", i),
+                            fmt::format("must be finite and smaller than the encumbrance ({} m), got {} m",
+                                        encumbrance, presag[i]));
+  if (!nominal_dropper_length.empty() && nominal_dropper_length.size() != dropper_x.size())
+    throw InvalidArgument("finite-element catenary: droppers", "nominal_length",
+                          fmt::format("needs one value per dropper ({}), got {}", dropper_x.size(),
+                                      nominal_dropper_length.size()));
+  positive("droppers", "EA", dropper_EA, "N");
+  non_negative("droppers", "mass_per_length", dropper_mass_per_length, "kg/m");
+  non_negative("droppers", "clamp_mass_messenger", clamp_mass_messenger, "kg");
+  non_negative("droppers", "clamp_mass_contact", clamp_mass_contact, "kg");
+  positive("supports", "stiffness", support_stiffness, "N/m");
+  non_negative("supports", "mass", support_mass, "kg");
+  positive("registration", "stiffness", registration_stiffness, "N/m");
+  non_negative("registration", "mass", registration_mass, "kg");
+  positive("mesh", "element_length", element_length, "m");
+  if (element_length < 1e-3 || span / element_length > 1e5)
+    throw InvalidArgument("finite-element catenary: mesh", "element_length",
+                          fmt::format("must be between 1 mm and span/100000, got {} m", element_length));
+  non_negative("damping", "mass", rayleigh_mass, "1/s");
+  non_negative("damping", "stiffness", rayleigh_stiffness, "s");
+  non_negative("line", "gravity", gravity, "m/s²");
+  positive("integration", "time_step", time_step, "s");
+  if (time_step > 0.01)
+    throw InvalidArgument("finite-element catenary: integration", "time_step",
+                          fmt::format("must be <= 0.01 s (a wire carries waves of tens of hertz), got {} s", time_step));
+  if (!(hht_alpha >= -1.0 / 3.0 && hht_alpha <= 0))
+    throw InvalidArgument("finite-element catenary: integration", "alpha",
+                          fmt::format("HHT-α needs −1/3 <= α <= 0, got {}", hht_alpha));
+  if (section_first != -1 || section_last != -1)
+    if (section_first < 1 || section_last < section_first || section_last > spans)
+      throw InvalidArgument("finite-element catenary: section", "spans",
+                            fmt::format("must be [first, last] with 1 <= first <= last <= {}, got [{}, {}]", spans,
+                                        section_first, section_last));
+}
+
+}  // namespace inerta::catenary
