@@ -1,0 +1,57 @@
+"""Inerta: inerter-based vibration suppression in multibody systems.
+
+Python bindings of the Inerta C++ library (docs/python.md). SI units throughout: m, s, kg, N,
+rad; speeds in m/s (``kmh`` converts km/h), frequencies in Hz.
+
+    import inerta
+    m = inerta.load_model("models/twobar.yaml")
+    r = inerta.simulate(m, t_end=60)
+    r["C_y"].max()
+"""
+from ._inerta import *  # noqa: F401,F403  (the compiled bindings)
+from ._inerta import __doc__ as _bindings_doc  # noqa: F401
+from . import _inerta
+
+__version__ = "0.1.0"
+
+
+def kmh(v):
+    """Speeds in km/h → m/s (v / 3.6, as the CLI's ``--unit kmh``); a number or an array."""
+    import numpy as np
+
+    a = np.asarray(v, dtype=float) / 3.6
+    return float(a) if a.ndim == 0 else a
+
+
+def plot_sweep(result, ax=None, label=None, unit="kmh", **kwargs):
+    """Draws σ of the contact force against speed for a SweepResult on a matplotlib axis
+    (created if None); returns the axis. unit: 'kmh' or 'ms' for the horizontal axis."""
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots()
+    v = result.speed * (3.6 if unit == "kmh" else 1.0)
+    ax.plot(v, result.std, marker="o", markersize=3, label=label, **kwargs)
+    ax.set_xlabel("speed [km/h]" if unit == "kmh" else "speed [m/s]")
+    ax.set_ylabel("σ of the contact force [N]")
+    ax.grid(True, alpha=0.3)
+    if label is not None:
+        ax.legend()
+    return ax
+
+
+def plot_result(result, names=None, ax=None, **kwargs):
+    """Draws outputs of a Result (all, or `names`) against time on a matplotlib axis; returns it."""
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots()
+    for n in names or result.names:
+        ax.plot(result.t, result[n], label=n, **kwargs)
+    ax.set_xlabel("t [s]")
+    ax.legend()
+    ax.grid(True, alpha=0.3)
+    return ax
+
+
+__all__ = [n for n in dir(_inerta) if not n.startswith("_")] + ["kmh", "plot_sweep", "plot_result"]

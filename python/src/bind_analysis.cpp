@@ -1,0 +1,605 @@
+// Analyses: simulation (alone and under a catenary), speed sweeps (time domain and periodic fast
+// path), contact statistics, modes and linear models, test-rig FRFs, catenary response. Results
+// keep the library's vectors; time histories are NumPy views of them (no copy, no per-sample
+// Python objects).
+#include <fmt/format.h>
+
+#include <chrono>
+
+#include "common.hpp"
+#include "inerta/analysis/catenary_response.hpp"
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/frf.hpp"
+#include "inerta/analysis/modal.hpp"
+#include "inerta/analysis/periodic.hpp"
+#include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/lumped.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/json.hpp"
+#include "inerta/io/linear_model_file.hpp"
+#include "inerta/mbs/linearisation.hpp"
+
+namespace inerta::python {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Python `Result`: one time history, owned by `owner` (a Simulation or a CoupledSimulation).
+struct History {
+  std::shared_ptr<const void> owner;
+  const analysis::TimeHistory* h = nullptr;
+  std::shared_ptr<const analysis::Simulation> sim;  ///< simulate() only
+  double wall_s = 0;                                ///< wall time of the library call, s
+
+  std::size_t index(const std::string& name) const {
+    for (std::size_t k = 0; k < h->names.size(); ++k)
+      if (h->names[k] == name) return k;
+    std::string names;
+    for (const auto& n : h->names) names += (names.empty() ? "" : ", ") + n;
+    throw py::key_error(fmt::format("no output '{}'; outputs: t, {}", name, names));
+  }
+};
+
+py::object item(const py::object& self, const std::string& name) {
+  const History& r = self.cast<const History&>();
+  if (name == "t") return view(r.h->t, self);
+  return view(r.h->columns[r.index(name)], self);
+}
+
+struct CoupledResult {
+  std::shared_ptr<const analysis::CoupledSimulation> sim;
+  double wall_s = 0;
+  History history(std::size_t k) const {
+    if (k >= sim->histories.size()) throw py::index_error("no such pantograph");
+    return {sim, &sim->histories[k], nullptr, wall_s};
+  }
+};
+
+struct SweepResult {
+  std::vector<analysis::SpeedResult> r;
+  double wall_s = 0;
+  std::string method;
+  std::size_t worst() const {
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < r.size(); ++i)
+      if (r[i].stats.std > r[w].stats.std) w = i;
+    return w;
+  }
+};
+
+struct CatenaryResponses {
+  std::vector<analysis::CatenaryResponse> r;
+};
+
+std::vector<catenary::PantographOnLine> train(const py::object& model, const py::object& positions,
+                                              const catenary::Contact& contact) {
+  if (py::isinstance<Model>(model)) {
+    const Model& h = model.cast<const Model&>();
+    std::vector<double> x = positions.is_none() ? std::vector<double>{0.0} : doubles(positions);
+    std::vector<catenary::PantographOnLine> t;
+    for (double x0 : x) t.push_back({h.p, x0, contact});
+    return t;
+  }
+  if (!positions.is_none()) throw py::value_error("positions: give a Model (copies at these positions) or a list of PantographOnLine");
+  return model.cast<std::vector<catenary::PantographOnLine>>();
+}
+
+analysis::RunOptions run_options(const py::object& options, const py::object& method, const py::object& rtol,
+                                 const py::object& atol) {
+  analysis::RunOptions o = options.is_none() ? analysis::RunOptions{} : options.cast<analysis::RunOptions>();
+  o.integrator = integrator_arg(py::cast(o.integrator), method, rtol, atol, py::none());
+  return o;
+}
+
+const catenary::LumpedCatenary& lumped_arg(const py::object& o, catenary::LumpedCatenary& store) {
+  if (py::isinstance<catenary::LumpedCatenary>(o)) return store = o.cast<catenary::LumpedCatenary>();
+  CatenaryArg c = catenary_arg(o);
+  const catenary::LumpedCatenary* p = c.catenary->point_model();
+  if (!p)
+    throw ModelError(fmt::format("catenary-response analyses the lumped catenary (eq. 7.1); this is a {}",
+                                 c.catenary->describe()));
+  return store = *p;
+}
+
+py::array_t<std::complex<double>> frf_matrix(const analysis::Frf& f) {
+  const auto n = static_cast<py::ssize_t>(f.H.size()), k = static_cast<py::ssize_t>(f.f.size());
+  py::array_t<std::complex<double>> a({n, k});
+  auto w = a.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i)
+    for (py::ssize_t j = 0; j < k; ++j) w(i, j) = f.H[static_cast<std::size_t>(i)].at(static_cast<std::size_t>(j));
+  return a;
+}
+
+void set_frf_matrix(analysis::Frf& f, const py::array_t<std::complex<double>, py::array::forcecast>& a) {
+  if (a.ndim() == 1 && f.outputs.size() <= 1) {
+    f.H = {std::vector<std::complex<double>>(a.data(), a.data() + a.size())};
+    return;
+  }
+  if (a.ndim() != 2) throw py::value_error("H: expected a 2-D array [output, frequency]");
+  auto r = a.unchecked<2>();
+  f.H.assign(static_cast<std::size_t>(r.shape(0)), {});
+  for (py::ssize_t i = 0; i < r.shape(0); ++i)
+    for (py::ssize_t j = 0; j < r.shape(1); ++j) f.H[static_cast<std::size_t>(i)].push_back(r(i, j));
+}
+
+const char* method_name_of(const solve::IntegratorOptions& o) { return solve::method_name(o.method); }
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  // ---- Options and statistics ------------------------------------------------------------------------
+  py::class_<solve::IntegratorOptions>(m, "IntegratorOptions",
+                                       "Time integration (SUNDIALS): method 'rk' (ARKODE Dormand–Prince 5(4), the "
+                                       "default) or 'bdf' (CVODE BDF, stiff); tolerances; max_step (s, 0 unlimited).")
+      .def(py::init([](const std::string& method, double rtol, double atol, double max_step, long max_steps) {
+             solve::IntegratorOptions o;
+             o.method = solve::parse_method(method);
+             o.rtol = rtol, o.atol = atol, o.max_step = max_step, o.max_steps = max_steps;
+             return o;
+           }),
+           py::arg("method") = "rk", py::arg("rtol") = 1e-6, py::arg("atol") = 1e-8, py::arg("max_step") = 0.0,
+           py::arg("max_steps") = 50'000'000L)
+      .def_property("method", [](const solve::IntegratorOptions& o) { return std::string(method_name_of(o)); },
+                    [](solve::IntegratorOptions& o, const std::string& s) { o.method = solve::parse_method(s); })
+      .def_readwrite("rtol", &solve::IntegratorOptions::rtol)
+      .def_readwrite("atol", &solve::IntegratorOptions::atol, "m, rad, m/s, rad/s")
+      .def_readwrite("max_step", &solve::IntegratorOptions::max_step, "s; 0 = unlimited")
+      .def_readwrite("max_steps", &solve::IntegratorOptions::max_steps)
+      .def("__repr__", [](const solve::IntegratorOptions& o) {
+        return fmt::format("IntegratorOptions('{}', rtol={:g}, atol={:g}, max_step={:g})", method_name_of(o), o.rtol,
+                           o.atol, o.max_step);
+      });
+
+  py::class_<solve::RunStats>(m, "RunStats", "Integrator statistics of a run.")
+      .def_readonly("steps", &solve::RunStats::steps)
+      .def_readonly("rhs_evals", &solve::RunStats::rhs_evals)
+      .def_readonly("wall_s", &solve::RunStats::wall_s, "wall time of the integration, s")
+      .def_readonly("max_violation", &solve::RunStats::max_violation, "max |C(q)| over the steps (m or rad)")
+      .def_readonly("max_velocity_violation", &solve::RunStats::max_velocity_violation)
+      .def_readonly("t_max_violation", &solve::RunStats::t_max_violation, "s");
+
+  py::class_<analysis::RunOptions>(m, "RunOptions",
+                                   "How one speed of a time-domain sweep is run (spec/06 §6.1): span by span until σ "
+                                   "changes by less than `tolerance` for `settled_spans` spans in a row.")
+      .def(py::init<>())
+      .def(py::init([](py::kwargs kw) {
+        analysis::RunOptions o;
+        py::object self = py::cast(o);
+        for (auto [k, v] : kw) self.attr(k) = v;
+        return self.cast<analysis::RunOptions>();
+      }))
+      .def_readwrite("min_spans", &analysis::RunOptions::min_spans)
+      .def_readwrite("max_spans", &analysis::RunOptions::max_spans)
+      .def_readwrite("tolerance", &analysis::RunOptions::tolerance, "relative change of σ span to span")
+      .def_readwrite("settled_spans", &analysis::RunOptions::settled_spans)
+      .def_readwrite("window_spans", &analysis::RunOptions::window_spans, "statistics over the last spans")
+      .def_readwrite("samples_per_span", &analysis::RunOptions::samples_per_span)
+      .def_readwrite("integrator", &analysis::RunOptions::integrator)
+      .def_readwrite("fixed_spans", &analysis::RunOptions::fixed_spans, "run exactly min_spans spans");
+
+  py::class_<analysis::ContactStatistics>(m, "ContactStatistics",
+                                          "Contact-force statistics over a window (N; compression positive).")
+      .def_readonly("mean", &analysis::ContactStatistics::mean, "N")
+      .def_readonly("std", &analysis::ContactStatistics::std, "σ, N")
+      .def_readonly("max", &analysis::ContactStatistics::max, "N")
+      .def_readonly("min", &analysis::ContactStatistics::min, "N")
+      .def_readonly("stat_max", &analysis::ContactStatistics::stat_max, "F_m + 3σ, N")
+      .def_readonly("stat_min", &analysis::ContactStatistics::stat_min, "F_m − 3σ, N")
+      .def_readonly("loss_pct", &analysis::ContactStatistics::loss_pct, "% of samples with F <= 0")
+      .def_readonly("samples", &analysis::ContactStatistics::samples)
+      .def("__repr__", [](const analysis::ContactStatistics& s) {
+        return fmt::format("ContactStatistics(mean={:.4g} N, std={:.4g} N, loss={:.3g} %)", s.mean, s.std, s.loss_pct);
+      });
+  m.def("statistics", [](const py::object& F) { return analysis::statistics(doubles(F)); }, py::arg("F"),
+        "Contact statistics (spec/06 §6.1) of a contact-force array (N).");
+
+  py::class_<analysis::OutputSummary>(m, "OutputSummary", "min / max / mean of one output over the steady part, SI.")
+      .def_readonly("name", &analysis::OutputSummary::name)
+      .def_readonly("initial", &analysis::OutputSummary::initial)
+      .def_readonly("min", &analysis::OutputSummary::min)
+      .def_readonly("max", &analysis::OutputSummary::max)
+      .def_readonly("mean", &analysis::OutputSummary::mean)
+      .def_readonly("samples", &analysis::OutputSummary::samples)
+      .def("__repr__", [](const analysis::OutputSummary& s) {
+        return fmt::format("OutputSummary('{}', min={:.6g}, max={:.6g}, mean={:.6g})", s.name, s.min, s.max, s.mean);
+      });
+
+  // ---- Time histories ---------------------------------------------------------------------------------
+  py::class_<History>(m, "Result",
+                      "Sampled outputs of a run: r['C_y'] (or r['t']) is a read-only NumPy view of the library's "
+                      "vector (no copy), r.t the times (s), r.names the outputs in the model's order. SI units. With "
+                      "simulate(): also stats, assembly, equilibrium, steady, t_end, sample.")
+      .def("__getitem__", &item, py::arg("name"))
+      .def("__contains__", [](const History& r, const std::string& n) {
+        return n == "t" || std::find(r.h->names.begin(), r.h->names.end(), n) != r.h->names.end();
+      })
+      .def("__len__", [](const History& r) { return r.h->names.size(); }, "number of outputs")
+      .def("__iter__", [](const History& r) { return py::iter(py::cast(r.h->names)); })
+      .def("keys", [](const History& r) { return r.h->names; })
+      .def_property_readonly("t", [](py::object self) { return view(self.cast<const History&>().h->t, self); },
+                             "sample times, s (a view)")
+      .def_property_readonly("names", [](const History& r) { return r.h->names; })
+      .def_property_readonly("n_samples", [](const History& r) { return r.h->t.size(); })
+      .def_property_readonly("data", [](const History& r) {
+        const auto n = static_cast<py::ssize_t>(r.h->names.size()), k = static_cast<py::ssize_t>(r.h->t.size());
+        py::array_t<double> a({n, k});
+        for (py::ssize_t i = 0; i < n; ++i)
+          std::copy(r.h->columns[static_cast<std::size_t>(i)].begin(), r.h->columns[static_cast<std::size_t>(i)].end(),
+                    a.mutable_data(i, 0));
+        return a;
+      }, "all outputs as a new 2-D array [output, sample] (a copy)")
+      .def("to_dict", [](py::object self) {
+        const History& r = self.cast<const History&>();
+        py::dict d;
+        d["t"] = view(r.h->t, self);
+        for (std::size_t k = 0; k < r.h->names.size(); ++k) d[py::str(r.h->names[k])] = view(r.h->columns[k], self);
+        return d;
+      }, "{'t': ..., name: ...} of views")
+      .def("summary", [](const History& r, double from) { return analysis::summarise(*r.h, from); },
+           py::arg("from_t") = 0.0, "OutputSummary of every output over t >= from_t (s)")
+      .def_property_readonly("wall_s", [](const History& r) { return r.wall_s; },
+                             "wall time of the library call, s")
+      .def_property_readonly("stats", [](const History& r) -> py::object {
+        return r.sim ? py::cast(r.sim->stats) : py::object(py::none());
+      })
+      .def_property_readonly("assembly", [](const History& r) -> py::object {
+        return r.sim ? py::cast(r.sim->assembly) : py::object(py::none());
+      })
+      .def_property_readonly("equilibrium", [](const History& r) -> py::object {
+        return r.sim && r.sim->equilibrium ? py::cast(*r.sim->equilibrium) : py::object(py::none());
+      })
+      .def_property_readonly("steady", [](const History& r) -> py::object {
+        return r.sim ? py::cast(r.sim->steady) : py::object(py::none());
+      }, "summaries over t >= steady_from (simulate(..., steady_from=...))")
+      .def_property_readonly("t_end", [](const History& r) -> py::object {
+        return r.sim ? py::cast(r.sim->t_end) : py::object(py::none());
+      })
+      .def_property_readonly("sample", [](const History& r) -> py::object {
+        return r.sim ? py::cast(r.sim->sample) : py::object(py::none());
+      })
+      .def("__repr__", [](const History& r) {
+        return fmt::format("Result({} outputs × {} samples)", r.h->names.size(), r.h->t.size());
+      });
+  m.def("summarise", [](const History& r, double from) { return analysis::summarise(*r.h, from); }, py::arg("result"),
+        py::arg("from_t"), "Summaries (OutputSummary) of every output over t >= from_t (s).");
+
+  m.def("simulate", [](const Model& model, double t_end, double sample, bool from_equilibrium, double steady_from,
+                       const py::object& integrator, const py::object& method, const py::object& rtol,
+                       const py::object& atol, const py::object& max_step, const py::object& progress) {
+    analysis::SimulateOptions o;
+    o.t_end = t_end, o.sample = sample, o.from_equilibrium = from_equilibrium, o.steady_from = steady_from;
+    o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
+    return run(progress, [&](Call& call) {
+      const auto t0 = Clock::now();
+      auto sim = std::make_shared<analysis::Simulation>(analysis::simulate(model.model(), o, [&](double t, double te) {
+        call.post([t, te](const py::object& cb) { cb(t, te); });
+      }));
+      return History{sim, &sim->history, sim, seconds_since(t0)};
+    });
+  }, py::arg("model"), py::arg("t_end") = -1.0, py::arg("sample") = -1.0, py::kw_only(),
+        py::arg("from_equilibrium") = false, py::arg("steady_from") = -1.0, py::arg("integrator") = py::none(),
+        py::arg("method") = py::none(), py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        py::arg("max_step") = py::none(), py::arg("progress") = py::none(),
+        "Time simulation (analysis::simulate, as `inerta simulate`): assembles at t = 0 (static equilibrium with "
+        "from_equilibrium), integrates to t_end (s; <= 0: the model's options.t_end) and samples every output each "
+        "`sample` s. Integrator: `integrator` (IntegratorOptions) and/or method ('rk'|'bdf'), rtol, atol, max_step "
+        "(s). steady_from >= 0: Result.steady summarises t >= steady_from. progress(t, t_end) is called on this "
+        "thread; Ctrl-C stops the run (KeyboardInterrupt). NumericalError with the time on failure.");
+
+  // ---- Under a catenary -------------------------------------------------------------------------------
+  py::class_<analysis::ContactSummary>(m, "ContactSummary", "Contact force of one pantograph over a coupled run.")
+      .def_readonly("stats", &analysis::ContactSummary::stats, "over the window (last window_spans spans)")
+      .def_readonly("first_loss_t", &analysis::ContactSummary::first_loss_t, "s, first sample with F <= 0 (−1: none)")
+      .def_readonly("first_loss_x", &analysis::ContactSummary::first_loss_x, "m along the line there")
+      .def_readonly("lost_samples", &analysis::ContactSummary::lost_samples);
+
+  py::class_<CoupledResult>(m, "CoupledResult",
+                            "Pantographs running under a catenary (analysis::simulate_coupled): histories[k] is the "
+                            "Result of pantograph k (its model's outputs, F_contact last); r['F_contact'] and r.t "
+                            "index the leading pantograph's.")
+      .def_property_readonly("histories", [](const CoupledResult& r) {
+        std::vector<History> v;
+        for (std::size_t k = 0; k < r.sim->histories.size(); ++k) v.push_back(r.history(k));
+        return v;
+      })
+      .def("__getitem__", [](const CoupledResult& r, const std::string& name) {
+        return item(py::cast(r.history(0)), name);
+      }, py::arg("name"))
+      .def_property_readonly("t", [](const CoupledResult& r) { return item(py::cast(r.history(0)), "t"); })
+      .def_property_readonly("names", [](const CoupledResult& r) { return r.sim->histories.at(0).names; })
+      .def_property_readonly("contacts", [](const CoupledResult& r) { return r.sim->contacts; })
+      .def_property_readonly("stats", [](const CoupledResult& r) { return r.sim->stats; })
+      .def_property_readonly("speed", [](const CoupledResult& r) { return r.sim->speed; }, "m/s")
+      .def_property_readonly("span", [](const CoupledResult& r) { return r.sim->span; }, "m")
+      .def_property_readonly("t_end", [](const CoupledResult& r) { return r.sim->t_end; }, "s")
+      .def_property_readonly("sample", [](const CoupledResult& r) { return r.sim->sample; }, "s")
+      .def_property_readonly("window_from", [](const CoupledResult& r) { return r.sim->window_from; },
+                             "s: start of the statistics window")
+      .def_property_readonly("wall_s", [](const CoupledResult& r) { return r.wall_s; })
+      .def("__repr__", [](const CoupledResult& r) {
+        return fmt::format("CoupledResult({} pantograph(s), v = {:.4g} m/s, t_end = {:.4g} s)", r.sim->histories.size(),
+                           r.sim->speed, r.sim->t_end);
+      });
+
+  m.def("simulate_coupled", [](const py::object& model, const py::object& catenary, double speed,
+                               const py::object& contact, const py::object& positions, int spans, double t_end,
+                               double sample, int window_spans, const py::object& integrator, const py::object& method,
+                               const py::object& rtol, const py::object& atol, const py::object& max_step,
+                               const py::object& progress) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    const auto pantographs = train(model, positions, contact_arg(contact, cat));
+    analysis::CoupledOptions o;
+    o.spans = spans, o.t_end = t_end, o.sample = sample, o.window_spans = window_spans;
+    o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
+    return run(progress, [&](Call& call) {
+      const auto t0 = Clock::now();
+      auto sim = std::make_shared<analysis::CoupledSimulation>(
+          analysis::simulate_coupled(pantographs, *cat.catenary, speed, o, [&](double t, double te) {
+            call.post([t, te](const py::object& cb) { cb(t, te); });
+          }));
+      return CoupledResult{sim, seconds_since(t0)};
+    });
+  }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::kw_only(), py::arg("contact") = py::none(),
+        py::arg("positions") = py::none(), py::arg("spans") = 12, py::arg("t_end") = -1.0, py::arg("sample") = -1.0,
+        py::arg("window_spans") = 2, py::arg("integrator") = py::none(), py::arg("method") = py::none(),
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("max_step") = py::none(),
+        py::arg("progress") = py::none(),
+        "Pantographs under a catenary at `speed` (m/s) from the coupled static equilibrium "
+        "(analysis::simulate_coupled, as `inerta simulate --catenary`). model: a pantograph Model (copies at "
+        "`positions`, m along the line; default one at 0) or a list of PantographOnLine. catenary: a Catenary, a "
+        "CatenaryFile (its contact law is the default) or a file name. Run length: `spans` spans, or t_end (s); "
+        "sample (s; default L/(400 v)). progress(t, t_end); Ctrl-C stops the run.");
+
+  // ---- Speed sweeps -----------------------------------------------------------------------------------
+  py::class_<analysis::SpeedResult>(m, "SpeedResult", "The contact force at one speed.")
+      .def_readonly("speed", &analysis::SpeedResult::speed, "m/s")
+      .def_readonly("stats", &analysis::SpeedResult::stats, "of the leading pantograph")
+      .def_readonly("contacts", &analysis::SpeedResult::contacts, "of every pantograph")
+      .def_readonly("spans", &analysis::SpeedResult::spans, "spans simulated")
+      .def_readonly("sigma_change", &analysis::SpeedResult::sigma_change, "last span-to-span relative change of σ")
+      .def_property_readonly("t", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().t, self); },
+                             "s (run_speed only; empty in sweeps)")
+      .def_property_readonly("F", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().F, self); },
+                             "contact force of the leading pantograph, N (run_speed only)")
+      .def("__repr__", [](const analysis::SpeedResult& s) {
+        return fmt::format("SpeedResult(v = {:.4g} m/s, σ = {:.4g} N, mean = {:.4g} N)", s.speed, s.stats.std,
+                           s.stats.mean);
+      });
+
+  py::class_<SweepResult>(m, "SweepResult",
+                          "Contact statistics over speeds: NumPy arrays speed (m/s), mean, std, max, min, stat_max, "
+                          "stat_min (N), loss_pct (%), spans, sigma_change; r[i] is the SpeedResult of speed i.")
+      .def("__len__", [](const SweepResult& s) { return s.r.size(); })
+      .def("__getitem__", [](const SweepResult& s, long i) {
+        const long n = static_cast<long>(s.r.size());
+        if (i < 0) i += n;
+        if (i < 0 || i >= n) throw py::index_error("speed index out of range");
+        return s.r[static_cast<std::size_t>(i)];
+      })
+      .def_property_readonly("results", [](const SweepResult& s) { return s.r; })
+      .def_property_readonly("speed", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.speed; }); })
+      .def_property_readonly("mean", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.mean; }); })
+      .def_property_readonly("std", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.std; }); })
+      .def_property_readonly("max", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.max; }); })
+      .def_property_readonly("min", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.min; }); })
+      .def_property_readonly("stat_max", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.stat_max; }); })
+      .def_property_readonly("stat_min", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.stat_min; }); })
+      .def_property_readonly("loss_pct", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.loss_pct; }); })
+      .def_property_readonly("spans", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.spans; }); })
+      .def_property_readonly("sigma_change", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.sigma_change; }); })
+      .def_property_readonly("sigma_max", [](const SweepResult& s) {
+        if (s.r.empty()) throw py::value_error("empty sweep");
+        const auto& w = s.r[s.worst()];
+        return py::make_tuple(w.stats.std, w.speed, w.stats.mean);
+      }, "(σ_max in N, its speed in m/s, the mean contact force there in N)")
+      .def_property_readonly("wall_s", [](const SweepResult& s) { return s.wall_s; }, "wall time of the library call, s")
+      .def_property_readonly("method", [](const SweepResult& s) { return s.method; }, "'time' or 'periodic'")
+      .def("__repr__", [](const SweepResult& s) {
+        return fmt::format("SweepResult({} speeds, {})", s.r.size(), s.method);
+      });
+
+  m.def("sweep", [](const py::object& model, const py::object& catenary, const py::object& speeds,
+                    const py::object& contact, const py::object& positions, const py::object& options,
+                    const py::object& method, const py::object& rtol, const py::object& atol,
+                    const py::object& progress) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    const auto pantographs = train(model, positions, contact_arg(contact, cat));
+    const std::vector<double> v = doubles(speeds);
+    const analysis::RunOptions o = run_options(options, method, rtol, atol);
+    return run(progress, [&](Call& call) {
+      const auto t0 = Clock::now();
+      auto r = analysis::sweep(pantographs, *cat.catenary, v, o, [&](int done, int total) {
+        call.post([done, total](const py::object& cb) { cb(done, total); });
+      });
+      return SweepResult{std::move(r), seconds_since(t0), "time"};
+    });
+  }, py::arg("model"), py::arg("catenary"), py::arg("speeds"), py::kw_only(), py::arg("contact") = py::none(),
+        py::arg("positions") = py::none(), py::arg("options") = py::none(), py::arg("method") = py::none(),
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("progress") = py::none(),
+        "Speed sweep in the time domain (analysis::sweep, as `inerta sweep`): at every speed (m/s; inerta.kmh "
+        "converts) the pantographs are coupled to the catenary and run span by span until σ settles, the speeds in "
+        "parallel on all cores (oneTBB; the GIL is released). options: RunOptions; method/rtol/atol override its "
+        "integrator. progress(done, total) after each speed, on this thread; Ctrl-C cancels the sweep "
+        "(KeyboardInterrupt once the running speeds finish).");
+
+  m.def("sweep_periodic", [](const Model& model, const py::object& catenary, const py::object& speeds,
+                             const py::object& contact, int harmonics) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    const catenary::Contact c = contact_arg(contact, cat);
+    const std::vector<double> v = doubles(speeds);
+    return run(py::none(), [&](Call&) {
+      const auto t0 = Clock::now();
+      auto r = analysis::sweep_periodic(model.p, *cat.catenary, c, v, harmonics);
+      return SweepResult{std::move(r), seconds_since(t0), "periodic"};
+    });
+  }, py::arg("model"), py::arg("catenary"), py::arg("speeds"), py::kw_only(), py::arg("contact") = py::none(),
+        py::arg("harmonics") = 8,
+        "Periodic steady state by harmonic balance (analysis::sweep_periodic, `inerta sweep --method periodic`): "
+        "the pantograph linearised about its static equilibrium under the mean catenary; needs a point-model "
+        "catenary (the lumped one) without mass harmonics (ModelError otherwise). Speeds in m/s.");
+
+  m.def("run_speed", [](const py::object& model, const py::object& catenary, double speed, const py::object& contact,
+                        const py::object& positions, const py::object& options, const py::object& method,
+                        const py::object& rtol, const py::object& atol) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    const auto pantographs = train(model, positions, contact_arg(contact, cat));
+    const analysis::RunOptions o = run_options(options, method, rtol, atol);
+    return run(py::none(), [&](Call&) {
+      auto sys = cat.catenary->couple(pantographs, speed);
+      return analysis::run_speed(*sys, o);
+    });
+  }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::kw_only(), py::arg("contact") = py::none(),
+        py::arg("positions") = py::none(), py::arg("options") = py::none(), py::arg("method") = py::none(),
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
+        "One speed of a sweep (analysis::run_speed on the coupled system): from the static equilibrium, span by span "
+        "until σ settles; the SpeedResult keeps the contact-force history t, F of the leading pantograph.");
+
+  // ---- Modes and linear models ------------------------------------------------------------------------
+  py::class_<mbs::LinearModel>(m, "LinearModel",
+                               "Linearisation about a static equilibrium (spec/02 §2.5): q = q_e + N ξ, state "
+                               "X = [ξ; ξ̇; z], Ẋ = A X; reduced M (incl. inerters), C, K. Arrays are views.")
+      .def_readonly("equilibrium", &mbs::LinearModel::equilibrium)
+      .def_readonly("t", &mbs::LinearModel::t)
+      .def_readonly("N", &mbs::LinearModel::N)
+      .def_readonly("A", &mbs::LinearModel::A, "state matrix of [ξ; ξ̇; z] (the state-space model Ẋ = A X)")
+      .def_readonly("M", &mbs::LinearModel::M, "kg (kg·m² for angles)")
+      .def_readonly("C", &mbs::LinearModel::C, "N·s/m")
+      .def_readonly("K", &mbs::LinearModel::K, "N/m")
+      .def_readonly("dof", &mbs::LinearModel::dof)
+      .def_readonly("nz", &mbs::LinearModel::nz, "internal states");
+  py::class_<mbs::Mode>(m, "Mode", "One mode: eigenvalue λ (1/s), |λ|/2π (Hz), damping ratio, real shape (body coordinates).")
+      .def_readonly("eigenvalue", &mbs::Mode::eigenvalue)
+      .def_readonly("frequency_hz", &mbs::Mode::frequency_hz)
+      .def_readonly("damping_ratio", &mbs::Mode::damping_ratio)
+      .def_readonly("shape", &mbs::Mode::shape)
+      .def_readonly("description", &mbs::Mode::description)
+      .def("__repr__", [](const mbs::Mode& o) {
+        return fmt::format("Mode({:.4f} Hz, ζ = {:.4f}: {})", o.frequency_hz, o.damping_ratio, o.description);
+      });
+  m.def("linearise", [](const Model& h, const mbs::State& x, double t) { return mbs::linearise(h.model(), x, t); },
+        py::arg("model"), py::arg("state"), py::arg("t") = 0.0,
+        "Linearises the model about the equilibrium `state` (q̇ = 0) at time t (mbs::linearise).");
+  m.def("modes", [](const Model& h, const mbs::LinearModel& lin) { return mbs::modes(h.model(), lin); },
+        py::arg("model"), py::arg("linear"), "Modes of a linear model, sorted by frequency (mbs::modes).");
+
+  py::class_<analysis::ModalAnalysis>(m, "ModalAnalysis", "Modes about a static equilibrium (as `inerta modes`).")
+      .def_readonly("setting", &analysis::ModalAnalysis::setting, "what the modes are of, in words")
+      .def_property_readonly("model", [](const analysis::ModalAnalysis& a) { return make_model({a.model, -1, -1}); },
+                             "the model that was linearised")
+      .def_readonly("equilibrium", &analysis::ModalAnalysis::equilibrium)
+      .def_readonly("linear", &analysis::ModalAnalysis::linear)
+      .def_readonly("modes", &analysis::ModalAnalysis::modes)
+      .def_property_readonly("frequencies", [](const analysis::ModalAnalysis& a) {
+        return column(a.modes, [](auto& x) { return x.frequency_hz; });
+      }, "Hz")
+      .def_property_readonly("damping_ratios", [](const analysis::ModalAnalysis& a) {
+        return column(a.modes, [](auto& x) { return x.damping_ratio; });
+      })
+      .def("to_json", [](const analysis::ModalAnalysis& a) {
+        return py::module_::import("json").attr("loads")(io::json_text(io::linear_model_json(a.model, a.linear)));
+      }, "the linear model document of `inerta modes --export` (io::linear_model_json) as a dict");
+  m.def("modal_analysis", [](const Model& h, const py::object& catenary, const py::object& contact) {
+    if (catenary.is_none()) return run(py::none(), [&](Call&) { return analysis::modal_analysis(h.model()); });
+    const CatenaryArg cat = catenary_arg(catenary);
+    const catenary::Contact c = contact_arg(contact, cat);
+    return run(py::none(), [&](Call&) { return analysis::modal_analysis(h.p, *cat.catenary, c); });
+  }, py::arg("model"), py::arg("catenary") = py::none(), py::arg("contact") = py::none(),
+        "Modes of the model about its static equilibrium at t = 0, or, with a catenary, of the pantograph coupled "
+        "to the catenary's mean (time-invariant part).");
+  m.def("modal_analysis_free_head", [](const Model& h) {
+    return run(py::none(), [&](Call&) { return analysis::modal_analysis_free_head(h.p); });
+  }, py::arg("model"),
+        "Modes of the free pantograph: the head released from the rig and loaded by the static contact force "
+        "(ModelError without a rig joint). `inerta modes` uses this for a model with a rig.");
+  m.def("linear_model_json", [](const Model& h, const mbs::LinearModel& lin) {
+    return py::module_::import("json").attr("loads")(io::json_text(io::linear_model_json(h.model(), lin)));
+  }, py::arg("model"), py::arg("linear"), "The linear-model document (A, N, M, C, K, ...) as a dict.");
+  m.def("write_linear_model", [](const py::object& path, const Model& h, const mbs::LinearModel& lin) {
+    io::write_linear_model(path_arg(path), h.model(), lin);
+  }, py::arg("path"), py::arg("model"), py::arg("linear"), "Writes the linear model as JSON (`inerta modes --export`).");
+
+  // ---- FRFs ---------------------------------------------------------------------------------------------
+  py::class_<analysis::Frf>(m, "Frf",
+                            "Frequency responses: f (Hz), outputs (names) and H[i, k], output i at f[k] per N of contact "
+                            "force ((m/s²)/N for accelerations).")
+      .def(py::init([](const py::object& f, std::vector<std::string> outputs, const py::array_t<std::complex<double>, py::array::forcecast>& H) {
+             analysis::Frf r;
+             r.f = doubles(f);
+             r.outputs = std::move(outputs);
+             set_frf_matrix(r, H);
+             if (r.H.size() != r.outputs.size()) throw py::value_error("H: one row per output");
+             for (const auto& row : r.H)
+               if (row.size() != r.f.size()) throw py::value_error("H: one column per frequency");
+             return r;
+           }),
+           py::arg("f"), py::arg("outputs"), py::arg("H"))
+      .def_property_readonly("f", [](const analysis::Frf& r) { return copy(r.f); })
+      .def_readonly("outputs", &analysis::Frf::outputs)
+      .def_property_readonly("H", &frf_matrix, "complex array [output, frequency] (a copy)")
+      .def("__getitem__", [](const analysis::Frf& r, const std::string& name) {
+        for (std::size_t i = 0; i < r.outputs.size(); ++i)
+          if (r.outputs[i] == name) return copy(r.H[i]);
+        throw py::key_error(name);
+      });
+  py::class_<analysis::SteppedSine>(m, "SteppedSine", "Options of the stepped-sine FRF.")
+      .def(py::init<>())
+      .def_readwrite("vc", &analysis::SteppedSine::vc, "mean velocity amplitude V_c, m/s")
+      .def_readwrite("cycles", &analysis::SteppedSine::cycles)
+      .def_readwrite("analysed", &analysis::SteppedSine::analysed)
+      .def_readwrite("samples_per_cycle", &analysis::SteppedSine::samples_per_cycle)
+      .def_readwrite("integrator", &analysis::SteppedSine::integrator);
+  m.def("frf_linear", [](const Model& h, const std::vector<std::string>& outputs, const py::object& f) {
+    const std::vector<double> fv = doubles(f);
+    return run(py::none(), [&](Call&) { return analysis::frf_linear(h.p, outputs, fv); });
+  }, py::arg("model"), py::arg("outputs"), py::arg("f"),
+        "Test-rig FRF (spec/04 §4.2) from the model linearised with the head held by its rig joint: outputs per N of "
+        "contact force at frequencies f (Hz), as `inerta frf`.");
+  m.def("frf_stepped_sine", [](const Model& h, const std::vector<std::string>& outputs, const py::object& f,
+                               const py::object& options, const py::object& vc, const py::object& cycles,
+                               const py::object& analysed) {
+    const std::vector<double> fv = doubles(f);
+    analysis::SteppedSine o = options.is_none() ? analysis::SteppedSine{} : options.cast<analysis::SteppedSine>();
+    if (!vc.is_none()) o.vc = vc.cast<double>();
+    if (!cycles.is_none()) o.cycles = cycles.cast<int>();
+    if (!analysed.is_none()) o.analysed = analysed.cast<int>();
+    return run(py::none(), [&](Call&) { return analysis::frf_stepped_sine(h.p, outputs, fv, o); });
+  }, py::arg("model"), py::arg("outputs"), py::arg("f"), py::kw_only(), py::arg("options") = py::none(),
+        py::arg("vc") = py::none(), py::arg("cycles") = py::none(), py::arg("analysed") = py::none(),
+        "Stepped-sine FRF by time simulation of the nonlinear model on the rig (frequencies in parallel).");
+
+  // ---- Catenary alone ---------------------------------------------------------------------------------
+  py::class_<analysis::CatenaryResponse>(m, "CatenaryResponse", "The lumped catenary's steady response at one f_p.")
+      .def_readonly("fp", &analysis::CatenaryResponse::fp, "Hz")
+      .def_readonly("speed", &analysis::CatenaryResponse::speed, "m/s")
+      .def_readonly("acc_amplitude", &analysis::CatenaryResponse::acc_amplitude, "m/s²")
+      .def_readonly("disp_amplitude", &analysis::CatenaryResponse::disp_amplitude, "m")
+      .def_readonly("mean_uplift", &analysis::CatenaryResponse::mean_uplift, "m")
+      .def_readonly("growth", &analysis::CatenaryResponse::growth)
+      .def("stable", &analysis::CatenaryResponse::stable);
+  py::class_<CatenaryResponses>(m, "CatenaryResponses",
+                                "Arrays fp (Hz), speed (m/s), acc_amplitude (m/s²), disp_amplitude (m), mean_uplift "
+                                "(m), growth, stable (bool); r[i] is one CatenaryResponse.")
+      .def("__len__", [](const CatenaryResponses& c) { return c.r.size(); })
+      .def("__getitem__", [](const CatenaryResponses& c, std::size_t i) { return c.r.at(i); })
+      .def_property_readonly("fp", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.fp; }); })
+      .def_property_readonly("speed", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.speed; }); })
+      .def_property_readonly("acc_amplitude", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.acc_amplitude; }); })
+      .def_property_readonly("disp_amplitude", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.disp_amplitude; }); })
+      .def_property_readonly("mean_uplift", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.mean_uplift; }); })
+      .def_property_readonly("growth", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.growth; }); })
+      .def_property_readonly("stable", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.stable(); }); });
+  m.def("catenary_response", [](const py::object& catenary, const py::object& fp, double force, double settle,
+                                int periods) {
+    catenary::LumpedCatenary store;
+    const catenary::LumpedCatenary& cat = lumped_arg(catenary, store);
+    const std::vector<double> f = doubles(fp);
+    return run(py::none(), [&](Call&) { return CatenaryResponses{analysis::catenary_response(cat, force, f, settle, periods)}; });
+  }, py::arg("catenary"), py::arg("fp"), py::arg("force") = 70.0, py::arg("settle") = 60.0, py::arg("periods") = 10,
+        "The lumped catenary alone under a constant upward force (N): steady acceleration amplitude against the "
+        "pumping frequency f_p = v/L (Hz), as `inerta catenary-response`. catenary: a LumpedCatenary, a lumped "
+        "Catenary or CatenaryFile.");
+}
+
+}  // namespace inerta::python

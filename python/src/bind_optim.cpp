@@ -1,0 +1,307 @@
+// Design studies (spec/07): a study from a file or from Python objects, J2 of a design (periodic
+// fast path and time domain), layout optimisation, the figures' data, and the result writers.
+#include <fmt/format.h>
+
+#include "common.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/json.hpp"
+#include "inerta/io/study_file.hpp"
+#include "inerta/io/study_report.hpp"
+#include "inerta/io/study_results.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/numerics/pattern_search.hpp"
+#include "inerta/optim/report.hpp"
+#include "inerta/optim/study.hpp"
+
+namespace inerta::python {
+
+namespace {
+
+using optim::Study;
+
+std::vector<std::shared_ptr<catenary::Catenary>> catenaries_of(const Study& s) {
+  std::vector<std::shared_ptr<catenary::Catenary>> v;
+  for (const auto& c : s.catenaries) v.push_back(std::const_pointer_cast<catenary::Catenary>(c));
+  return v;
+}
+
+network::Network net_arg(const py::object& net, const py::object& params) {
+  if (py::isinstance<network::Network>(net)) {
+    const auto& n = net.cast<const network::Network&>();
+    return params.is_none() ? n : network::assign(n, params.cast<network::Params>());
+  }
+  return network::resolve(net.cast<std::string>(), params.is_none() ? network::Params{} : params.cast<network::Params>());
+}
+
+Study make_study(const Model& pantograph, const py::object& catenaries, const py::object& speeds,
+                 const std::vector<std::string>& layouts, const py::object& contact, const py::object& labels,
+                 const py::object& search, double lo, double hi, int harmonics, const std::string& name) {
+  Study s;
+  s.name = name.empty() ? "study" : name;
+  s.source = "<python>";
+  s.pantograph = pantograph.p;
+  std::optional<catenary::Contact> file_contact;
+  py::list cats = py::isinstance<py::list>(catenaries) || py::isinstance<py::tuple>(catenaries)
+                      ? py::list(catenaries)
+                      : py::list(py::make_tuple(catenaries));
+  for (auto c : cats) {
+    CatenaryArg a = catenary_arg(py::reinterpret_borrow<py::object>(c));
+    s.catenaries.push_back(a.catenary);
+    if (a.contact && !file_contact) file_contact = a.contact;
+  }
+  if (s.catenaries.empty()) throw InvalidArgument("study: at least one catenary");
+  s.contact = contact_arg(contact, {nullptr, file_contact});
+  if (labels.is_none()) {
+    for (std::size_t i = 0; i < s.catenaries.size(); ++i) s.catenary_labels.push_back(s.catenaries[i]->describe());
+  } else {
+    s.catenary_labels = labels.cast<std::vector<std::string>>();
+    if (s.catenary_labels.size() != s.catenaries.size()) throw InvalidArgument("study: one label per catenary");
+  }
+  s.speeds = doubles(speeds);
+  for (double v : s.speeds)
+    if (!(v > 0)) throw InvalidArgument(fmt::format("study: speeds must be > 0 m/s, got {:g}", v));
+  if (layouts.empty()) throw InvalidArgument("study: at least one layout");
+  for (const auto& l : layouts) network::parse(network::find_layout(l) ? network::find_layout(l)->expression : l);
+  s.layouts = layouts;
+  if (!search.is_none()) s.search = search.cast<numerics::Options>();
+  if (!(lo > 0) || !(hi > lo)) throw InvalidArgument(fmt::format("study: expected 0 < lo < hi, got {:g}, {:g}", lo, hi));
+  s.lo = lo, s.hi = hi, s.harmonics = harmonics;
+  {
+    py::gil_scoped_release nogil;
+    s.operating_length = optim::operating_lengths(s);
+  }
+  return s;
+}
+
+}  // namespace
+
+void bind_optim(py::module_& m) {
+  py::class_<Study>(m, "Study",
+                    "A structure-based suspension design study (spec/07): a pantograph, catenary variants, speeds "
+                    "(m/s), candidate layouts and the search options. From a file with load_study, or from Python "
+                    "objects with the constructor. Immutable: replace(...) returns a changed copy.")
+      .def(py::init(&make_study), py::arg("pantograph"), py::arg("catenaries"), py::arg("speeds"), py::arg("layouts"),
+           py::kw_only(), py::arg("contact") = py::none(), py::arg("labels") = py::none(),
+           py::arg("search") = py::none(), py::arg("lo") = 0.1, py::arg("hi") = 1e9, py::arg("harmonics") = 8,
+           py::arg("name") = "",
+           "pantograph: a Model with a pantograph section; catenaries: Catenary, CatenaryFile or file names (the "
+           "first file's contact law is the default); speeds in m/s; layouts: names (S2-1) or expressions; search: "
+           "SearchOptions; lo, hi: bounds of every free value (SI); harmonics: of the periodic fast path.")
+      .def_readonly("name", &Study::name)
+      .def_readonly("source", &Study::source)
+      .def_property_readonly("pantograph", [](const Study& s) { return make_model(s.pantograph); })
+      .def_property_readonly("catenaries", &catenaries_of)
+      .def_readonly("catenary_labels", &Study::catenary_labels)
+      .def_readonly("contact", &Study::contact)
+      .def_property_readonly("speeds", [](const Study& s) { return copy(s.speeds); }, "m/s")
+      .def_readonly("layouts", &Study::layouts)
+      .def_readonly("search", &Study::search)
+      .def_readonly("lo", &Study::lo)
+      .def_readonly("hi", &Study::hi)
+      .def_readonly("harmonics", &Study::harmonics)
+      .def_readonly("operating_length", &Study::operating_length,
+                    "m, per catenary: the actuator's length at the static equilibrium with the model's suspension")
+      .def("replace", [](const Study& s, const py::object& speeds, const py::object& layouts, const py::object& search,
+                         const py::object& lo, const py::object& hi, const py::object& harmonics, const py::object& name) {
+        Study r = s;
+        if (!speeds.is_none()) r.speeds = doubles(speeds);
+        if (!layouts.is_none()) r.layouts = layouts.cast<std::vector<std::string>>();
+        if (!search.is_none()) r.search = search.cast<numerics::Options>();
+        if (!lo.is_none()) r.lo = lo.cast<double>();
+        if (!hi.is_none()) r.hi = hi.cast<double>();
+        if (!harmonics.is_none()) r.harmonics = harmonics.cast<int>();
+        if (!name.is_none()) r.name = name.cast<std::string>();
+        return r;
+      }, py::kw_only(), py::arg("speeds") = py::none(), py::arg("layouts") = py::none(), py::arg("search") = py::none(),
+           py::arg("lo") = py::none(), py::arg("hi") = py::none(), py::arg("harmonics") = py::none(),
+           py::arg("name") = py::none(), "A copy with some settings changed (speeds in m/s).")
+      .def("__repr__", [](const Study& s) {
+        return fmt::format("Study('{}': {} layouts, {} catenaries, {} speeds)", s.name, s.layouts.size(),
+                           s.catenaries.size(), s.speeds.size());
+      });
+  m.def("load_study", [](const py::object& path) { return io::load_study(path_arg(path)); }, py::arg("path"),
+        "Reads a study file (paths in it are relative to the file). ModelError 'file:line: key: ...'.");
+  m.def("operating_lengths", [](const Study& s) {
+    py::gil_scoped_release nogil;
+    return optim::operating_lengths(s);
+  }, py::arg("study"), "Per catenary: the actuator's length at the static equilibrium with its own suspension, m.");
+
+  py::class_<optim::StudyCost>(m, "StudyCost", "J2 of a design: max over catenaries of σ_max over the speeds.")
+      .def_readonly("J", &optim::StudyCost::J, "N")
+      .def_readonly("speed", &optim::StudyCost::speed, "m/s of the worst σ")
+      .def_readonly("mean", &optim::StudyCost::mean, "mean contact force there, N")
+      .def_readonly("catenary", &optim::StudyCost::catenary, "index of the worst catenary")
+      .def("__repr__", [](const optim::StudyCost& c) {
+        return fmt::format("StudyCost(J={:.4f} N at {:.4g} km/h, catenary {})", c.J, c.speed * 3.6, c.catenary);
+      });
+  py::class_<optim::LayoutResult>(m, "LayoutResult", "The optimum of one layout.")
+      .def_readonly("layout", &optim::LayoutResult::layout)
+      .def_readonly("expression", &optim::LayoutResult::expression)
+      .def_readonly("values", &optim::LayoutResult::values, "all element values, SI (0 open, inf rigid)")
+      .def_readonly("cost", &optim::LayoutResult::cost)
+      .def_readonly("evaluations", &optim::LayoutResult::evaluations)
+      .def("network", [](const optim::LayoutResult& r) { return network::resolve(r.layout, r.values); },
+           "the bound network of the optimum")
+      .def("__repr__", [](const optim::LayoutResult& r) {
+        return fmt::format("LayoutResult('{}', J={:.4f} N, {} evaluations)", r.layout, r.cost.J, r.evaluations);
+      });
+
+  m.def("default_suspension", &optim::default_suspension, py::arg("study"),
+        "The pantograph's own suspension network (its actuator's), the study's baseline.");
+  m.def("evaluate", [](const Study& s, const py::object& net, const py::object& params) {
+    const network::Network n = net_arg(net, params);
+    return run(py::none(), [&](Call&) { return optim::evaluate(s, n); });
+  }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
+        "J2 of the pantograph with its suspension replaced by `network` (a Network, or a layout/expression with "
+        "`params`), by the periodic fast path (optim::evaluate).");
+  m.def("evaluate_time", [](const Study& s, const py::object& net, const py::object& params) {
+    const network::Network n = net_arg(net, params);
+    return run(py::none(), [&](Call&) { return optim::evaluate_time(s, n); });
+  }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
+        "J2 by the time-domain reference (analysis::sweep per catenary; all cores).");
+  m.def("free_parameters", &optim::free_parameters, py::arg("layout"),
+        "The element names of a layout that the optimiser varies.");
+  m.def("optimise_layout", [](const Study& s, const std::string& layout, const py::object& progress) {
+    return run(progress, [&](Call& call) {
+      return optim::optimise_layout(s, layout, [&](int start, int evals, double best) {
+        call.post([start, evals, best](const py::object& cb) { cb(start, evals, best); });
+      });
+    });
+  }, py::arg("study"), py::arg("layout"), py::kw_only(), py::arg("progress") = py::none(),
+        "Optimises one layout's free values by the multi-start pattern search (poll points in parallel). "
+        "progress(start, evaluations, best J in N); Ctrl-C cancels.");
+
+  py::class_<optim::SpeedCurve>(m, "SpeedCurve", "σ and the mean contact force over the speeds under one catenary.")
+      .def_readonly("catenary", &optim::SpeedCurve::catenary)
+      .def_property_readonly("speed", [](const optim::SpeedCurve& c) { return copy(c.speed); }, "m/s")
+      .def_property_readonly("sigma", [](const optim::SpeedCurve& c) { return copy(c.sigma); }, "N")
+      .def_property_readonly("mean", [](const optim::SpeedCurve& c) { return copy(c.mean); }, "N");
+  m.def("sigma_curves", [](const Study& s, const py::object& net, const py::object& params) {
+    const network::Network n = net_arg(net, params);
+    return run(py::none(), [&](Call&) { return optim::sigma_curves(s, n); });
+  }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
+        "σ(v) per catenary for a suspension, periodic fast path.");
+  m.def("sigma_curves_time", [](const Study& s, const py::object& net, const py::object& params, bool centripetal,
+                                const py::object& progress) {
+    const network::Network n = net_arg(net, params);
+    return run(progress, [&](Call& call) {
+      return optim::sigma_curves_time(s, n, centripetal, [&](int done, int total) {
+        call.post([done, total](const py::object& cb) { cb(done, total); });
+      });
+    });
+  }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(), py::kw_only(), py::arg("centripetal") = true,
+        py::arg("progress") = py::none(),
+        "σ(v) per catenary in the time domain, with or without the inerter's centripetal correction; "
+        "progress(done, total) over all speeds.");
+  m.def("worst_of", &optim::worst_of, py::arg("curves"), "J2 of a set of SpeedCurves.");
+  m.def("rig_model", [](const Study& s, const py::object& net, const py::object& params) {
+    return make_model(optim::rig_model(s, net_arg(net, params)));
+  }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
+        "The pantograph on its test rig with the suspension `network`, relaxed at the rig's static length.");
+
+  py::class_<optim::ForceHistory>(m, "ForceHistory", "The contact force in time under one catenary at one speed.")
+      .def_readonly("catenary", &optim::ForceHistory::catenary)
+      .def_readonly("speed", &optim::ForceHistory::speed, "m/s")
+      .def_property_readonly("t", [](py::object self) { return view(self.cast<const optim::ForceHistory&>().t, self); }, "s")
+      .def_property_readonly("F", [](py::object self) { return view(self.cast<const optim::ForceHistory&>().F, self); }, "N")
+      .def_readonly("stats", &optim::ForceHistory::stats);
+  m.def("contact_histories", [](const Study& s, const py::object& net, double speed, const py::object& params) {
+    const network::Network n = net_arg(net, params);
+    return run(py::none(), [&](Call&) { return optim::contact_histories(s, n, speed); });
+  }, py::arg("study"), py::arg("network"), py::arg("speed"), py::arg("params") = py::none(),
+        "The contact force at `speed` (m/s) under each catenary (time domain, analysed window).");
+
+  py::class_<optim::CostMap>(m, "CostMap", "J2 over a grid of two element values of a layout.")
+      .def_readonly("layout", &optim::CostMap::layout)
+      .def_readonly("x", &optim::CostMap::x)
+      .def_readonly("y", &optim::CostMap::y)
+      .def_readonly("values", &optim::CostMap::values, "the other element values")
+      .def_property_readonly("xs", [](const optim::CostMap& c) { return copy(c.xs); })
+      .def_property_readonly("ys", [](const optim::CostMap& c) { return copy(c.ys); })
+      .def_property_readonly("J", [](const optim::CostMap& c) {
+        py::array_t<double> a({static_cast<py::ssize_t>(c.xs.size()), static_cast<py::ssize_t>(c.ys.size())});
+        std::copy(c.J.begin(), c.J.end(), a.mutable_data());
+        return a;
+      }, "N, array [i, j] = J2 at (xs[i], ys[j]); NaN where no steady state exists");
+  m.def("cost_map", [](const Study& s, const std::string& layout, const network::Params& values, const std::string& x,
+                       const py::object& xs, const std::string& y, const py::object& ys, const py::object& progress) {
+    const std::vector<double> xv = doubles(xs), yv = doubles(ys);
+    return run(progress, [&](Call& call) {
+      return optim::cost_map(s, layout, values, x, xv, y, yv, [&](int done, int total) {
+        call.post([done, total](const py::object& cb) { cb(done, total); });
+      });
+    });
+  }, py::arg("study"), py::arg("layout"), py::arg("values"), py::arg("x"), py::arg("xs"), py::arg("y"), py::arg("ys"),
+        py::kw_only(), py::arg("progress") = py::none(),
+        "J2 (periodic fast path) at every (x, y) grid point, in parallel; progress(done, total).");
+  m.def("best_with", &optim::best_with, py::arg("results"), py::arg("x"), py::arg("y"),
+        "Index of the best result whose layout has free elements x and y, or −1.");
+  m.def("has_inerter", &optim::has_inerter, py::arg("network"), "True if the simplified network has an inerter.");
+
+  py::class_<optim::Design>(m, "Design", "A suspension design: a label and its bound network.")
+      .def_readonly("label", &optim::Design::label)
+      .def_readonly("layout", &optim::Design::layout)
+      .def_readonly("values", &optim::Design::values)
+      .def_readonly("net", &optim::Design::net);
+  py::class_<optim::ReportOptions>(m, "ReportOptions", "What make_report computes.")
+      .def(py::init<>())
+      .def_readwrite("history_speed", &optim::ReportOptions::history_speed, "m/s")
+      .def_readwrite("frf_f", &optim::ReportOptions::frf_f, "Hz; empty: 0.1 … 20 Hz")
+      .def_readwrite("frf_output", &optim::ReportOptions::frf_output)
+      .def_readwrite("map_size", &optim::ReportOptions::map_size, "map points per axis; 0: no map")
+      .def_readwrite("map_b_max", &optim::ReportOptions::map_b_max, "kg")
+      .def_readwrite("map_k_max", &optim::ReportOptions::map_k_max, "N/m");
+  py::class_<optim::Report::Centripetal>(m, "ReportCentripetal", "σ(v) with the centripetal correction on and off.")
+      .def_readonly("design", &optim::Report::Centripetal::design)
+      .def_readonly("on", &optim::Report::Centripetal::on)
+      .def_readonly("off", &optim::Report::Centripetal::off)
+      .def_readonly("off_simulated", &optim::Report::Centripetal::off_simulated);
+  py::class_<optim::Report>(m, "Report", "The data behind a study's figures (optim::make_report).")
+      .def_readonly("study", &optim::Report::study)
+      .def_readonly("catenaries", &optim::Report::catenaries)
+      .def_readonly("baseline", &optim::Report::baseline)
+      .def_readonly("best", &optim::Report::best)
+      .def_readonly("default_cost", &optim::Report::default_cost)
+      .def_readonly("best_cost", &optim::Report::best_cost)
+      .def_readonly("sigma_default", &optim::Report::sigma_default)
+      .def_readonly("sigma_best", &optim::Report::sigma_best)
+      .def_readonly("frf_output", &optim::Report::frf_output)
+      .def_readonly("frf_default", &optim::Report::frf_default)
+      .def_readonly("frf_best", &optim::Report::frf_best)
+      .def_readonly("history_speed", &optim::Report::history_speed)
+      .def_readonly("history_default", &optim::Report::history_default)
+      .def_readonly("history_best", &optim::Report::history_best)
+      .def_readonly("map", &optim::Report::map)
+      .def_readonly("map_note", &optim::Report::map_note)
+      .def_readonly("map_opt_x", &optim::Report::map_opt_x)
+      .def_readonly("map_opt_y", &optim::Report::map_opt_y)
+      .def_readonly("map_opt_J", &optim::Report::map_opt_J)
+      .def_readonly("centripetal", &optim::Report::centripetal)
+      .def_readonly("time_check", &optim::Report::time_check);
+  m.def("make_report", [](const Study& s, const std::vector<optim::LayoutResult>& results, const py::object& options,
+                          const py::object& progress) {
+    const optim::ReportOptions o = options.is_none() ? optim::ReportOptions{} : options.cast<optim::ReportOptions>();
+    return run(progress, [&](Call& call) {
+      return optim::make_report(s, results, o, [&](int step, int steps, const std::string& what, int done, int total) {
+        call.post([=](const py::object& cb) { cb(step, steps, what, done, total); });
+      });
+    });
+  }, py::arg("study"), py::arg("results"), py::arg("options") = py::none(), py::kw_only(),
+        py::arg("progress") = py::none(),
+        "The figures' data for the default suspension and the best layout result (as `inerta optimise --out`); "
+        "progress(step, steps, what, done, total).");
+  m.def("write_study_report", [](const optim::Report& r, const py::object& dir) {
+    return io::write_study_report(r, path_arg(dir));
+  }, py::arg("report"), py::arg("dir"), "Writes sigma.csv, frf.csv, contact.csv, j2_map.csv, centripetal.csv, report.json.");
+  m.def("write_study_results", [](const py::object& dir, const std::string& study, const optim::StudyCost& def,
+                                  const std::vector<optim::LayoutResult>& results) {
+    return io::write_study_results(path_arg(dir), study, def, results);
+  }, py::arg("dir"), py::arg("study"), py::arg("default_cost"), py::arg("results"),
+        "Writes DIR/results.csv and DIR/results.json (as `inerta optimise --out`).");
+  m.def("study_results_json", [](const std::string& study, const optim::StudyCost& def,
+                                 const std::vector<optim::LayoutResult>& results) {
+    return py::module_::import("json").attr("loads")(io::json_text(io::study_results_json(study, def, results)));
+  }, py::arg("study"), py::arg("default_cost"), py::arg("results"), "The results.json document as a dict.");
+}
+
+}  // namespace inerta::python

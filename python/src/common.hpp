@@ -1,0 +1,226 @@
+#pragma once
+// Shared pieces of the bindings (docs/python.md): the model handle the module passes around, the
+// runner of long library calls (GIL released, progress and Ctrl-C on the calling thread), NumPy
+// views of result vectors, and argument conversions.
+#include <pybind11/complex.h>
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "inerta/catenary/catenary.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/mbs/model.hpp"
+#include "inerta/pantograph/pantograph.hpp"
+#include "inerta/solve/integrator.hpp"
+
+namespace py = pybind11;
+
+namespace inerta::python {
+
+// ---- Long calls ---------------------------------------------------------------------------------
+//
+// run(callback, work) runs work(call) on a worker thread while the calling thread waits with the
+// GIL released. The library's progress callbacks (any thread, often oneTBB workers) call
+// call.post(...), which only queues the event; the calling thread delivers the events to the
+// Python callback with the GIL held, and every 50 ms runs PyErr_CheckSignals. A KeyboardInterrupt
+// (Ctrl-C) or an exception raised by the Python callback cancels the call: the next progress
+// callback of the library throws Cancelled, which stops a sweep (oneTBB cancels the remaining
+// speeds; the ones running finish), and run re-raises the Python exception once the worker ends.
+// Calls without a progress hook in the library cannot be stopped early: Ctrl-C takes effect when
+// they return.
+
+struct Cancelled : std::exception {
+  const char* what() const noexcept override { return "cancelled from Python"; }
+};
+
+class Call {
+ public:
+  using Event = std::function<void(const py::object& callback)>;
+  explicit Call(bool has_callback) : has_callback_(has_callback) {}
+
+  /// From library threads: queue a progress event (a closure of C++ values only, called later on
+  /// the Python thread with the GIL held). Throws Cancelled once the call is cancelled.
+  void post(Event e) {
+    check();
+    if (!has_callback_) return;
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      if (events_.size() >= 10000) events_.pop_front();
+      events_.push_back(std::move(e));
+    }
+    cv_.notify_one();
+  }
+  /// Throws Cancelled once the call is cancelled (for hooks that report nothing).
+  void check() const {
+    if (cancelled_.load(std::memory_order_relaxed)) throw Cancelled();
+  }
+  bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
+  void cancel() { cancelled_.store(true); }
+  void finish() {
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      done_ = true;
+    }
+    cv_.notify_one();
+  }
+  /// Waits until the work is done, an event is queued or `timeout` passed; takes the queued events.
+  bool wait(std::deque<Event>& out, std::chrono::milliseconds timeout) {
+    std::unique_lock<std::mutex> lock(m_);
+    cv_.wait_for(lock, timeout, [&] { return done_ || !events_.empty(); });
+    out.swap(events_);
+    return done_;
+  }
+
+ private:
+  bool has_callback_;
+  std::atomic<bool> cancelled_{false};
+  std::mutex m_;
+  std::condition_variable cv_;
+  std::deque<Event> events_;
+  bool done_ = false;
+};
+
+template <class F>
+auto run(const py::object& callback, F&& work) -> decltype(work(std::declval<Call&>())) {
+  using R = decltype(work(std::declval<Call&>()));
+  Call call(!callback.is_none());
+  std::optional<R> result;
+  std::exception_ptr error, python_error;
+  std::thread worker([&] {
+    try {
+      result.emplace(work(call));
+    } catch (...) {
+      error = std::current_exception();
+    }
+    call.finish();
+  });
+  for (;;) {
+    std::deque<Call::Event> events;
+    bool done = false;
+    {
+      py::gil_scoped_release nogil;
+      done = call.wait(events, std::chrono::milliseconds(50));
+    }
+    for (auto& e : events) {
+      if (python_error) break;
+      try {
+        e(callback);
+      } catch (...) {
+        python_error = std::current_exception();
+        call.cancel();
+      }
+    }
+    if (!done && !python_error && PyErr_CheckSignals() != 0) {
+      python_error = std::make_exception_ptr(py::error_already_set());
+      call.cancel();
+    }
+    if (done) break;
+  }
+  {
+    py::gil_scoped_release nogil;
+    worker.join();
+  }
+  if (python_error) std::rethrow_exception(python_error);
+  if (error) std::rethrow_exception(error);
+  return std::move(*result);
+}
+
+// ---- The model handle -----------------------------------------------------------------------------
+
+/// What `inerta.Model` holds: the library's pantograph::Pantograph (an mbs::Model and, when the
+/// file has a `pantograph:` section, its contact marker and rig joint; −1 otherwise), and where it
+/// came from, so that parameters can be changed by reloading with overrides: the file's text and
+/// name, the overrides applied, and the transformations applied after loading (suspension
+/// replacement, options, ...), replayed after a reload.
+struct Model {
+  pantograph::Pantograph p;
+  std::string text, source;  ///< text empty: not from a file (e.g. the model of a modal analysis)
+  std::vector<std::pair<std::string, std::string>> overrides;  ///< key, value, in order
+  std::vector<std::function<void(pantograph::Pantograph&)>> transforms;
+  std::vector<std::string> history;  ///< the transformations in words
+
+  const mbs::Model& model() const { return p.model; }
+  /// The same file read again with these overrides added (a key given again replaces its value),
+  /// then the transformations replayed. ModelError if the model did not come from a file.
+  Model with_overrides(const std::vector<std::string>& more) const;
+  /// A copy with one more transformation.
+  Model transformed(std::function<void(pantograph::Pantograph&)> f, std::string what) const;
+  std::vector<std::string> override_list() const;
+};
+
+Model make_model(pantograph::Pantograph p);  ///< not from a file
+Model load_model_handle(const std::string& path, const std::vector<std::string>& overrides);
+Model parse_model_handle(const std::string& text, const std::string& source, const std::vector<std::string>& overrides);
+
+/// Overrides given as a dict {"c2.c": 70}, a list ["c2.c=70"], a single string or None.
+std::vector<std::string> override_strings(const py::object& o);
+
+/// A catenary argument: a Catenary, or a CatenaryFile (its catenary; its contact law is the default).
+struct CatenaryArg {
+  std::shared_ptr<const catenary::Catenary> catenary;
+  std::optional<catenary::Contact> contact;
+};
+CatenaryArg catenary_arg(const py::object& o);
+/// The contact law: `contact` if given (a Contact or "bilateral"/"penalty"), else the catenary file's,
+/// else the default bilateral contact.
+catenary::Contact contact_arg(const py::object& contact, const CatenaryArg& cat);
+
+/// Integrator options: a base (IntegratorOptions or None) and the keyword overrides that are not None.
+solve::IntegratorOptions integrator_arg(const py::object& base, const py::object& method, const py::object& rtol,
+                                        const py::object& atol, const py::object& max_step);
+
+// ---- Arrays -------------------------------------------------------------------------------------
+
+/// A read-only NumPy view of v's memory (no copy), which keeps `owner` alive.
+inline py::array_t<double> view(const std::vector<double>& v, py::handle owner) {
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size())}, {static_cast<py::ssize_t>(sizeof(double))}, v.data(),
+                        owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+/// A new NumPy array with v's values.
+template <class T>
+py::array_t<T> copy(const std::vector<T>& v) {
+  return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+/// One field of every element of a vector of structs, as a new array.
+template <class T, class F>
+auto column(const std::vector<T>& v, F&& f) {
+  using V = std::decay_t<decltype(f(v.front()))>;
+  py::array_t<V> a(static_cast<py::ssize_t>(v.size()));
+  auto m = a.template mutable_unchecked<1>();
+  for (std::size_t i = 0; i < v.size(); ++i) m(static_cast<py::ssize_t>(i)) = f(v[i]);
+  return a;
+}
+/// A file name given as str or os.PathLike.
+inline std::string path_arg(const py::object& o) {
+  return py::str(py::module_::import("os").attr("fspath")(o)).cast<std::string>();
+}
+/// A sequence of numbers (list, tuple, NumPy array, scalar) as a vector.
+std::vector<double> doubles(const py::object& o);
+
+// ---- Registration of the parts of the module (one file each) -------------------------------------
+void bind_errors(py::module_& m);
+void bind_model(py::module_& m);
+void bind_network(py::module_& m);
+void bind_catenary(py::module_& m);
+void bind_analysis(py::module_& m);
+void bind_optim(py::module_& m);
+void bind_identification(py::module_& m);
+void bind_numerics(py::module_& m);
+
+}  // namespace inerta::python

@@ -1,0 +1,79 @@
+// The extension module inerta._inerta (docs/python.md); python/inerta/__init__.py re-exports it.
+#include "common.hpp"
+#include "inerta/error.hpp"
+#include "inerta/network/network.hpp"
+
+namespace inerta::python {
+
+namespace {
+
+PyObject* new_exception(py::module_& m, const char* name, std::initializer_list<PyObject*> bases, const char* doc) {
+  py::tuple b(bases.size());
+  std::size_t i = 0;
+  for (PyObject* base : bases) b[i++] = py::reinterpret_borrow<py::object>(base);
+  PyObject* e = PyErr_NewExceptionWithDoc((std::string("inerta.") + name).c_str(), doc, b.ptr(), nullptr);
+  if (!e) throw py::error_already_set();
+  m.add_object(name, py::handle(e));
+  return e;
+}
+
+void raise(PyObject* type, const char* what, const char* attr = nullptr, py::object value = py::none()) {
+  py::object inst = py::reinterpret_steal<py::object>(PyObject_CallFunction(type, "s", what));
+  if (!inst) return;  // the call set an error
+  if (attr) inst.attr(attr) = value;
+  PyErr_SetObject(type, inst.ptr());
+}
+
+}  // namespace
+
+void bind_errors(py::module_& m) {
+  static PyObject* base = new_exception(m, "Error", {PyExc_Exception}, "Base class of the errors of the inerta library.");
+  static PyObject* model_error = new_exception(
+      m, "ModelError", {base, PyExc_ValueError},
+      "Bad input in a model, catenary or study file (or an override): 'file:line: key: what is wrong; expected "
+      "...', the same text as the CLI prints after 'error: '.");
+  static PyObject* invalid = new_exception(
+      m, "InvalidArgument", {base, PyExc_ValueError},
+      "A non-physical or inconsistent argument given to a library function or constructor (negative stiffness, zero "
+      "mass, NaN, an unknown handle). Attribute `parameter`: the offending parameter ('' if none).");
+  static PyObject* numerical = new_exception(
+      m, "NumericalError", {base, PyExc_RuntimeError},
+      "Numerical failure (assembly not converging, singular constraints, integrator failure, a bilateral contact "
+      "force becoming negative); the message carries the simulated time and the quantities involved.");
+  static PyObject* network_error =
+      new_exception(m, "NetworkError", {base, PyExc_ValueError},
+                    "Malformed network expression or parameter set. Attribute `column`: 1-based position of the "
+                    "problem in the expression (0 if none).");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const network::NetworkError& e) {
+      raise(network_error, e.what(), "column", py::int_(e.column));
+    } catch (const ModelError& e) {
+      raise(model_error, e.what());
+    } catch (const InvalidArgument& e) {
+      raise(invalid, e.what(), "parameter", py::str(e.parameter()));
+    } catch (const NumericalError& e) {
+      raise(numerical, e.what());
+    } catch (const Cancelled& e) {
+      PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
+    }
+  });
+}
+
+}  // namespace inerta::python
+
+PYBIND11_MODULE(_inerta, m) {
+  using namespace inerta::python;
+  m.doc() =
+      "Inerta: inerter-based vibration suppression in multibody systems (C++ library bindings; docs/python.md). "
+      "SI units throughout: m, s, kg, N, rad; speeds in m/s (inerta.kmh converts), frequencies in Hz.";
+  bind_errors(m);
+  bind_numerics(m);
+  bind_network(m);
+  bind_model(m);
+  bind_catenary(m);
+  bind_analysis(m);
+  bind_optim(m);
+  bind_identification(m);
+}
