@@ -124,7 +124,7 @@ void set_frf_matrix(analysis::Frf& f, const py::array_t<std::complex<double>, py
     for (py::ssize_t j = 0; j < r.shape(1); ++j) f.H[static_cast<std::size_t>(i)].push_back(r(i, j));
 }
 
-const char* method_name_of(const solve::IntegratorOptions& o) { return solve::method_name(o.method); }
+const char* method_name_of(const solve::IntegratorOptions& o) { return o.method == solve::Method::Bdf ? "bdf" : "rk"; }
 
 }  // namespace
 

@@ -89,7 +89,8 @@ void bind_network(py::module_& m) {
         "missing, unknown or negative values.");
   m.def("simplify", &network::simplify, py::arg("network"),
         "Removes open (0) and rigid (inf) elements algebraically; the result has no 0/inf values, or is Open or Rigid.");
-  m.def("to_string", &network::to_string, py::arg("network"), py::arg("with_values") = false);
+  m.def("to_string", &network::to_string, py::arg("network"), py::arg("with_values") = false,
+        "Readable form of a network, e.g. 'b-(k|c)', with the values (SI) when with_values.");
   m.def("admittance", [](const Network& n, const py::object& s) {
     return vectorised(s, [&](cd x) { return network::admittance(n, x); });
   }, py::arg("network"), py::arg("s"),

@@ -1,0 +1,17 @@
+# Type stubs of the package: the compiled bindings (_inerta.pyi) and the Python helpers.
+from typing import Any, Optional, Sequence
+
+import numpy as np
+import numpy.typing as npt
+
+from ._inerta import *  # noqa: F401,F403
+from ._inerta import Result, SweepResult
+
+__version__: str
+
+def kmh(v: Any) -> Any:
+    """km/h → m/s (v / 3.6), a number or an array."""
+
+def plot_sweep(result: SweepResult, ax: Any = None, label: Optional[str] = None, unit: str = "kmh",
+               **kwargs: Any) -> Any: ...
+def plot_result(result: Result, names: Optional[Sequence[str]] = None, ax: Any = None, **kwargs: Any) -> Any: ...

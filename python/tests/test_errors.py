@@ -1,0 +1,113 @@
+"""Library errors become Python exceptions with the CLI's message text (file:line)."""
+import re
+
+import pytest
+
+import inerta
+from conftest import SRC, model
+
+
+def cli_error(cli, *args):
+    r = cli(*args, check=False)
+    assert r.returncode != 0
+    line = r.stderr.strip().splitlines()[-1]
+    return re.sub(r"^(error|numerical failure): ", "", line)
+
+
+def test_classes():
+    assert issubclass(inerta.ModelError, ValueError) and issubclass(inerta.ModelError, inerta.Error)
+    assert issubclass(inerta.InvalidArgument, ValueError)
+    assert issubclass(inerta.NumericalError, RuntimeError) and issubclass(inerta.NumericalError, inerta.Error)
+    assert issubclass(inerta.NetworkError, ValueError)
+    assert inerta.ModelError.__module__ == "inerta"
+
+
+def bad_model(tmp_path, text):
+    p = tmp_path / "bad.yaml"
+    p.write_text(text)
+    return p
+
+
+def test_model_file_error_has_file_line_and_cli_text(cli, tmp_path):
+    text = (SRC / "models" / "twobar.yaml").read_text().replace("k: 100, free_length", "k: -100, free_length")
+    p = bad_model(tmp_path, text)
+    with pytest.raises(inerta.ModelError) as e:
+        inerta.load_model(p)
+    msg = str(e.value)
+    line = next(i for i, l in enumerate(text.splitlines(), 1) if "k: -100" in l)
+    assert msg.startswith(f"{p}:{line}: ")
+    assert msg == cli_error(cli, "check", p)
+
+
+def test_yaml_syntax_error(cli, tmp_path):
+    p = bad_model(tmp_path, "name: x\nbodies: [\n  {name: a\n")
+    with pytest.raises(inerta.ModelError, match=rf"^{re.escape(str(p))}:\d+: YAML syntax error") as e:
+        inerta.load_model(p)
+    assert str(e.value) == cli_error(cli, "check", p)
+
+
+def test_missing_file(cli):
+    with pytest.raises(inerta.ModelError, match="nothere.yaml: cannot open the model file") as e:
+        inerta.load_model("models/nothere.yaml")
+    assert str(e.value) == cli_error(cli, "check", "models/nothere.yaml")
+
+
+def test_bad_override(cli, twobar):
+    with pytest.raises(inerta.ModelError) as e:
+        inerta.load_model(model("twobar.yaml"), {"nosuch.k": 1})
+    assert "no force element or body named 'nosuch'" in str(e.value)
+    with pytest.raises(inerta.ModelError, match=r"twobar.yaml:\d+: "):
+        twobar.with_overrides({"k.k": -1})
+
+
+def test_catenary_and_study_file_errors(cli, tmp_path):
+    p = tmp_path / "cat.yaml"
+    p.write_text("catenary:\n  span: 60\n  kc: [7000, 2100, 350, 140]\n  nonsense: 1\n")
+    with pytest.raises(inerta.ModelError) as e:
+        inerta.load_catenary(p)
+    assert str(e.value).startswith(f"{p}:4: ")
+    assert str(e.value) == cli_error(cli, "catenary-response", p, "--fp", "1:1:1")
+    s = tmp_path / "study.yaml"
+    s.write_text(f"model: {SRC}/models/hsx.yaml\ncatenary: {SRC}/models/catenary.yaml\n"
+                 "speeds: {from: 100, to: 50, step: 10, unit: kmh}\nlayouts: [S2-1]\n")
+    with pytest.raises(inerta.ModelError) as e:
+        inerta.load_study(s)
+    assert str(e.value).startswith(f"{s}:3: ")
+    assert str(e.value) == cli_error(cli, "optimise", s)
+    with pytest.raises(inerta.ModelError, match="cannot open"):
+        inerta.load_catenary(tmp_path / "none.yaml")
+
+
+def test_csv_errors_name_file_line_and_column(tmp_path):
+    p = tmp_path / "m.csv"
+    p.write_text("velocity,force\n0.1,10\n0.2,abc\n")
+    t = inerta.CsvTable.read(p)
+    assert t.names == ["velocity", "force"] and t.rows == 2 and t.line(1) == 3
+    with pytest.raises(inerta.ModelError, match=rf"{re.escape(str(p))}:3: column 'force': 'abc' is not a finite number"):
+        t.column("force")
+    assert list(t["velocity"]) == [0.1, 0.2]
+
+
+def test_invalid_argument_and_numerical_error(hsx, lumped):
+    with pytest.raises(inerta.InvalidArgument) as e:
+        inerta.Contact("penalty", stiffness=-1)
+    assert e.value.parameter != "" or "stiffness" in str(e.value)
+    with pytest.raises(inerta.InvalidArgument):
+        inerta.Lumped(inerta.LumpedCatenary(span=-60))
+    with pytest.raises(inerta.InvalidArgument, match="t_end"):
+        inerta.simulate(hsx, t_end=float("inf"))
+    # F_c reduced from 5374 N to 4000 N: the frame sinks and the bilateral contact would have to pull
+    # the head down, a typed error with the time and the force (tests/pantograph/hsx_catenary_test.cpp)
+    weak = hsx.with_overrides({"actuator.constant_force": -4000})
+    with pytest.raises(inerta.NumericalError, match="bilateral contact force"):
+        inerta.sweep(weak, lumped, [50.0])
+
+
+def test_network_error_has_the_column():
+    with pytest.raises(inerta.NetworkError) as e:
+        inerta.parse("b-(k|c")
+    assert e.value.column == 3
+    with pytest.raises(inerta.NetworkError, match="no value for element\(s\) c"):
+        inerta.assign(inerta.parse("k|c"), {"k": 1})
+    with pytest.raises(ValueError):  # a NetworkError is a ValueError
+        inerta.resolve("k|c-b")
