@@ -26,8 +26,10 @@ def read_csv(path):
     """{column: numpy array} of a CSV the CLI wrote."""
     import numpy as np
 
-    data = np.genfromtxt(path, delimiter=",", names=True, dtype=float, encoding="utf-8")
-    return {n: np.atleast_1d(data[n]) for n in data.dtype.names}
+    with open(path, encoding="utf-8") as f:
+        names = f.readline().strip().split(",")
+    data = np.atleast_2d(np.loadtxt(path, delimiter=",", skiprows=1))
+    return {n: data[:, i] for i, n in enumerate(names)}
 
 
 @pytest.fixture(scope="session")

@@ -107,7 +107,7 @@ def test_network_error_has_the_column():
     with pytest.raises(inerta.NetworkError) as e:
         inerta.parse("b-(k|c")
     assert e.value.column == 3
-    with pytest.raises(inerta.NetworkError, match="no value for element\(s\) c"):
+    with pytest.raises(inerta.NetworkError, match=r"no value for element\(s\) c"):
         inerta.assign(inerta.parse("k|c"), {"k": 1})
     with pytest.raises(ValueError):  # a NetworkError is a ValueError
         inerta.resolve("k|c-b")
