@@ -295,9 +295,15 @@ void bind_model(py::module_& m) {
              return State{std::move(q), std::move(qd), std::move(z)};
            }),
            py::arg("q"), py::arg("qd"), py::arg("z") = Eigen::VectorXd())
-      .def_readwrite("q", &State::q)
-      .def_readwrite("qd", &State::qd)
-      .def_readwrite("z", &State::z)
+      .def_property("q", [](State& s) -> Eigen::VectorXd& { return s.q; },
+                    [](State& s, const Eigen::VectorXd& v) { s.q = v; }, py::return_value_policy::reference_internal,
+                    "coordinates (a writable view)")
+      .def_property("qd", [](State& s) -> Eigen::VectorXd& { return s.qd; },
+                    [](State& s, const Eigen::VectorXd& v) { s.qd = v; }, py::return_value_policy::reference_internal,
+                    "velocities (a writable view)")
+      .def_property("z", [](State& s) -> Eigen::VectorXd& { return s.z; },
+                    [](State& s, const Eigen::VectorXd& v) { s.z = v; }, py::return_value_policy::reference_internal,
+                    "internal states (a writable view)")
       .def("copy", [](const State& s) { return s; })
       .def("__repr__", [](const State& s) {
         return fmt::format("State({} coordinates, {} internal states)", s.q.size(), s.z.size());
