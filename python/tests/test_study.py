@@ -1,0 +1,134 @@
+"""Design studies: from a file and from Python objects, J2 as `inerta optimise` prints it, the
+optimisation of a layout, the figures' data and the writers."""
+import json
+import re
+
+import numpy as np
+import pytest
+
+import inerta
+from conftest import model
+
+STUDY = """name: small
+model: {src}/models/hsx.yaml
+catenary: {src}/models/catenary.yaml
+catenaries:
+  - [catenary.kc0=5000]
+  - [catenary.kc0=7000]
+speeds: {{from: 100, to: 300, step: 50, unit: kmh}}
+search: {{starts: 1, seed: 1, min_step: 0.05}}
+layouts: [S2-5, S2-3]
+"""
+
+
+@pytest.fixture(scope="module")
+def study_file(tmp_path_factory):
+    from conftest import SRC
+
+    p = tmp_path_factory.mktemp("study") / "small.yaml"
+    p.write_text(STUDY.format(src=SRC))
+    return p
+
+
+@pytest.fixture(scope="module")
+def study(study_file):
+    return inerta.load_study(study_file)
+
+
+@pytest.fixture(scope="module")
+def cli_out(study_file):
+    from conftest import run_cli
+
+    return run_cli("optimise", study_file).stdout
+
+
+def test_study_file(study):
+    assert study.name == "small" and study.layouts == ["S2-5", "S2-3"]
+    assert study.catenary_labels == ["catenary.kc0=5000", "catenary.kc0=7000"]
+    np.testing.assert_allclose(study.speeds, np.arange(100, 301, 50) / 3.6)
+    assert study.search.starts == 1 and study.search.min_step == 0.05 and study.harmonics == 8
+    assert [c.point_model().k[0] for c in study.catenaries] == [5000, 7000]
+    assert len(study.operating_length) == 2 and study.pantograph.is_pantograph
+    assert inerta.operating_lengths(study) == study.operating_length
+
+
+def test_default_j2_equals_cli(study, cli_out):
+    base = inerta.default_suspension(study)
+    cost = inerta.evaluate(study, base)
+    m = re.search(r"default suspension \((.*)\) J2 = ([0-9.]+) N at ([0-9.]+) km/h", cli_out)
+    assert m.group(1) == inerta.to_string(base, True)
+    assert round(cost.J, 3) == float(m.group(2)) and round(cost.speed * 3.6) == float(m.group(3))
+    curves = inerta.sigma_curves(study, base)
+    assert len(curves) == 2 and inerta.worst_of(curves).J == pytest.approx(cost.J, rel=1e-12)
+    assert curves[0].catenary == "catenary.kc0=5000" and curves[0].sigma.shape == (5,)
+
+
+def test_optimised_layouts_equal_cli(study, cli_out):
+    seen = []
+    for layout in study.layouts:
+        r = inerta.optimise_layout(study, layout, progress=lambda s, e, best: seen.append(e))
+        m = re.search(rf"{re.escape(layout)}\s+J = ([0-9.]+) N after (\d+) evaluations", cli_out)
+        assert f"{r.cost.J:.4f}" == m.group(1) and r.evaluations == int(m.group(2))
+        assert inerta.evaluate(study, r.network()).J == pytest.approx(r.cost.J, rel=1e-12)
+    assert seen
+    assert inerta.free_parameters("S2-1*") == ["b", "k"]
+
+
+def test_time_domain_recheck_equals_cli(study, cli_out):
+    best = inerta.optimise_layout(study, "S2-5")
+    check = inerta.evaluate_time(study, "S2-5", best.values)
+    m = re.search(r"time-domain re-check J2 = ([0-9.]+) N at ([0-9.]+) km/h", cli_out)
+    assert f"{check.J:.3f}" == m.group(1)
+
+
+def test_study_from_python_objects(study, hsx):
+    cats = [inerta.load_catenary(model("catenary.yaml"), {"catenary.kc0": k}) for k in (5000, 7000)]
+    s = inerta.Study(hsx, cats, inerta.kmh(range(100, 301, 50)), ["S2-5", "S2-3"],
+                     search=inerta.SearchOptions(starts=1, seed=1, min_step=0.05))
+    assert s.contact.kind == "bilateral" and len(s.catenary_labels) == 2 and s.source == "<python>"
+    np.testing.assert_allclose(s.operating_length, study.operating_length, rtol=1e-12)
+    base = inerta.default_suspension(s)
+    assert inerta.evaluate(s, base).J == inerta.evaluate(study, base).J
+    r = inerta.optimise_layout(s, "S2-5")
+    assert r.cost.J == inerta.optimise_layout(study, "S2-5").cost.J
+    fewer = s.replace(speeds=inerta.kmh([200]), layouts=["S2-5"])
+    assert len(fewer.speeds) == 1 and fewer.layouts == ["S2-5"] and len(s.speeds) == 5
+    assert inerta.evaluate(fewer, "k", {"k": 1e5}).J > 0
+    with pytest.raises(inerta.InvalidArgument):
+        inerta.Study(hsx, cats, [0.0], ["S2-5"])
+    with pytest.raises(inerta.NetworkError):
+        inerta.Study(hsx, cats, [50.0], ["k|"])
+
+
+def test_report_and_writers(study, tmp_path):
+    results = [inerta.optimise_layout(study, l) for l in study.layouts]
+    o = inerta.ReportOptions()
+    o.frf_f = [1.0, 2.0, 4.0]
+    o.map_size = 0
+    steps = []
+    rep = inerta.make_report(study, results, o, progress=lambda *a: steps.append(a))
+    assert rep.best.layout == "S2-5" and rep.frf_best.H.shape == (1, 3) and rep.map is None
+    assert len(rep.sigma_best) == 2 and len(rep.history_best) == 2 and rep.history_best[0].F.size > 0
+    assert rep.time_check.J > 0 and steps and steps[-1][3] == steps[-1][4]
+    files = inerta.write_study_report(rep, tmp_path / "rep")
+    assert any(f.endswith("report.json") for f in files)
+    default = inerta.evaluate(study, inerta.default_suspension(study))
+    written = inerta.write_study_results(tmp_path / "res", study.name, default, results)
+    doc = json.loads((tmp_path / "res" / "results.json").read_text())
+    assert len(written) == 2 and doc == inerta.study_results_json(study.name, default, results)
+    assert doc["layouts"][0]["J2"] == pytest.approx(results[0].cost.J)
+
+
+def test_maps_and_helpers(study, hsx):
+    base = inerta.default_suspension(study)
+    rig = inerta.rig_model(study, base)
+    assert rig.has_rig
+    cm = inerta.cost_map(study, "S2-1", {"c": 0.0}, "b", [0.0, 100.0], "k", [5e4, 1e5])
+    assert cm.J.shape == (2, 2) and np.isfinite(cm.J).all() and list(cm.xs) == [0, 100]
+    assert inerta.has_inerter(inerta.resolve("b|k", {"b": 10, "k": 1})) and not inerta.has_inerter(base)
+    results = [inerta.optimise_layout(study, "S2-5")]
+    assert inerta.best_with(results, "b", "k") == -1
+    h = inerta.contact_histories(study, base, 200 / 3.6)
+    assert len(h) == 2 and h[0].t.shape == h[0].F.shape and h[0].stats.std > 0
+    curves = inerta.sigma_curves_time(study.replace(speeds=[200 / 3.6]), base, centripetal=False)
+    assert curves[0].sigma[0] > 0
