@@ -132,7 +132,7 @@ void bind_identification(py::module_& m) {
     }
     return run(py::none(), [&](Call& call) {
       analysis::ModelOf model_of = [&](const std::vector<double>& values) {
-        call.check();
+        call.poll();
         if (handle) return handle->with_overrides(overrides(values)).p;
         py::gil_scoped_acquire gil;
         return model(values).cast<const Model&>().p;

@@ -66,7 +66,7 @@ void bind_numerics(py::module_& m) {
     const numerics::Options o = options.is_none() ? numerics::Options{} : options.cast<numerics::Options>();
     return run(progress, [&](Call& call) {
       auto J = [&](const std::vector<double>& values) {
-        call.check();
+        call.poll();
         py::gil_scoped_acquire gil;
         return cost(values).cast<double>();
       };

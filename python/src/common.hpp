@@ -33,15 +33,18 @@ namespace inerta::python {
 
 // ---- Long calls ---------------------------------------------------------------------------------
 //
-// run(callback, work) runs work(call) on a worker thread while the calling thread waits with the
-// GIL released. The library's progress callbacks (any thread, often oneTBB workers) call
-// call.post(...), which only queues the event; the calling thread delivers the events to the
-// Python callback with the GIL held, and every 50 ms runs PyErr_CheckSignals. A KeyboardInterrupt
-// (Ctrl-C) or an exception raised by the Python callback cancels the call: the next progress
-// callback of the library throws Cancelled, which stops a sweep (oneTBB cancels the remaining
-// speeds; the ones running finish), and run re-raises the Python exception once the worker ends.
-// Calls without a progress hook in the library cannot be stopped early: Ctrl-C takes effect when
-// they return.
+// run(callback, work) runs work(call) on the calling thread with the GIL released, so that the
+// library's own threads (oneTBB) run freely and other Python threads too. The library's progress
+// callbacks call call.post(event) (events are closures of C++ values only):
+//   - on the calling thread (simulate's integrator, and the calling thread's share of a parallel
+//     loop) the GIL is taken, the queued events and this one are delivered to the Python callback,
+//     and PyErr_CheckSignals runs (Ctrl-C);
+//   - on the library's worker threads the event is queued for the calling thread.
+// A KeyboardInterrupt or an exception raised by the Python callback cancels the call: from then on
+// every progress callback of the library throws Cancelled, which stops a sweep (oneTBB cancels
+// the remaining speeds; the running ones finish), and run re-raises the Python exception. Events
+// still queued at the end are delivered before run returns. A call without progress hooks in the
+// library cannot be stopped early; Ctrl-C then takes effect when it returns.
 
 struct Cancelled : std::exception {
   const char* what() const noexcept override { return "cancelled from Python"; }
@@ -50,91 +53,97 @@ struct Cancelled : std::exception {
 class Call {
  public:
   using Event = std::function<void(const py::object& callback)>;
-  explicit Call(bool has_callback) : has_callback_(has_callback) {}
+  explicit Call(const py::object& callback) : callback_(callback), owner_(std::this_thread::get_id()) {}
 
-  /// From library threads: queue a progress event (a closure of C++ values only, called later on
-  /// the Python thread with the GIL held). Throws Cancelled once the call is cancelled.
+  /// From any thread, GIL not held: a progress event. Throws Cancelled once the call is cancelled.
   void post(Event e) {
     check();
-    if (!has_callback_) return;
-    {
+    if (std::this_thread::get_id() == owner_) {
+      {
+        py::gil_scoped_acquire gil;
+        if (!callback_.is_none()) {
+          deliver_queued();
+          deliver(e);
+        }
+        check_signals();
+      }
+      check();
+    } else if (!callback_.is_none()) {
       std::lock_guard<std::mutex> lock(m_);
-      if (events_.size() >= 10000) events_.pop_front();
-      events_.push_back(std::move(e));
+      if (queue_.size() >= 100000) queue_.pop_front();
+      queue_.push_back(std::move(e));
     }
-    cv_.notify_one();
   }
-  /// Throws Cancelled once the call is cancelled (for hooks that report nothing).
+  /// For hooks that report nothing (a cost or model function): Ctrl-C on the calling thread, and
+  /// Cancelled once the call is cancelled.
+  void poll() {
+    check();
+    if (std::this_thread::get_id() == owner_) {
+      {
+        py::gil_scoped_acquire gil;
+        check_signals();
+      }
+      check();
+    }
+  }
   void check() const {
     if (cancelled_.load(std::memory_order_relaxed)) throw Cancelled();
   }
-  bool cancelled() const { return cancelled_.load(std::memory_order_relaxed); }
-  void cancel() { cancelled_.store(true); }
+  /// On the calling thread with the GIL held, after the work: the remaining events, then the error.
   void finish() {
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      done_ = true;
-    }
-    cv_.notify_one();
-  }
-  /// Waits until the work is done, an event is queued or `timeout` passed; takes the queued events.
-  bool wait(std::deque<Event>& out, std::chrono::milliseconds timeout) {
-    std::unique_lock<std::mutex> lock(m_);
-    cv_.wait_for(lock, timeout, [&] { return done_ || !events_.empty(); });
-    out.swap(events_);
-    return done_;
+    if (!callback_.is_none()) deliver_queued();
+    if (python_error_) std::rethrow_exception(python_error_);
   }
 
  private:
-  bool has_callback_;
+  void deliver(const Event& e) {
+    if (python_error_) return;
+    try {
+      e(callback_);
+    } catch (...) {
+      python_error_ = std::current_exception();
+      cancelled_.store(true);
+    }
+  }
+  void deliver_queued() {
+    std::deque<Event> q;
+    {
+      std::lock_guard<std::mutex> lock(m_);
+      q.swap(queue_);
+    }
+    for (const auto& e : q) deliver(e);
+  }
+  void check_signals() {
+    if (!python_error_ && PyErr_CheckSignals() != 0) {
+      python_error_ = std::make_exception_ptr(py::error_already_set());
+      cancelled_.store(true);
+    }
+  }
+
+  const py::object& callback_;
+  std::thread::id owner_;
   std::atomic<bool> cancelled_{false};
+  std::exception_ptr python_error_;
   std::mutex m_;
-  std::condition_variable cv_;
-  std::deque<Event> events_;
-  bool done_ = false;
+  std::deque<Event> queue_;
 };
 
 template <class F>
 auto run(const py::object& callback, F&& work) -> decltype(work(std::declval<Call&>())) {
   using R = decltype(work(std::declval<Call&>()));
-  Call call(!callback.is_none());
+  Call call(callback);
   std::optional<R> result;
-  std::exception_ptr error, python_error;
-  std::thread worker([&] {
+  std::exception_ptr error;
+  {
+    py::gil_scoped_release nogil;
     try {
       result.emplace(work(call));
     } catch (...) {
       error = std::current_exception();
     }
-    call.finish();
-  });
-  for (;;) {
-    std::deque<Call::Event> events;
-    bool done = false;
-    {
-      py::gil_scoped_release nogil;
-      done = call.wait(events, std::chrono::milliseconds(50));
-    }
-    for (auto& e : events) {
-      if (python_error) break;
-      try {
-        e(callback);
-      } catch (...) {
-        python_error = std::current_exception();
-        call.cancel();
-      }
-    }
-    if (!done && !python_error && PyErr_CheckSignals() != 0) {
-      python_error = std::make_exception_ptr(py::error_already_set());
-      call.cancel();
-    }
-    if (done) break;
   }
-  {
-    py::gil_scoped_release nogil;
-    worker.join();
-  }
-  if (python_error) std::rethrow_exception(python_error);
+  call.finish();  // a Python exception (KeyboardInterrupt, the callback's) comes first
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   if (error) std::rethrow_exception(error);
   return std::move(*result);
 }

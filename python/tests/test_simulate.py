@@ -118,3 +118,23 @@ def test_spatial_model():
     assert m.dimension == 3 and m.n_coords == 14
     r = inerta.simulate(m, t_end=1, sample=0.01)
     assert np.isfinite(r["C_y"]).all()
+
+
+def test_ctrl_c_stops_a_long_run(twobar):
+    import os
+    import signal
+    import threading
+    import time
+
+    timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
+    t0 = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            inerta.simulate(twobar, t_end=5000, sample=0.01)  # several seconds of work
+    finally:
+        timer.cancel()
+    # stopped at the next progress report (every t_end/50 of simulated time)
+    t = time.perf_counter() - t0
+    r = inerta.simulate(twobar, t_end=100, sample=0.01)
+    assert t < 0.2 + 0.5 + 3 * r.wall_s  # r.wall_s: the time of 1/50 of the long run
