@@ -40,6 +40,7 @@ def test_twobar_elements(twobar):
     x, _ = inerta.assemble(twobar)
     assert k.free_length == pytest.approx(k.length(twobar, x))  # 'initial': the assembled distance
     assert twobar.dof == 2 and twobar.check().dof == 2 and not twobar.is_pantograph
+    assert inerta.check_model(twobar).rank == 4
 
 
 def test_overrides_are_applied(twobar):

@@ -1,0 +1,98 @@
+"""Every bound function is called by the suite, and every property of every bound class is read
+on an object that a real call produced (a binding that cannot convert its value fails here)."""
+import pathlib
+import re
+
+import numpy as np
+import pytest
+
+import inerta
+import inerta._inerta as ext
+from conftest import model
+
+TESTS = pathlib.Path(__file__).resolve().parent
+
+
+def test_every_function_is_called_by_the_suite():
+    src = "\n".join(p.read_text(encoding="utf-8") for p in TESTS.glob("test_*.py"))
+    functions = [n for n in dir(ext) if not n.startswith("_") and not isinstance(getattr(ext, n), type)]
+    uncalled = [n for n in functions if not re.search(rf"\binerta\.{n}\(", src)]
+    assert not uncalled, f"bound functions that no test calls: {uncalled}"
+
+
+def properties(cls):
+    return [n for c in cls.__mro__ for n, v in vars(c).items() if isinstance(v, property) and not n.startswith("_")]
+
+
+def touch(obj, seen):
+    cls = type(obj)
+    if cls.__module__ not in ("inerta", "inerta._inerta") or isinstance(obj, (int, float, str)):
+        return
+    first = cls.__name__ not in seen
+    seen.update(c.__name__ for c in cls.__mro__)
+    if not first:
+        return
+    for name in properties(cls):
+        value = getattr(obj, name)
+        items = value if isinstance(value, (list, tuple)) else [value]
+        for v in items[:2]:
+            if v is not None:
+                touch(v, seen)
+
+
+@pytest.fixture(scope="module")
+def objects(hsx, lumped, twobar, tmp_path_factory):
+    out = []
+    x, rep = inerta.assemble(twobar)
+    out += [twobar, hsx, x, rep, twobar.check(), inerta.static_equilibrium(twobar)[1], twobar.options]
+    out += hsx.bodies[:1] + hsx.markers[:1] + hsx.joints[:1] + hsx.forces + hsx.outputs[:1]
+    r = inerta.simulate(twobar, 1.0, 0.1, steady_from=0.5, from_equilibrium=True)
+    out += [r, r.summary(0.0)[0], inerta.IntegratorOptions(), inerta.RunOptions(), inerta.SteppedSine()]
+    s = inerta.sweep(hsx, lumped, [50.0], options=inerta.RunOptions(min_spans=6, fixed_spans=True))
+    out += [s, s[0], inerta.run_speed(hsx, lumped, 50.0, options=inerta.RunOptions(min_spans=6, fixed_spans=True))]
+    c = inerta.simulate_coupled(hsx, lumped, 50.0, spans=2)
+    out += [c, c.contacts[0], lumped, lumped.catenary, lumped.contact, lumped.catenary.point_model()]
+    prof = inerta.load_catenary(model("wire-profile.yaml"))
+    out += [prof.catenary, prof.catenary.profile]
+    out += [inerta.PantographOnLine(hsx), inerta.couple_lumped(hsx, lumped.catenary.point_model(), lumped.contact, 50.0)]
+    ma = inerta.modal_analysis(hsx)
+    out += [ma, ma.linear, ma.modes[0], inerta.frf_linear(hsx, ["P_ay"], [1.0, 2.0])]
+    cr = inerta.catenary_response(lumped, [0.5], settle=5, periods=2)
+    out += [cr, cr[0]]
+    n = inerta.simplify(inerta.resolve("b-(k|c)", {"b": 10, "k": 100, "c": 100}))
+    out += [n, inerta.layouts()[0], inerta.rational_admittance(n), inerta.realise(n)]
+    st = inerta.Study(hsx, [lumped], [50.0, 60.0], ["S2-5"], search=inerta.SearchOptions(starts=1, min_step=0.1))
+    lr = inerta.optimise_layout(st, "S2-5")
+    out += [st, lr, lr.cost, inerta.sigma_curves(st, "k", {"k": 1e5})[0], st.search]
+    out += [inerta.contact_histories(st, "k", 50.0, {"k": 1e5})[0]]
+    out += [inerta.cost_map(st, "S2-1", {"c": 0.0}, "b", [0.0, 10.0], "k", [1e5, 2e5])]
+    o = inerta.ReportOptions()
+    o.map_size, o.frf_f = 0, [1.0]
+    out += [inerta.make_report(st.replace(layouts=["S2-5"]), [lr], o), o]
+    p = tmp_path_factory.mktemp("csv") / "m.csv"
+    p.write_text("a,b\n1,2\n3,4\n")
+    t = inerta.CsvTable.read(p)
+    assert t.has("a") and not t.has("c")
+    t.require_rows(2, "this test")
+    out += [t]
+    f = np.arange(1.0, 10.0)
+    H = (-1 - 7000 * 0.02 / (2 * np.pi * f) ** 2) / (7 - 7000 / (2 * np.pi * f) ** 2) + 0j
+    out += [inerta.fit_head_suspension(7.0, f, H, np.full(f.shape, 0.02 + 0j), 1, 9)]
+    meas = inerta.frf_linear(hsx, ["P_ay"], [1.0, 2.0, 3.0])
+    out += [inerta.fit_frf(hsx, ["c2.c"], meas, inerta.SearchOptions(starts=1, min_step=0.1))]
+    out += [inerta.fit_line([0, 1], [0, 1]), inerta.fit_actuator_static([-0.1, -0.2, 0.1, 0.2], [-1, -2, 1, 2])]
+    tt = np.linspace(0, 2, 400)
+    dt = inerta.DynamicTest(1.0, tt, 1e-3 * np.sin(2 * np.pi * tt), 10 * np.cos(2 * np.pi * tt))
+    out += [dt, inerta.fit_actuator_dynamic([dt], 1e4, 0.0, 0.0), inerta.Variable("k")]
+    out += [inerta.pattern_search([inerta.Variable("k", 1, 10, False, False)], lambda v: (v[0] - 3) ** 2)]
+    out += [inerta.CubicSpline([0, 1, 2], [0, 1, 0])]
+    return out
+
+
+def test_every_class_is_produced_and_its_properties_convert(objects):
+    seen = set()
+    for o in objects:
+        touch(o, seen)
+    classes = {n for n in dir(ext) if isinstance(getattr(ext, n), type) and not n.startswith("_")
+               and not issubclass(getattr(ext, n), BaseException) and not hasattr(getattr(ext, n), "__members__")}
+    assert not classes - seen, f"classes no test object exercises: {sorted(classes - seen)}"
