@@ -266,6 +266,64 @@ void write_csv(std::FILE* out, const std::vector<const analysis::TimeHistory*>& 
   }
 }
 
+// A finite line (the finite-element catenary): EN 50317 statistics per pantograph, raw and
+// after the 20 Hz low-pass, and the uplift of the supports in the section.
+void print_line_outputs(std::FILE* info, const analysis::CoupledSimulation& r,
+                        const std::vector<catenary::PantographOnLine>& train) {
+  fmt::print(info, "analysis section {:g} … {:g} m (EN 50317 quantities; filtered: zero-phase 4th-order Butterworth "
+                   "low-pass at 20 Hz)\n",
+             r.section.from, r.section.to);
+  fmt::print(info, "  {:<22} {:>8} {:>8} {:>10} {:>10} {:>8} {:>8} {:>7}\n", "pantograph", "mean N", "std N",
+             "Fm+3s N", "Fm-3s N", "max N", "min N", "loss %");
+  for (std::size_t k = 0; k < r.quality.size(); ++k) {
+    const auto& q = r.quality[k];
+    const std::string who = fmt::format("{} (x0 = {:g} m)", k + 1, train[k].x0);
+    for (int f = 0; f < 2; ++f) {
+      const analysis::ContactStatistics& c = f == 0 ? q.raw : q.filtered;
+      fmt::print(info, "  {:<22} {:8.2f} {:8.2f} {:10.2f} {:10.2f} {:8.2f} {:8.2f} {:7.2f}\n",
+                 f == 0 ? who + " raw" : std::string(who.size(), ' ') + " 20 Hz", c.mean, c.std, c.stat_max,
+                 c.stat_min, c.max, c.min, f == 0 ? q.loss_pct : c.loss_pct);
+    }
+    const auto& cs = r.contacts[k];
+    if (cs.lost_samples > 0)
+      fmt::print(info, "  pantograph {}: contact lost in {} samples over the run; first at t = {:.6g} s, x = {:.6g} m\n",
+                 k + 1, cs.lost_samples, cs.first_loss_t, cs.first_loss_x);
+  }
+  double worst = 0, x_worst = 0;
+  for (const auto& u : r.uplift)
+    if (u.max_uplift > worst) worst = u.max_uplift, x_worst = u.x;
+  fmt::print(info, "support uplift in the section: max {:.2f} mm at the support x = {:g} m ({} supports)\n",
+             1e3 * worst, x_worst, r.uplift.size());
+}
+
+// Beside OUT.csv: OUT.supports.csv (uplift of every support over time) and OUT.psd.csv (PSD of each
+// pantograph's contact force in the section).
+void write_line_files(std::FILE* info, const std::string& out, const analysis::CoupledSimulation& r) {
+  const std::string stem = out.size() > 4 && out.ends_with(".csv") ? out.substr(0, out.size() - 4) : out;
+  {
+    OutputFile f(stem + ".supports.csv");
+    std::vector<const analysis::TimeHistory*> hs{&r.supports};
+    write_csv(f.get(), hs, {""});
+  }
+  OutputFile f(stem + ".psd.csv");
+  std::string line = "f";
+  for (std::size_t k = 0; k < r.quality.size(); ++k) line += fmt::format(",S_p{}", k + 1);
+  line += '\n';
+  std::fputs(line.c_str(), f.get());
+  const std::size_t n = r.quality.front().psd.f.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    line.clear();
+    append_number(line, r.quality.front().psd.f[i]);
+    for (const auto& q : r.quality) {
+      line += ',';
+      append_number(line, i < q.psd.S.size() ? q.psd.S[i] : NAN);
+    }
+    line += '\n';
+    std::fputs(line.c_str(), f.get());
+  }
+  fmt::print(info, "wrote {0}.supports.csv (support uplift, m) and {0}.psd.csv (contact-force PSD, N²/Hz)\n", stem);
+}
+
 int cmd_simulate(const SimulateArgs& a) {
   solve::IntegratorOptions opt;
   opt.method = solve::parse_method(a.integrator);
@@ -316,7 +374,11 @@ int cmd_simulate(const SimulateArgs& a) {
     if (a.steady_from >= 0)
       for (std::size_t k = 0; k < r.histories.size(); ++k)
         print_steady(info, a.steady_from, analysis::summarise(r.histories[k], a.steady_from), prefixes[k]);
-    for (std::size_t k = 0; k < r.contacts.size(); ++k) {
+    if (!r.quality.empty()) {
+      print_line_outputs(info, r, train);
+      if (!a.out.empty()) write_line_files(info, a.out, r);
+    }
+    for (std::size_t k = 0; k < r.contacts.size() && r.quality.empty(); ++k) {
       const auto& c = r.contacts[k];
       const analysis::ContactStatistics& cs = c.stats;
       fmt::print(info,
@@ -469,13 +531,22 @@ int cmd_sweep(const SweepArgs& a) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   OutputFile file(a.out);
   std::FILE* out = file.get();
-  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct\n");
+  const bool line = !results.empty() && !results.front().filtered.empty();  // a finite line: EN 50317 columns
+  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}\n",
+             line ? ",f_mean,f_std,f_max,f_min,f_stat_max,f_stat_min,uplift_max_m" : "");
   std::size_t worst = 0;
   int spans_max = 0;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& s = results[i].stats;
-    fmt::print(out, "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}\n", v[i] * 3.6, v[i], s.mean, s.std,
+    fmt::print(out, "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}", v[i] * 3.6, v[i], s.mean, s.std,
                s.max, s.min, s.stat_max, s.stat_min, s.loss_pct);
+    if (line) {
+      const auto& f = results[i].filtered.front();
+      const auto& up = results[i].support_uplift;
+      fmt::print(out, ",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", f.mean, f.std, f.max, f.min, f.stat_max,
+                 f.stat_min, up.empty() ? 0.0 : *std::max_element(up.begin(), up.end()));
+    }
+    fmt::print(out, "\n");
     if (s.std > results[worst].stats.std) worst = i;
     spans_max = std::max(spans_max, results[i].spans);
   }
@@ -483,6 +554,10 @@ int cmd_sweep(const SweepArgs& a) {
   if (a.method == "periodic")
     fmt::print("wall {:.3f} s; periodic steady state by harmonic balance ({} harmonics of the pumping frequency)\n",
                wall, a.harmonics);
+  else if (line)
+    fmt::print("wall {:.2f} s; one pass along the line, statistics over its analysis section (raw, and f_*: after "
+               "the 20 Hz low-pass); uplift_max_m: the largest support uplift over the run\n",
+               wall);
   else
     fmt::print("wall {:.2f} s; statistics over the last 2 spans once σ changed < 0.5 % span to span (up to {} spans)\n",
                wall, spans_max);

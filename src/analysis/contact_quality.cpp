@@ -85,7 +85,7 @@ ContactQuality contact_quality(const std::vector<double>& t, const std::vector<d
 }
 
 ContactQuality contact_quality(const std::vector<double>& t, const std::vector<double>& x_contact,
-                               const std::vector<double>& F, const catenary::Catenary::Section& section,
+                               const std::vector<double>& F, const catenary::Section& section,
                                const ContactQualityOptions& options) {
   return contact_quality(t, x_contact, F, section.from, section.to, options);
 }

@@ -86,7 +86,7 @@ TEST(ContactQuality, TheSectionIsExactlyTheSamplesWithXInside) {
   EXPECT_EQ(q.filtered.std, cut.std);
   EXPECT_EQ(q.filtered.max, cut.max);
   // The catenary-section overload is the same.
-  const auto q2 = analysis::contact_quality(r.t, r.x, r.F, catenary::Catenary::Section{10, 20});
+  const auto q2 = analysis::contact_quality(r.t, r.x, r.F, catenary::Section{10, 20});
   EXPECT_EQ(q2.raw.samples, 161);
   EXPECT_EQ(q2.filtered.std, q.filtered.std);
 }

@@ -58,7 +58,7 @@ ContactQuality contact_quality(const std::vector<double>& t, const std::vector<d
                                const ContactQualityOptions& options = {});
 /// Over the catenary's analysis section (catenary::Catenary::section()).
 ContactQuality contact_quality(const std::vector<double>& t, const std::vector<double>& x_contact,
-                               const std::vector<double>& F, const catenary::Catenary::Section& section,
+                               const std::vector<double>& F, const catenary::Section& section,
                                const ContactQualityOptions& options = {});
 
 /// The largest uplift of one support over the run.

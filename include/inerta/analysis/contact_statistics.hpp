@@ -37,8 +37,11 @@ struct SpeedResult {
   int spans = 0;                            ///< spans simulated
   double sigma_change = 0;                  ///< last span-to-span relative change of σ (largest over the contacts)
   std::vector<double> t, F;                 ///< contact-force history of the first contact (all spans)
-  /// A finite line: its supports (m along the line) and the largest uplift of each over the run, m.
+  /// A finite line: its supports in the analysis section (m along the line) and the largest uplift
+  /// of each over the run, m.
   std::vector<double> support_x, support_uplift;
+  /// A finite line: each contact's statistics after the 20 Hz low-pass (EN 50317, contact_quality.hpp).
+  std::vector<ContactStatistics> filtered;
 };
 
 /// A finite line (Coupled::line_length): one pass from the static state until the leading

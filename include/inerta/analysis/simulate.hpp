@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "inerta/analysis/contact_quality.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/assembly.hpp"
@@ -84,6 +85,8 @@ struct CoupledSimulation {
   catenary::Section section;
   std::vector<double> support_x;
   TimeHistory supports;
+  std::vector<ContactQuality> quality;  ///< per contact: EN 50317 statistics raw and filtered, PSD
+  std::vector<SupportUplift> uplift;    ///< the supports in the section: max uplift and when
 };
 
 /// Couples the pantographs to the catenary at `speed` (m/s), starts from the static equilibrium
