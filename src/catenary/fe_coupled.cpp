@@ -209,11 +209,9 @@ class FeCoupled final : public Coupled {
       started_ = true;
     }
     const auto wall0 = std::chrono::steady_clock::now();
-    const double eps = 1e-9 * h;
-    // Samples on the grid t0 + i·dt, delivered at the structural step nearest to each.
-    const double t0 = s_.t;
-    long next = sampled_start_ ? 1 : 0;
-    auto sample_due = [&](double t) { return t0 + static_cast<double>(next) * dt <= t + 0.5 * h + eps; };
+    // Samples every k-th structural step, k = round(dt / h) >= 1 (uniform; dt rounded to a multiple of h).
+    const long every = std::max(1L, std::lround(dt / h));
+    long step_index = 0;
     auto deliver = [&](double t) {
       for (std::size_t k = 0; k < parts_.size(); ++k) {
         Part& p = *parts_[k];
@@ -231,7 +229,7 @@ class FeCoupled final : public Coupled {
         }
       }
     };
-    if (sample_due(s_.t)) deliver(s_.t), ++next;
+    if (!sampled_start_) deliver(s_.t);
     std::vector<FeLoad> loads(parts_.size());
     std::vector<double> forces;
     const int n_steps = static_cast<int>(std::floor((t_end - s_.t) / h + 1e-6));
@@ -262,7 +260,7 @@ class FeCoupled final : public Coupled {
         const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(p.stepper->state(), p.body), p.u);
         p.acc_y = (pk.v.y() - p.yd_prev) / h;
       }
-      if (sample_due(s_.t)) deliver(s_.t), ++next;
+      if (++step_index % every == 0) deliver(s_.t);
     }
     sampled_start_ = true;
     solve::RunStats total;

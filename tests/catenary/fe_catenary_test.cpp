@@ -336,6 +336,73 @@ TEST(FeFit, LumpedStiffnessReproducesTheElasticityAlongTheSpan) {
   // mass over the length the shape spans, and well below the whole line's mass.
   EXPECT_LT(fit.lumped.m[0], 10 * 55 * (1.08 + 1.35));
 }
+TEST(FeCoupled, HalvingTheElementLengthChangesSigmaAndUpliftByLessThanOnePercent) {
+  const pantograph::Pantograph p = io::parse_pantograph(kHead, "head.yaml");
+  std::vector<double> sig, up;
+  for (double le : {0.25, 0.125}) {
+    FeCatenaryData d = benchmark(3);
+    d.element_length = le;
+    const catenary::FeCatenary cat(d);
+    auto sys = cat.couple(p, penalty(), 200 / 3.6);
+    std::vector<double> F;
+    double max_up = 0;
+    const auto sec = cat.section();
+    sys->advance(sys->end_time(), 1e-3, {}, [&](const catenary::Sample& s) {
+      if (s.x_contact < sec.from || s.x_contact > sec.to) return;
+      F.push_back(s.force);
+      const auto u = sys->support_uplift();
+      for (double v : u) max_up = std::max(max_up, v);
+    });
+    sig.push_back(analysis::statistics(F).std);
+    up.push_back(max_up);
+  }
+  EXPECT_LT(std::abs(sig[1] - sig[0]) / sig[1], 0.01) << sig[0] << " " << sig[1];
+  EXPECT_LT(std::abs(up[1] - up[0]) / up[1], 0.01) << up[0] << " " << up[1];
+}
+
+TEST(FeCoupled, TwoPantographsTrailingDiffersAndAFarOneDoesNotDisturbTheLeader) {
+  // On 6 spans at 250 km/h, statistics over spans 4–5: the leader starts at 220 m. A trailer 55 m
+  // behind runs on the leader's waves (σ differs); one 200 m behind cannot reach the leader before
+  // the run ends (its waves gain on the leader at c − v = 58 m/s: 3.4 s, the run lasts 1.6 s), so
+  // the leader's σ is that of the leader alone.
+  const pantograph::Pantograph p = io::parse_pantograph(kHead, "head.yaml");
+  FeCatenaryData d = benchmark(6);
+  d.time_step = 1e-3;
+  d.section_first = 4, d.section_last = 5;
+  const catenary::FeCatenary cat(d);
+  auto sigma = [&](const std::vector<catenary::PantographOnLine>& train, int which) {
+    auto sys = cat.couple(train, 250 / 3.6);
+    std::vector<double> F;
+    const auto sec = cat.section();
+    sys->advance(sys->end_time(), 1e-3, {}, [&](const catenary::Sample& s) {
+      if (s.contact.index == which && s.x_contact >= sec.from && s.x_contact <= sec.to) F.push_back(s.force);
+    });
+    return analysis::statistics(F).std;
+  };
+  const double alone = sigma({{p, 220, penalty()}}, 0);
+  const double lead_near = sigma({{p, 220, penalty()}, {p, 165, penalty()}}, 0);
+  const double trail_near = sigma({{p, 220, penalty()}, {p, 165, penalty()}}, 1);
+  const double lead_far = sigma({{p, 220, penalty()}, {p, 20, penalty()}}, 0);
+  EXPECT_GT(std::abs(trail_near - lead_near) / lead_near, 0.02) << "the trailer runs on a disturbed wire";
+  EXPECT_LT(std::abs(lead_far - alone) / alone, 0.01) << alone << " " << lead_far;
+}
+
+TEST(FeCoupled, ContactLossIsSimulatedAndReported) {
+  // A light static force (20 N) at 300 km/h: the head leaves the wire in the section.
+  std::string text = kHead;
+  text.replace(text.find("198.48"), 6, "98.48");  // 98.48 − 8 g = 20 N
+  const pantograph::Pantograph p = io::parse_pantograph(text, "light.yaml");
+  FeCatenaryData d = benchmark(4);
+  d.time_step = 1e-3;
+  const catenary::FeCatenary cat(d);
+  auto sys = cat.couple(p, penalty(), 300 / 3.6);
+  analysis::RunOptions o;
+  const analysis::SpeedResult r = analysis::run_speed(*sys, o);
+  EXPECT_GT(r.stats.loss_pct, 0.0);
+  EXPECT_EQ(r.stats.min, 0.0);
+  EXPECT_NEAR(r.stats.mean, 20.0, 2.0) << "the mean contact force is the static one";
+}
+
 TEST(FeScratch, Timing) {
   const pantograph::Pantograph p = io::parse_pantograph(kHead, "head.yaml");
   for (double h : {1e-3, 5e-4}) {

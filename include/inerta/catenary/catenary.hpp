@@ -80,7 +80,8 @@ class Coupled {
   /// Every part to its static equilibrium at t = 0 (the static uplift against the catenary).
   virtual void equilibrate() = 0;
   /// Integrates from time() to t_end, calling `observer` every dt (from time() on, for each
-  /// contact in time order). A bilateral contact whose force becomes negative stops the run with
+  /// contact in time order; a co-simulated catenary with a fixed step h samples every round(dt/h)
+  /// steps). A bilateral contact whose force becomes negative stops the run with
   /// NumericalError (time, speed, force). `accelerations`: the samples' workspaces hold
   /// accelerations and multipliers. Returns the integrator statistics (summed over the parts).
   /// Positions along the line of the supports whose uplift the catenary reports (none by default),
