@@ -1,5 +1,6 @@
 // inerta — command-line interface (docs/cli.md).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -25,6 +26,7 @@
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
+#include "inerta/io/file_kind.hpp"
 #include "inerta/io/linear_model_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/study_file.hpp"
@@ -78,7 +80,7 @@ void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyR
   fmt::print(to, "\n");
 }
 
-int cmd_check(const std::string& path) {
+int check_model_file(const std::string& path) {
   mbs::Model model = io::load_model(path);
   for (const auto& note : model.notes) fmt::print("note: {}\n", note);
   fmt::print("model: {} ({})\n", model.name, path);
@@ -123,6 +125,56 @@ int cmd_check(const std::string& path) {
   mbs::accelerations(model, 0.0, x, ws);  // throws if the system matrix is singular
   fmt::print("ok\n");
   return 0;
+}
+
+// A catenary file: its key numbers (a finite-element line from its data, without the form-finding).
+int check_catenary(const std::string& path) {
+  const io::CatenaryFile f = io::read_catenary_file(path);
+  fmt::print("catenary: {} ({})\n", f.name, path);
+  if (f.fe) {
+    const catenary::FeCatenaryData& d = *f.fe;
+    const std::size_t n = d.dropper_x.size();
+    fmt::print("type: finite_element (messenger and contact wire as tensioned beams, droppers slack in compression)\n");
+    fmt::print("line: {} spans of {:g} m, length {:g} m, encumbrance {:g} m\n", d.spans, d.span, d.span * d.spans,
+               d.encumbrance);
+    for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
+      fmt::print("{:<13} T = {:g} N, rho A = {:g} kg/m, EI = {:g} N·m², wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n",
+                 std::string(which) + ":", w.tension, w.mass_per_length, w.EI, w.wave_speed(), 3.6 * w.wave_speed());
+    fmt::print("droppers: {} a span, {} in all; EA = {:g} N, {:g} kg/m, clamps {:g} kg (messenger), {:g} kg (contact wire)\n",
+               n, n * static_cast<std::size_t>(d.spans), d.dropper_EA, d.dropper_mass_per_length, d.clamp_mass_messenger,
+               d.clamp_mass_contact);
+    fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg\n", d.support_stiffness, d.support_mass,
+               d.registration_stiffness, d.registration_mass);
+    fmt::print("mesh: element length <= {:g} m (nodes at every dropper and mast)\n", d.element_length);
+    fmt::print("damping: Rayleigh a = {:g} 1/s, b = {:g} s; integration: HHT-alpha, alpha = {:g}, time step {:g} s\n",
+               d.rayleigh_mass, d.rayleigh_stiffness, d.hht_alpha, d.time_step);
+    if (d.section_first > 0)
+      fmt::print("analysis section: spans {} to {}\n", d.section_first, d.section_last);
+    else
+      fmt::print("analysis section: the default (the middle spans, away from the ends)\n");
+  } else {
+    fmt::print("{}\n", f.catenary->describe());
+  }
+  if (f.contact.kind == catenary::Contact::Kind::Penalty)
+    fmt::print("contact: penalty, k_s = {:g} N/m, c_s = {:g} N·s/m\n", f.contact.stiffness, f.contact.damping);
+  else
+    fmt::print("contact: bilateral\n");
+  fmt::print("ok\n");
+  return 0;
+}
+
+// `inerta check FILE`: a model, a lumped pantograph or a catenary file (io::file_kind).
+int cmd_check(const std::string& path) {
+  const io::FileKind kind = io::file_kind(path);
+  if (kind == io::FileKind::Catenary) return check_catenary(path);
+  if (kind == io::FileKind::LumpedPantograph) {
+    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path);
+    fmt::print("lumped pantograph: {} masses, head first: m = [{}] kg, k = [{}] N/m, c = [{}] N·s/m\n", d.mass.size(),
+               fmt::join(d.mass, ", "), fmt::join(d.stiffness, ", "), fmt::join(d.damping, ", "));
+    fmt::print("static uplift {:g} N on the lowest mass; aerodynamic uplift on the head {:g} v² + {:g} v + {:g} N (v in m/s)\n",
+               d.static_uplift, d.aero_a, d.aero_b, d.aero_c);
+  }
+  return check_model_file(path);
 }
 
 // A CSV destination: the file given with --out (created or replaced), or standard output.
@@ -177,7 +229,9 @@ double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6
 // The pantograph with the requested suspension, and the catenary file with its overrides.
 std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::string& path, const CatenaryArgs& c,
                                                                      bool no_centripetal = false) {
-  pantograph::Pantograph p = io::load_pantograph(path);
+  std::vector<std::string> panto_sets, cat_sets;  // --set lumped_pantograph.* belongs to the pantograph file
+  for (const std::string& o : c.sets) (o.rfind("lumped_pantograph.", 0) == 0 ? panto_sets : cat_sets).push_back(o);
+  pantograph::Pantograph p = io::load_pantograph(path, panto_sets);
   if (no_centripetal) p.model.options.centripetal = false;
   if (!c.suspension.empty()) {
     network::Network net;
@@ -190,7 +244,7 @@ std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::
   } else if (!c.params.empty()) {
     throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
   }
-  io::CatenaryFile cat = io::load_catenary(c.catenary, c.sets);
+  io::CatenaryFile cat = io::load_catenary(c.catenary, cat_sets);
   if (!c.contact.empty())
     cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
   return {p, cat};
@@ -202,7 +256,9 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
   app->add_option("--unit", c.unit, "Speed unit: ms (m/s) or kmh")
       ->check(CLI::IsMember({"ms", "kmh"}))
       ->capture_default_str();
-  app->add_option("--set", c.sets, "Override a catenary value, e.g. catenary.kc0=5000 (repeatable)");
+  app->add_option("--set", c.sets,
+                  "Override a catenary value, e.g. catenary.kc0=5000, or a lumped pantograph's, e.g. "
+                  "lumped_pantograph.static_uplift=90 (repeatable)");
   app->add_option("--contact", c.contact, "bilateral (thesis) or penalty; default: the catenary file's")
       ->check(CLI::IsMember({"bilateral", "penalty"}));
   app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
@@ -834,8 +890,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string check_model;
-  auto* check = app.add_subcommand("check", "Validate and assemble a model; print bodies, constraints and DOF");
-  check->add_option("model", check_model, "Model file (YAML)")->required();
+  auto* check = app.add_subcommand("check", "Validate a model (print bodies, constraints, DOF), a lumped pantograph or a catenary file");
+  check->add_option("model", check_model, "Model, lumped pantograph or catenary file (YAML)")->required();
 
   // --t-end and --sample default to the model's options; a given value must be positive.
   auto positive = [](const std::string& s) {
