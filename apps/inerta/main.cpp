@@ -23,9 +23,11 @@
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/analysis/modal.hpp"
 #include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
+#include "inerta/io/lumped_fit_file.hpp"
 #include "inerta/io/file_kind.hpp"
 #include "inerta/io/linear_model_file.hpp"
 #include "inerta/io/model_file.hpp"
@@ -622,6 +624,45 @@ int cmd_sweep(const SweepArgs& a) {
   return 0;
 }
 
+struct FitArgs {
+  std::string catenary, out, table;
+  int span = 0;
+  std::vector<std::string> sets;
+};
+
+// The lumped catenary of eq. 7.1 from a finite-element one (catenary::fit_lumped).
+int cmd_catenary_fit(const FitArgs& a) {
+  const catenary::FeCatenaryData d = io::read_fe_catenary_data(a.catenary, a.sets);
+  const io::CatenaryFile file = io::read_catenary_file(a.catenary, a.sets);
+  const catenary::FeLine line(d);
+  const catenary::LumpedFit fit = catenary::fit_lumped(line, a.span);
+  const catenary::LumpedCatenary& c = fit.lumped;
+  fmt::print("{}\n", line.describe());
+  // Form-finding of the fitted span: dropper lengths and tensions, against the file's nominal lengths.
+  fmt::print("form-finding, span {}: dropper x (m), unstretched length (m){}, static tension (N)\n", fit.span > 0 ? fit.span : 0,
+             d.nominal_dropper_length.empty() ? "" : " [nominal]");
+  for (const auto& dr : line.droppers()) {
+    if (dr.x < (fit.span - 1) * d.span || dr.x > fit.span * d.span) continue;
+    const auto j = static_cast<std::size_t>(&dr - line.droppers().data()) % d.dropper_x.size();
+    fmt::print("  {:7.2f}  {:.4f}{}  {:7.2f}\n", dr.x, dr.length,
+               d.nominal_dropper_length.empty() ? "" : fmt::format(" [{:.3f}]", d.nominal_dropper_length[j]), dr.tension);
+  }
+  fmt::print("fitted span {} ({:g} … {:g} m): elasticity {:.3f} … {:.3f} mm/N\n", fit.span, (fit.span - 1) * d.span,
+             fit.span * d.span, 1e3 * *std::min_element(fit.elasticity.begin(), fit.elasticity.end()),
+             1e3 * *std::max_element(fit.elasticity.begin(), fit.elasticity.end()));
+  fmt::print("  k_c = [{:.5g}, {:.5g}, {:.5g}, {:.5g}] N/m\n  m_c = [{:.5g}, {:.5g}, {:.5g}, {:.5g}] kg\n"
+             "  c_c = [{:.5g}, {:.5g}, {:.5g}, {:.5g}] N·s/m\n",
+             c.k[0], c.k[1], c.k[2], c.k[3], c.m[0], c.m[1], c.m[2], c.m[3], c.c[0], c.c[1], c.c[2], c.c[3]);
+  fmt::print("  natural frequency (1/2π) sqrt(k_c0/m_c0) = {:.3f} Hz\n", c.natural_frequency());
+  fmt::print("  elasticity fit: max {:.1f} %, rms {:.1f} %; over one dropper spacing: max {:.1f} %, rms {:.1f} %\n",
+             100 * fit.max_elasticity_error, 100 * fit.rms_error, 100 * fit.max_smoothed_error,
+             100 * fit.rms_smoothed_error);
+  io::write_lumped_catenary(a.out, fit, file.contact, a.catenary);
+  fmt::print("wrote {}\n", a.out);
+  if (!a.table.empty()) io::write_fit_table(a.table, fit), fmt::print("wrote {}\n", a.table);
+  return 0;
+}
+
 struct ModesArgs {
   std::string model, out, export_json;
   CatenaryArgs cat;
@@ -978,6 +1019,17 @@ int main(int argc, char** argv) {
   crs->add_option("--set", ca.sets, "Override a catenary value (repeatable)");
   crs->add_option("--out", ca.out, "CSV file (default: standard output)");
 
+  FitArgs fit_args;
+  auto* cat_cmd = app.add_subcommand("catenary", "Catenary tools");
+  auto* fit = cat_cmd->add_subcommand(
+      "fit", "Fit the lumped catenary of eq. 7.1 to a finite-element catenary; write a lumped catenary file");
+  fit->add_option("catenary", fit_args.catenary, "Finite-element catenary file (YAML)")->required();
+  fit->add_option("--out", fit_args.out, "Lumped catenary file to write (YAML)")->required();
+  fit->add_option("--span", fit_args.span, "Span to fit (1-based; default: the middle span)");
+  fit->add_option("--table", fit_args.table, "Also write the fit along the span (CSV: x, elasticity FE/fit, mass, damping)");
+  fit->add_option("--set", fit_args.sets, "Override a catenary value (repeatable), e.g. messenger.tension=17000");
+  cat_cmd->require_subcommand(1);
+
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
 
   OptimiseArgs oa;
@@ -1001,6 +1053,7 @@ int main(int argc, char** argv) {
     if (mds->parsed()) return cmd_modes(ma);
     if (frf->parsed()) return cmd_frf(fa);
     if (crs->parsed()) return cmd_catenary_response(ca);
+    if (fit->parsed()) return cmd_catenary_fit(fit_args);
     if (idn->parsed()) return inerta::cli::run_identify();
     if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {

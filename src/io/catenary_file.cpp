@@ -13,7 +13,7 @@
 #include "inerta/error.hpp"
 #include "inerta/io/csv_table.hpp"
 #include "inerta/io/yaml_errors.hpp"
-#include "catenary_fe_make.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
 #include "model_reader.hpp"
 
 namespace inerta::io {
@@ -50,7 +50,7 @@ std::shared_ptr<const catenary::Catenary> make(const Parsed& p, const std::strin
     p.contact.validate();
     if (p.type == Type::Lumped) return std::make_shared<catenary::Lumped>(p.lumped);
     if (p.type == Type::WireProfile) return std::make_shared<catenary::WireProfileCatenary>(p.profile);
-    return fe ? detail::make_fe(p.fe) : nullptr;
+    return fe ? std::make_shared<catenary::FeCatenary>(p.fe) : nullptr;
   } catch (const InvalidArgument& e) {
     throw ModelError(fmt::format("{}: {}", where, e.what()));
   }

@@ -1,4 +1,5 @@
 // `inerta check` on every kind of input file, and the lumped pantograph under `simulate --catenary`.
+#include <cmath>
 #include <gtest/gtest.h>
 
 #include <cstdlib>

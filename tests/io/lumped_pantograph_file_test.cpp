@@ -42,7 +42,7 @@ std::string error_of(const std::string& text, const std::vector<std::string>& se
 }  // namespace
 
 TEST(LumpedPantographFile, TheBundledDsa380LoadsAsAPantographWithARig) {
-  const std::string path = testing::model_path("pantograph-3mass.yaml");
+  const std::string path = inerta::testing::model_path("pantograph-3mass.yaml");
   EXPECT_EQ(io::file_kind(path), io::FileKind::LumpedPantograph);
   const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path);
   EXPECT_EQ(d.mass, (std::vector<double>{7.12, 6.0, 5.8}));

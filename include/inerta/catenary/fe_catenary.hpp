@@ -70,7 +70,7 @@ struct FeCatenaryData {
   double rayleigh_mass = 0.0125;             ///< a, 1/s
   double rayleigh_stiffness = 1e-4;          ///< b, s
   double gravity = 9.81;                     ///< m/s²
-  double time_step = 5e-4;                   ///< s, structural (and coupling) step
+  double time_step = 1e-3;                   ///< s, structural (and coupling) step
   double hht_alpha = 0.0;                    ///< α of HHT-α, in [−1/3, 0]
   int section_first = -1, section_last = -1;  ///< analysis section: spans first..last (1-based); −1: default
   /// InvalidArgument naming the offending value.
