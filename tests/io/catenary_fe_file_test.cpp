@@ -55,7 +55,7 @@ std::string replace(std::string text, const std::string& from, const std::string
 }  // namespace
 
 TEST(FeCatenaryFile, TheBundledLineHoldsTheBenchmarkTypeData) {
-  const std::string path = testing::model_path("catenary-fe.yaml");
+  const std::string path = inerta::testing::model_path("catenary-fe.yaml");
   EXPECT_EQ(io::file_kind(path), io::FileKind::Catenary);
   const catenary::FeCatenaryData d = io::read_fe_catenary_data(path);
   EXPECT_EQ(d.span, 55);
@@ -216,7 +216,7 @@ TEST(FeCatenaryFile, EveryErrorNamesTheFileLineAndKey) {
 }
 
 TEST(FeCatenaryFile, OtherTypesKeepTheirFormatAndPointAtTheFiniteElementType) {
-  const std::string lumped = testing::model_path("catenary.yaml");
+  const std::string lumped = inerta::testing::model_path("catenary.yaml");
   try {
     io::read_fe_catenary_data(lumped);
     FAIL();
