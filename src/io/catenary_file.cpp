@@ -155,14 +155,13 @@ struct FeField {
   const char* unit;
   bool required;
   bool integer;
-  double (*get)(const catenary::FeCatenaryData&);
   void (*set)(catenary::FeCatenaryData&, double);
 };
 
-#define INERTA_FE_FIELD(sec, key, unit, req, integer, member)                                        \
-  FeField {                                                                                         \
-    sec, key, unit, req, integer, [](const catenary::FeCatenaryData& d) { return double(d.member); }, \
-        [](catenary::FeCatenaryData& d, double v) { d.member = static_cast<decltype(d.member)>(v); }  \
+#define INERTA_FE_FIELD(sec, key, unit, req, integer, member) \
+  FeField {                                                     \
+    sec, key, unit, req, integer,                               \
+        [](catenary::FeCatenaryData& d, double v) { d.member = static_cast<decltype(d.member)>(v); } \
   }
 const std::vector<FeField>& fe_fields() {
   static const std::vector<FeField> f{

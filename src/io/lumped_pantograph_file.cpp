@@ -106,6 +106,11 @@ pantograph::LumpedPantographData read_lumped_pantograph_data(const YAML::Node& r
     const std::string& p = e.parameter();
     if (p.rfind("aerodynamic.", 0) == 0)
       rd.fail(aero, "lumped pantograph's aerodynamic uplift", InvalidArgument("", p.substr(12), e.problem()));
+    if (const auto open = p.find('['); open != std::string::npos) {  // "masses[1]": at the item, named with its index
+      const YAML::Node list = lp[p.substr(0, open)];
+      const auto i = std::stoul(p.substr(open + 1));
+      if (list.IsSequence() && i < list.size()) rd.fail(list[i], p, fmt::format("{} in lumped pantograph", e.problem()));
+    }
     rd.fail(lp, "lumped pantograph", e);
   }
   return d;

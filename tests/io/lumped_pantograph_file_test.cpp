@@ -101,7 +101,7 @@ TEST(LumpedPantographFile, AnOverrideThatMatchesNothingIsAnError) {
   has(error_of(kGood, {"lumped_pantograph.static_uplift=strong"}), "'strong' is not a number");
   has(error_of(kGood, {"lumped_pantograph.static_uplift"}), "expected KEY=VALUE");
   // A value that the override makes non-physical is reported like one in the file.
-  has(error_of(kGood, {"lumped_pantograph.masses[1]=-6"}), "'masses[1]': must be > 0 (kg), got -6");
+  has(error_of(kGood, {"lumped_pantograph.masses[1]=-6"}), "lp.yaml:3: 'masses[1]': must be > 0 (kg), got -6");
 }
 
 TEST(LumpedPantographFile, EveryErrorNamesTheFileLineAndKey) {
@@ -139,7 +139,7 @@ TEST(LumpedPantographFile, EveryErrorNamesTheFileLineAndKey) {
          "lp.yaml:3: 'stiffness': needs one value per mass (3)");
   expect(head + "  masses: [1, 2]\n  stiffness: [1, 2]\n  damping: [1, 2, 3]\n  static_uplift: 1\n",
          "lp.yaml:4: 'damping': needs one value per mass (2)");
-  // non-physical values, at the line of the list item
+  // non-physical values, at the line of the list item (named with its index, from 0)
   expect(head + "  masses:\n    - 7\n    - -6\n  stiffness: [1, 2]\n  damping: [1, 2]\n  static_uplift: 1\n",
          "lp.yaml:4: 'masses[1]': must be > 0 (kg), got -6 in lumped pantograph");
   expect(head + "  masses: [1, .nan]\n  stiffness: [1, 2]\n  damping: [1, 2]\n  static_uplift: 1\n",
