@@ -1,5 +1,6 @@
 // inerta — command-line interface (docs/cli.md).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -22,9 +23,12 @@
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/analysis/modal.hpp"
 #include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
+#include "inerta/io/lumped_fit_file.hpp"
+#include "inerta/io/file_kind.hpp"
 #include "inerta/io/linear_model_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/study_file.hpp"
@@ -78,7 +82,7 @@ void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyR
   fmt::print(to, "\n");
 }
 
-int cmd_check(const std::string& path) {
+int check_model_file(const std::string& path) {
   mbs::Model model = io::load_model(path);
   for (const auto& note : model.notes) fmt::print("note: {}\n", note);
   fmt::print("model: {} ({})\n", model.name, path);
@@ -123,6 +127,56 @@ int cmd_check(const std::string& path) {
   mbs::accelerations(model, 0.0, x, ws);  // throws if the system matrix is singular
   fmt::print("ok\n");
   return 0;
+}
+
+// A catenary file: its key numbers (a finite-element line from its data, without the form-finding).
+int check_catenary(const std::string& path) {
+  const io::CatenaryFile f = io::read_catenary_file(path);
+  fmt::print("catenary: {} ({})\n", f.name, path);
+  if (f.fe) {
+    const catenary::FeCatenaryData& d = *f.fe;
+    const std::size_t n = d.dropper_x.size();
+    fmt::print("type: finite_element (messenger and contact wire as tensioned beams, droppers slack in compression)\n");
+    fmt::print("line: {} spans of {:g} m, length {:g} m, encumbrance {:g} m\n", d.spans, d.span, d.span * d.spans,
+               d.encumbrance);
+    for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
+      fmt::print("{:<13} T = {:g} N, rho A = {:g} kg/m, EI = {:g} N·m², wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n",
+                 std::string(which) + ":", w.tension, w.mass_per_length, w.EI, w.wave_speed(), 3.6 * w.wave_speed());
+    fmt::print("droppers: {} a span, {} in all; EA = {:g} N, {:g} kg/m, clamps {:g} kg (messenger), {:g} kg (contact wire)\n",
+               n, n * static_cast<std::size_t>(d.spans), d.dropper_EA, d.dropper_mass_per_length, d.clamp_mass_messenger,
+               d.clamp_mass_contact);
+    fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg\n", d.support_stiffness, d.support_mass,
+               d.registration_stiffness, d.registration_mass);
+    fmt::print("mesh: element length <= {:g} m (nodes at every dropper and mast)\n", d.element_length);
+    fmt::print("damping: Rayleigh a = {:g} 1/s, b = {:g} s; integration: HHT-alpha, alpha = {:g}, time step {:g} s\n",
+               d.rayleigh_mass, d.rayleigh_stiffness, d.hht_alpha, d.time_step);
+    if (d.section_first > 0)
+      fmt::print("analysis section: spans {} to {}\n", d.section_first, d.section_last);
+    else
+      fmt::print("analysis section: the default (the middle spans, away from the ends)\n");
+  } else {
+    fmt::print("{}\n", f.catenary->describe());
+  }
+  if (f.contact.kind == catenary::Contact::Kind::Penalty)
+    fmt::print("contact: penalty, k_s = {:g} N/m, c_s = {:g} N·s/m\n", f.contact.stiffness, f.contact.damping);
+  else
+    fmt::print("contact: bilateral\n");
+  fmt::print("ok\n");
+  return 0;
+}
+
+// `inerta check FILE`: a model, a lumped pantograph or a catenary file (io::file_kind).
+int cmd_check(const std::string& path) {
+  const io::FileKind kind = io::file_kind(path);
+  if (kind == io::FileKind::Catenary) return check_catenary(path);
+  if (kind == io::FileKind::LumpedPantograph) {
+    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path);
+    fmt::print("lumped pantograph: {} masses, head first: m = [{}] kg, k = [{}] N/m, c = [{}] N·s/m\n", d.mass.size(),
+               fmt::join(d.mass, ", "), fmt::join(d.stiffness, ", "), fmt::join(d.damping, ", "));
+    fmt::print("static uplift {:g} N on the lowest mass; aerodynamic uplift on the head {:g} v² + {:g} v + {:g} N (v in m/s)\n",
+               d.static_uplift, d.aero_a, d.aero_b, d.aero_c);
+  }
+  return check_model_file(path);
 }
 
 // A CSV destination: the file given with --out (created or replaced), or standard output.
@@ -177,7 +231,9 @@ double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6
 // The pantograph with the requested suspension, and the catenary file with its overrides.
 std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::string& path, const CatenaryArgs& c,
                                                                      bool no_centripetal = false) {
-  pantograph::Pantograph p = io::load_pantograph(path);
+  std::vector<std::string> panto_sets, cat_sets;  // --set lumped_pantograph.* belongs to the pantograph file
+  for (const std::string& o : c.sets) (o.rfind("lumped_pantograph.", 0) == 0 ? panto_sets : cat_sets).push_back(o);
+  pantograph::Pantograph p = io::load_pantograph(path, panto_sets);
   if (no_centripetal) p.model.options.centripetal = false;
   if (!c.suspension.empty()) {
     network::Network net;
@@ -190,7 +246,7 @@ std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::
   } else if (!c.params.empty()) {
     throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
   }
-  io::CatenaryFile cat = io::load_catenary(c.catenary, c.sets);
+  io::CatenaryFile cat = io::load_catenary(c.catenary, cat_sets);
   if (!c.contact.empty())
     cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
   return {p, cat};
@@ -202,7 +258,9 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
   app->add_option("--unit", c.unit, "Speed unit: ms (m/s) or kmh")
       ->check(CLI::IsMember({"ms", "kmh"}))
       ->capture_default_str();
-  app->add_option("--set", c.sets, "Override a catenary value, e.g. catenary.kc0=5000 (repeatable)");
+  app->add_option("--set", c.sets,
+                  "Override a catenary value, e.g. catenary.kc0=5000, or a lumped pantograph's, e.g. "
+                  "lumped_pantograph.static_uplift=90 (repeatable)");
   app->add_option("--contact", c.contact, "bilateral (thesis) or penalty; default: the catenary file's")
       ->check(CLI::IsMember({"bilateral", "penalty"}));
   app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
@@ -266,6 +324,64 @@ void write_csv(std::FILE* out, const std::vector<const analysis::TimeHistory*>& 
   }
 }
 
+// A finite line (the finite-element catenary): EN 50317 statistics per pantograph, raw and
+// after the 20 Hz low-pass, and the uplift of the supports in the section.
+void print_line_outputs(std::FILE* info, const analysis::CoupledSimulation& r,
+                        const std::vector<catenary::PantographOnLine>& train) {
+  fmt::print(info, "analysis section {:g} … {:g} m (EN 50317 quantities; filtered: zero-phase 4th-order Butterworth "
+                   "low-pass at 20 Hz)\n",
+             r.section.from, r.section.to);
+  fmt::print(info, "  {:<22} {:>8} {:>8} {:>10} {:>10} {:>8} {:>8} {:>7}\n", "pantograph", "mean N", "std N",
+             "Fm+3s N", "Fm-3s N", "max N", "min N", "loss %");
+  for (std::size_t k = 0; k < r.quality.size(); ++k) {
+    const auto& q = r.quality[k];
+    const std::string who = fmt::format("{} (x0 = {:g} m)", k + 1, train[k].x0);
+    for (int f = 0; f < 2; ++f) {
+      const analysis::ContactStatistics& c = f == 0 ? q.raw : q.filtered;
+      fmt::print(info, "  {:<22} {:8.2f} {:8.2f} {:10.2f} {:10.2f} {:8.2f} {:8.2f} {:7.2f}\n",
+                 f == 0 ? who + " raw" : std::string(who.size(), ' ') + " 20 Hz", c.mean, c.std, c.stat_max,
+                 c.stat_min, c.max, c.min, f == 0 ? q.loss_pct : c.loss_pct);
+    }
+    const auto& cs = r.contacts[k];
+    if (cs.lost_samples > 0)
+      fmt::print(info, "  pantograph {}: contact lost in {} samples over the run; first at t = {:.6g} s, x = {:.6g} m\n",
+                 k + 1, cs.lost_samples, cs.first_loss_t, cs.first_loss_x);
+  }
+  double worst = 0, x_worst = 0;
+  for (const auto& u : r.uplift)
+    if (u.max_uplift > worst) worst = u.max_uplift, x_worst = u.x;
+  fmt::print(info, "support uplift in the section: max {:.2f} mm at the support x = {:g} m ({} supports)\n",
+             1e3 * worst, x_worst, r.uplift.size());
+}
+
+// Beside OUT.csv: OUT.supports.csv (uplift of every support over time) and OUT.psd.csv (PSD of each
+// pantograph's contact force in the section).
+void write_line_files(std::FILE* info, const std::string& out, const analysis::CoupledSimulation& r) {
+  const std::string stem = out.size() > 4 && out.ends_with(".csv") ? out.substr(0, out.size() - 4) : out;
+  {
+    OutputFile f(stem + ".supports.csv");
+    std::vector<const analysis::TimeHistory*> hs{&r.supports};
+    write_csv(f.get(), hs, {""});
+  }
+  OutputFile f(stem + ".psd.csv");
+  std::string line = "f";
+  for (std::size_t k = 0; k < r.quality.size(); ++k) line += fmt::format(",S_p{}", k + 1);
+  line += '\n';
+  std::fputs(line.c_str(), f.get());
+  const std::size_t n = r.quality.front().psd.f.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    line.clear();
+    append_number(line, r.quality.front().psd.f[i]);
+    for (const auto& q : r.quality) {
+      line += ',';
+      append_number(line, i < q.psd.S.size() ? q.psd.S[i] : NAN);
+    }
+    line += '\n';
+    std::fputs(line.c_str(), f.get());
+  }
+  fmt::print(info, "wrote {0}.supports.csv (support uplift, m) and {0}.psd.csv (contact-force PSD, N²/Hz)\n", stem);
+}
+
 int cmd_simulate(const SimulateArgs& a) {
   solve::IntegratorOptions opt;
   opt.method = solve::parse_method(a.integrator);
@@ -316,7 +432,11 @@ int cmd_simulate(const SimulateArgs& a) {
     if (a.steady_from >= 0)
       for (std::size_t k = 0; k < r.histories.size(); ++k)
         print_steady(info, a.steady_from, analysis::summarise(r.histories[k], a.steady_from), prefixes[k]);
-    for (std::size_t k = 0; k < r.contacts.size(); ++k) {
+    if (!r.quality.empty()) {
+      print_line_outputs(info, r, train);
+      if (!a.out.empty()) write_line_files(info, a.out, r);
+    }
+    for (std::size_t k = 0; k < r.contacts.size() && r.quality.empty(); ++k) {
       const auto& c = r.contacts[k];
       const analysis::ContactStatistics& cs = c.stats;
       fmt::print(info,
@@ -469,13 +589,22 @@ int cmd_sweep(const SweepArgs& a) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   OutputFile file(a.out);
   std::FILE* out = file.get();
-  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct\n");
+  const bool line = !results.empty() && !results.front().filtered.empty();  // a finite line: EN 50317 columns
+  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}\n",
+             line ? ",f_mean,f_std,f_max,f_min,f_stat_max,f_stat_min,uplift_max_m" : "");
   std::size_t worst = 0;
   int spans_max = 0;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& s = results[i].stats;
-    fmt::print(out, "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}\n", v[i] * 3.6, v[i], s.mean, s.std,
+    fmt::print(out, "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}", v[i] * 3.6, v[i], s.mean, s.std,
                s.max, s.min, s.stat_max, s.stat_min, s.loss_pct);
+    if (line) {
+      const auto& f = results[i].filtered.front();
+      const auto& up = results[i].support_uplift;
+      fmt::print(out, ",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", f.mean, f.std, f.max, f.min, f.stat_max,
+                 f.stat_min, up.empty() ? 0.0 : *std::max_element(up.begin(), up.end()));
+    }
+    fmt::print(out, "\n");
     if (s.std > results[worst].stats.std) worst = i;
     spans_max = std::max(spans_max, results[i].spans);
   }
@@ -483,11 +612,54 @@ int cmd_sweep(const SweepArgs& a) {
   if (a.method == "periodic")
     fmt::print("wall {:.3f} s; periodic steady state by harmonic balance ({} harmonics of the pumping frequency)\n",
                wall, a.harmonics);
+  else if (line)
+    fmt::print("wall {:.2f} s; one pass along the line, statistics over its analysis section (raw, and f_*: after "
+               "the 20 Hz low-pass); uplift_max_m: the largest support uplift over the run\n",
+               wall);
   else
     fmt::print("wall {:.2f} s; statistics over the last 2 spans once σ changed < 0.5 % span to span (up to {} spans)\n",
                wall, spans_max);
   fmt::print("sigma_max = {:.3f} N at {:.4g} km/h ({:.4g} m/s); mean contact force there {:.2f} N\n",
              results[worst].stats.std, v[worst] * 3.6, v[worst], results[worst].stats.mean);
+  return 0;
+}
+
+struct FitArgs {
+  std::string catenary, out, table;
+  int span = 0;
+  std::vector<std::string> sets;
+};
+
+// The lumped catenary of eq. 7.1 from a finite-element one (catenary::fit_lumped).
+int cmd_catenary_fit(const FitArgs& a) {
+  const catenary::FeCatenaryData d = io::read_fe_catenary_data(a.catenary, a.sets);
+  const io::CatenaryFile file = io::read_catenary_file(a.catenary, a.sets);
+  const catenary::FeLine line(d);
+  const catenary::LumpedFit fit = catenary::fit_lumped(line, a.span);
+  const catenary::LumpedCatenary& c = fit.lumped;
+  fmt::print("{}\n", line.describe());
+  // Form-finding of the fitted span: dropper lengths and tensions, against the file's nominal lengths.
+  fmt::print("form-finding, span {}: dropper x (m), unstretched length (m){}, static tension (N)\n", fit.span > 0 ? fit.span : 0,
+             d.nominal_dropper_length.empty() ? "" : " [nominal]");
+  for (const auto& dr : line.droppers()) {
+    if (dr.x < (fit.span - 1) * d.span || dr.x > fit.span * d.span) continue;
+    const auto j = static_cast<std::size_t>(&dr - line.droppers().data()) % d.dropper_x.size();
+    fmt::print("  {:7.2f}  {:.4f}{}  {:7.2f}\n", dr.x, dr.length,
+               d.nominal_dropper_length.empty() ? "" : fmt::format(" [{:.3f}]", d.nominal_dropper_length[j]), dr.tension);
+  }
+  fmt::print("fitted span {} ({:g} … {:g} m): elasticity {:.3f} … {:.3f} mm/N\n", fit.span, (fit.span - 1) * d.span,
+             fit.span * d.span, 1e3 * *std::min_element(fit.elasticity.begin(), fit.elasticity.end()),
+             1e3 * *std::max_element(fit.elasticity.begin(), fit.elasticity.end()));
+  fmt::print("  k_c = [{:.5g}, {:.5g}, {:.5g}, {:.5g}] N/m\n  m_c = [{:.5g}, {:.5g}, {:.5g}, {:.5g}] kg\n"
+             "  c_c = [{:.5g}, {:.5g}, {:.5g}, {:.5g}] N·s/m\n",
+             c.k[0], c.k[1], c.k[2], c.k[3], c.m[0], c.m[1], c.m[2], c.m[3], c.c[0], c.c[1], c.c[2], c.c[3]);
+  fmt::print("  natural frequency (1/2π) sqrt(k_c0/m_c0) = {:.3f} Hz\n", c.natural_frequency());
+  fmt::print("  elasticity fit: max {:.1f} %, rms {:.1f} %; over one dropper spacing: max {:.1f} %, rms {:.1f} %\n",
+             100 * fit.max_elasticity_error, 100 * fit.rms_error, 100 * fit.max_smoothed_error,
+             100 * fit.rms_smoothed_error);
+  io::write_lumped_catenary(a.out, fit, file.contact, a.catenary);
+  fmt::print("wrote {}\n", a.out);
+  if (!a.table.empty()) io::write_fit_table(a.table, fit), fmt::print("wrote {}\n", a.table);
   return 0;
 }
 
@@ -759,8 +931,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string check_model;
-  auto* check = app.add_subcommand("check", "Validate and assemble a model; print bodies, constraints and DOF");
-  check->add_option("model", check_model, "Model file (YAML)")->required();
+  auto* check = app.add_subcommand("check", "Validate a model (print bodies, constraints, DOF), a lumped pantograph or a catenary file");
+  check->add_option("model", check_model, "Model, lumped pantograph or catenary file (YAML)")->required();
 
   // --t-end and --sample default to the model's options; a given value must be positive.
   auto positive = [](const std::string& s) {
@@ -847,6 +1019,17 @@ int main(int argc, char** argv) {
   crs->add_option("--set", ca.sets, "Override a catenary value (repeatable)");
   crs->add_option("--out", ca.out, "CSV file (default: standard output)");
 
+  FitArgs fit_args;
+  auto* cat_cmd = app.add_subcommand("catenary", "Catenary tools");
+  auto* fit = cat_cmd->add_subcommand(
+      "fit", "Fit the lumped catenary of eq. 7.1 to a finite-element catenary; write a lumped catenary file");
+  fit->add_option("catenary", fit_args.catenary, "Finite-element catenary file (YAML)")->required();
+  fit->add_option("--out", fit_args.out, "Lumped catenary file to write (YAML)")->required();
+  fit->add_option("--span", fit_args.span, "Span to fit (1-based; default: the middle span)");
+  fit->add_option("--table", fit_args.table, "Also write the fit along the span (CSV: x, elasticity FE/fit, mass, damping)");
+  fit->add_option("--set", fit_args.sets, "Override a catenary value (repeatable), e.g. messenger.tension=17000");
+  cat_cmd->require_subcommand(1);
+
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
 
   OptimiseArgs oa;
@@ -870,6 +1053,7 @@ int main(int argc, char** argv) {
     if (mds->parsed()) return cmd_modes(ma);
     if (frf->parsed()) return cmd_frf(fa);
     if (crs->parsed()) return cmd_catenary_response(ca);
+    if (fit->parsed()) return cmd_catenary_fit(fit_args);
     if (idn->parsed()) return inerta::cli::run_identify();
     if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {

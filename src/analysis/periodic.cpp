@@ -21,6 +21,13 @@ using cd = std::complex<double>;
 
 std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds, int H) {
+  if (pantograph.aero.active()) {  // the aerodynamic uplift depends on the speed: one linearisation per speed
+    std::vector<SpeedResult> out(speeds.size());
+    tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t s) {
+      out[s] = sweep_periodic(pantograph::at_speed(pantograph, speeds[s]), catenary, contact, {speeds[s]}, H).front();
+    });
+    return out;
+  }
   const catenary::LumpedCatenary* point = catenary.point_model();
   if (!point)
     throw ModelError(fmt::format("the periodic method needs a point model of the catenary (the lumped catenary); the {} "

@@ -1,6 +1,8 @@
 #include "inerta/analysis/simulate.hpp"
 
 #include <algorithm>
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "inerta/error.hpp"
@@ -77,13 +79,29 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   r.span = sys->span();
   const double T = r.span / speed;
   if (o.t_end <= 0 && o.spans < 1) throw InvalidArgument("simulate: at least one span (or a positive t_end)");
-  r.t_end = o.t_end > 0 ? o.t_end : o.spans * T;
+  const bool line = std::isfinite(sys->line_length());  // a finite line: to its end, statistics over its section
+  r.t_end = o.t_end > 0 ? o.t_end : line ? sys->end_time() : o.spans * T;
+  if (line && r.t_end > sys->end_time() + 1e-9)
+    throw InvalidArgument(fmt::format("simulate: t_end = {:g} s runs the leading pantograph off the line (at most {:g} s)",
+                                      r.t_end, sys->end_time()));
   r.sample = o.sample > 0 ? o.sample : T / 400;
   r.window_from = std::max(0.0, r.t_end - o.window_spans * T);
+  if (line) r.section = sys->section();
+  r.support_x = sys->support_x();
+  r.supports.t.clear();
+  for (double x : r.support_x) r.supports.names.push_back(fmt::format("uplift@{:g}", x));
+  r.supports.columns.resize(r.support_x.size());
   const int nc = sys->n_contacts();
   std::vector<std::vector<double>> window(static_cast<std::size_t>(nc));
   r.contacts.resize(static_cast<std::size_t>(nc));
-  for (int c = 0; c < nc; ++c) r.histories.push_back(empty_history(sys->model(sys->contact(c))));
+  for (int c = 0; c < nc; ++c) {
+    TimeHistory h = empty_history(sys->model(sys->contact(c)));
+    if (line) {  // m along the line; m above the wire's static height
+      h.names.push_back("x_contact"), h.names.push_back("wire_uplift");
+      h.columns.resize(h.names.size());
+    }
+    r.histories.push_back(std::move(h));
+  }
   bool acc = false;
   for (int c = 0; c < nc; ++c) acc = acc || needs_acc(sys->model(sys->contact(c)));
   sys->equilibrate();
@@ -93,15 +111,36 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
         [&](const catenary::Sample& s) {
           const auto c = static_cast<std::size_t>(s.contact.index);
           record(r.histories[c], s.model, s.t, s.state, s.ws);
+          if (line) {
+            r.histories[c].columns.back().push_back(s.wire_uplift);
+            r.histories[c].columns[r.histories[c].columns.size() - 2].push_back(s.x_contact);
+          }
+          if (c == 0 && !r.support_x.empty()) {
+            r.supports.t.push_back(s.t);
+            const std::vector<double> u = sys->support_uplift();
+            for (std::size_t j = 0; j < u.size(); ++j) r.supports.columns[j].push_back(u[j]);
+          }
           ContactSummary& cs = r.contacts[c];
           if (s.force <= 0) {
             if (cs.lost_samples++ == 0) cs.first_loss_t = s.t, cs.first_loss_x = s.x_contact;
           }
-          if (s.t >= r.window_from - 1e-9) window[c].push_back(s.force);
+          if (line ? (s.x_contact >= r.section.from && s.x_contact <= r.section.to) : s.t >= r.window_from - 1e-9)
+            window[c].push_back(s.force);
           if (progress && c == 0 && s.t >= next_report) progress(s.t, r.t_end), next_report += r.t_end / 50;
         },
         acc);
   for (int c = 0; c < nc; ++c) r.contacts[static_cast<std::size_t>(c)].stats = statistics(window[static_cast<std::size_t>(c)]);
+  if (line) {  // EN 50317 / 50318 outputs over the section
+    for (int c = 0; c < nc; ++c) {
+      const TimeHistory& h = r.histories[static_cast<std::size_t>(c)];
+      const std::size_t iF = static_cast<std::size_t>(std::find(h.names.begin(), h.names.end(), "F_contact") - h.names.begin());
+      r.quality.push_back(contact_quality(h.t, h.columns[h.columns.size() - 2], h.columns[iF], r.section));
+    }
+    std::vector<std::vector<double>> rows(r.supports.t.size(), std::vector<double>(r.support_x.size()));
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      for (std::size_t j = 0; j < r.support_x.size(); ++j) rows[i][j] = r.supports.columns[j][i];
+    r.uplift = support_uplift(r.supports.t, r.support_x, rows, r.section.from, r.section.to);
+  }
   return r;
 }
 

@@ -26,7 +26,9 @@ std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& p
     if (!std::isfinite(p.x0)) throw InvalidArgument(fmt::format("pantograph {}: position x0 = {}", k + 1, p.x0));
     p.contact.validate();
   }
-  return make_coupled(pantographs, speed);
+  std::vector<PantographOnLine> running = pantographs;  // with each one's aerodynamic uplift at this speed
+  for (PantographOnLine& p : running) p.pantograph = pantograph::at_speed(p.pantograph, speed);
+  return make_coupled(running, speed);
 }
 
 std::unique_ptr<Coupled> Catenary::couple(const pantograph::Pantograph& p, const Contact& contact, double speed) const {

@@ -3,20 +3,24 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/catenary/wire_profile.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/csv_table.hpp"
 #include "inerta/io/yaml_errors.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
+#include "model_reader.hpp"
 
 namespace inerta::io {
 
 namespace {
 
-enum class Type { Lumped, WireProfile };
+enum class Type { Lumped, WireProfile, FiniteElement };
 
 // What a catenary file holds before the catenary object is made (overrides change it).
 struct Parsed {
@@ -24,6 +28,7 @@ struct Parsed {
   std::string name;
   catenary::LumpedCatenary lumped;
   catenary::WireProfile profile;
+  catenary::FeCatenaryData fe;
   catenary::Contact contact;
 };
 
@@ -39,11 +44,13 @@ bool set_lumped(catenary::LumpedCatenary& c, const std::string& key, double v) {
 }
 
 // The catenary object; its constructor's InvalidArgument becomes a ModelError naming `where`.
-std::shared_ptr<const catenary::Catenary> make(const Parsed& p, const std::string& where) {
+// The finite-element catenary is made only if `fe` (its data are checked by read_fe).
+std::shared_ptr<const catenary::Catenary> make(const Parsed& p, const std::string& where, bool fe = false) {
   try {
     p.contact.validate();
     if (p.type == Type::Lumped) return std::make_shared<catenary::Lumped>(p.lumped);
-    return std::make_shared<catenary::WireProfileCatenary>(p.profile);
+    if (p.type == Type::WireProfile) return std::make_shared<catenary::WireProfileCatenary>(p.profile);
+    return fe ? std::make_shared<catenary::FeCatenary>(p.fe) : nullptr;
   } catch (const InvalidArgument& e) {
     throw ModelError(fmt::format("{}: {}", where, e.what()));
   }
@@ -139,6 +146,257 @@ void read_contact(const std::string& path, const YAML::Node& ct, catenary::Conta
   }
 }
 
+// Finite-element catenary (type: finite_element) -----------------------------------------------
+// One table drives the reading of every number, the overrides and the messages: section, key,
+// unit, required (in its section), whole number, and where the value goes.
+struct FeField {
+  const char* section;
+  const char* key;
+  const char* unit;
+  bool required;
+  bool integer;
+  void (*set)(catenary::FeCatenaryData&, double);
+};
+
+#define INERTA_FE_FIELD(sec, key, unit, req, integer, member) \
+  FeField {                                                     \
+    sec, key, unit, req, integer,                               \
+        [](catenary::FeCatenaryData& d, double v) { d.member = static_cast<decltype(d.member)>(v); } \
+  }
+const std::vector<FeField>& fe_fields() {
+  static const std::vector<FeField> f{
+      INERTA_FE_FIELD("line", "span", "m", true, false, span),
+      INERTA_FE_FIELD("line", "spans", "a whole number", true, true, spans),
+      INERTA_FE_FIELD("line", "encumbrance", "m", true, false, encumbrance),
+      INERTA_FE_FIELD("line", "gravity", "m/s²", false, false, gravity),
+      INERTA_FE_FIELD("messenger", "tension", "N", true, false, messenger.tension),
+      INERTA_FE_FIELD("messenger", "mass_per_length", "kg/m", true, false, messenger.mass_per_length),
+      INERTA_FE_FIELD("messenger", "EI", "N·m²", false, false, messenger.EI),
+      INERTA_FE_FIELD("contact_wire", "tension", "N", true, false, contact_wire.tension),
+      INERTA_FE_FIELD("contact_wire", "mass_per_length", "kg/m", true, false, contact_wire.mass_per_length),
+      INERTA_FE_FIELD("contact_wire", "EI", "N·m²", false, false, contact_wire.EI),
+      INERTA_FE_FIELD("droppers", "EA", "N", true, false, dropper_EA),
+      INERTA_FE_FIELD("droppers", "mass_per_length", "kg/m", false, false, dropper_mass_per_length),
+      INERTA_FE_FIELD("droppers", "clamp_mass_messenger", "kg", false, false, clamp_mass_messenger),
+      INERTA_FE_FIELD("droppers", "clamp_mass_contact", "kg", false, false, clamp_mass_contact),
+      INERTA_FE_FIELD("supports", "stiffness", "N/m", true, false, support_stiffness),
+      INERTA_FE_FIELD("supports", "mass", "kg", false, false, support_mass),
+      INERTA_FE_FIELD("registration", "stiffness", "N/m", true, false, registration_stiffness),
+      INERTA_FE_FIELD("registration", "mass", "kg", false, false, registration_mass),
+      INERTA_FE_FIELD("mesh", "element_length", "m", false, false, element_length),
+      INERTA_FE_FIELD("damping", "rayleigh_mass", "1/s", false, false, rayleigh_mass),
+      INERTA_FE_FIELD("damping", "rayleigh_stiffness", "s", false, false, rayleigh_stiffness),
+      INERTA_FE_FIELD("integration", "time_step", "s", false, false, time_step),
+      INERTA_FE_FIELD("integration", "alpha", "HHT-α, −1/3 … 0", false, false, hht_alpha),
+  };
+  return f;
+}
+#undef INERTA_FE_FIELD
+
+// The lists of the droppers section: x, presag, nominal_length (m).
+std::vector<double>* fe_list(catenary::FeCatenaryData& d, const std::string& key) {
+  if (key == "x") return &d.dropper_x;
+  if (key == "presag") return &d.presag;
+  if (key == "nominal_length") return &d.nominal_dropper_length;
+  return nullptr;
+}
+
+const std::vector<std::string> kFeSections{"line",         "messenger", "contact_wire", "droppers",
+                                           "supports",     "registration", "mesh",      "damping",
+                                           "integration",  "section",   "contact"};
+const std::set<std::string> kFeRequired{"line", "messenger", "contact_wire", "droppers", "supports", "registration"};
+
+std::vector<std::string> fe_keys(const std::string& section) {
+  std::vector<std::string> k;
+  if (section == "droppers") k = {"x", "presag", "nominal_length"};
+  if (section == "section") k = {"spans"};
+  for (const FeField& f : fe_fields())
+    if (section == f.section) k.emplace_back(f.key);
+  return k;
+}
+
+// What the file's sections hold, for the message of a missing key.
+std::string fe_section_help(const std::string& section) {
+  std::string s;
+  for (const std::string& k : fe_keys(section)) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
+// A complaint of FeCatenaryData::validate() ("finite-element catenary: <section>: <parameter>: …")
+// at the line of the key it names; `root` is the file's top level.
+[[noreturn]] void fe_fail(const detail::Reader& rd, const YAML::Node& root, const InvalidArgument& e) {
+  const std::string prefix = "finite-element catenary: ", what = e.what();
+  std::string section;
+  if (what.rfind(prefix, 0) == 0) section = what.substr(prefix.size(), what.find(": ", prefix.size()) - prefix.size());
+  std::string key = e.parameter();
+  if (section == "damping" && (key == "mass" || key == "stiffness")) key = "rayleigh_" + key;
+  long index = -1;
+  std::string shown = key;
+  if (const auto open = key.find('['); open != std::string::npos && key.back() == ']') {
+    index = std::stol(key.substr(open + 1));
+    key.resize(open);
+  }
+  YAML::Node at = root;
+  if (const YAML::Node s = root[section]; !section.empty() && s.IsDefined()) {
+    at.reset(s);
+    if (const YAML::Node k = s.IsMap() ? s[key] : YAML::Node(); k.IsDefined()) {
+      at.reset(k);
+      if (index >= 0 && k.IsSequence() && static_cast<std::size_t>(index) < k.size()) {
+        const YAML::Node item = k[static_cast<std::size_t>(index)];
+        at.reset(item);
+      }
+    }
+  }
+  rd.fail(at, shown.empty() ? section : shown,
+          fmt::format("{}{}", e.problem(), section.empty() ? "" : " in " + section));
+}
+
+std::vector<double> fe_numbers(const detail::Reader& rd, const YAML::Node& n, const std::string& key) {
+  if (!n.IsSequence()) rd.fail(n, key, "expected a list of numbers (m), one per dropper of a span");
+  std::vector<double> v;
+  for (const auto& item : n) v.push_back(rd.number(item, key));
+  return v;
+}
+
+int fe_whole(const detail::Reader& rd, const YAML::Node& n, const std::string& key, double v) {
+  if (!(std::abs(v) < 1e9) || v != std::floor(v)) rd.fail(n, key, fmt::format("expected a whole number, got {}", v));
+  return static_cast<int>(v);
+}
+
+void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
+  const detail::Reader rd(path);
+  std::vector<std::string> top{"name", "type"};
+  top.insert(top.end(), kFeSections.begin(), kFeSections.end());
+  rd.keys(root, "a finite-element catenary file", top);
+  catenary::FeCatenaryData& d = c.fe;
+  // Masses the file does not give are absent (not the benchmark's values, FeCatenaryData's defaults).
+  d.dropper_mass_per_length = d.clamp_mass_messenger = d.clamp_mass_contact = 0;
+  d.support_mass = d.registration_mass = 0;
+  d.messenger.EI = d.contact_wire.EI = 0;
+  for (const std::string& s : kFeSections) {
+    const YAML::Node sec = root[s];
+    if (!sec.IsDefined() || sec.IsNull()) {
+      if (kFeRequired.count(s))
+        rd.fail(root, s, fmt::format("missing in a finite-element catenary file; expected {}: {{{}}}", s,
+                                     fe_section_help(s)));
+      continue;
+    }
+    if (s == "contact") continue;  // read_contact
+    rd.keys(sec, s, fe_keys(s));
+  }
+  for (const FeField& f : fe_fields()) {
+    const YAML::Node sec = root[f.section];
+    if (!sec.IsDefined() || sec.IsNull()) continue;
+    const YAML::Node n = sec[f.key];
+    if (!n.IsDefined() || n.IsNull()) {
+      if (f.required) rd.fail(sec, f.key, fmt::format("missing in {}; expected a number ({})", f.section, f.unit));
+      continue;
+    }
+    const double v = rd.number(n, f.key);
+    f.set(d, f.integer ? fe_whole(rd, n, f.key, v) : v);
+  }
+  const YAML::Node drop = root["droppers"];
+  for (const char* k : {"x", "presag", "nominal_length"}) {
+    const YAML::Node n = drop[k];
+    if (!n.IsDefined() || n.IsNull()) {
+      if (std::string(k) != "nominal_length")
+        rd.fail(drop, k,
+                fmt::format("missing in droppers; expected a list of {} (m), one per dropper of a span",
+                            std::string(k) == "x" ? "positions from the span's first mast" : "contact-wire pre-sags, positive down"));
+      continue;
+    }
+    *fe_list(d, k) = fe_numbers(rd, n, k);
+  }
+  if (const YAML::Node sec = root["section"]; sec.IsDefined() && !sec.IsNull()) {
+    const YAML::Node n = rd.need(sec, "spans", "section");
+    if (!n.IsSequence() || n.size() != 2) rd.fail(n, "spans", "expected [first, last]: the spans of the analysis section (1-based)");
+    d.section_first = fe_whole(rd, n[0], "spans", rd.number(n[0], "spans"));
+    d.section_last = fe_whole(rd, n[1], "spans", rd.number(n[1], "spans"));
+  }
+  c.contact = catenary::Contact{catenary::Contact::Kind::Penalty, 50e3, 0.0};
+  if (const YAML::Node ct = root["contact"]; ct.IsDefined()) {
+    rd.keys(ct, "contact", {"type", "stiffness", "damping"});
+    read_contact(path, ct, c.contact);
+    if (c.contact.kind != catenary::Contact::Kind::Penalty)
+      rd.fail(ct["type"], "type",
+              "the finite-element catenary takes a penalty contact (unilateral: the head may leave the wire); "
+              "expected penalty");
+  }
+  try {
+    d.validate();
+  } catch (const InvalidArgument& e) {
+    fe_fail(rd, root, e);
+  }
+}
+
+// "section.key=value" on a finite-element catenary; returns false if no field has that name.
+bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string key, const std::string& value,
+            const std::string& o) {
+  auto number = [&]() {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != value.size()) throw ModelError(fmt::format("--set '{}': '{}' is not a number", o, value));
+    return v;
+  };
+  auto whole = [&](double v) {
+    if (!(std::abs(v) < 1e9) || v != std::floor(v))
+      throw ModelError(fmt::format("--set '{}': expected a whole number, got {}", o, value));
+    return static_cast<int>(v);
+  };
+  if (section == "section" && key == "spans") {
+    const auto colon = value.find(':');
+    if (colon == std::string::npos)
+      throw ModelError(fmt::format("--set '{}': expected section.spans=FIRST:LAST, e.g. section.spans=4:7", o));
+    const std::string all = value;
+    const std::string first = all.substr(0, colon), last = all.substr(colon + 1);
+    auto parse = [&](const std::string& t) {
+      std::size_t used = 0;
+      int v = 0;
+      try {
+        v = std::stoi(t, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != t.size())
+        throw ModelError(fmt::format("--set '{}': expected section.spans=FIRST:LAST with whole numbers", o));
+      return v;
+    };
+    d.section_first = parse(first);
+    d.section_last = parse(last);
+    return true;
+  }
+  if (section == "droppers") {
+    if (const auto open = key.find('['); open != std::string::npos && key.back() == ']') {
+      const std::string idx = key.substr(open + 1, key.size() - open - 2);
+      std::vector<double>* list = fe_list(d, key.substr(0, open));
+      if (!list) return false;
+      if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos || std::stoul(idx) >= list->size())
+        throw ModelError(fmt::format("--set '{}': droppers.{} has {} value(s), index 0 to {}", o, key.substr(0, open),
+                                     list->size(), static_cast<long>(list->size()) - 1));
+      (*list)[std::stoul(idx)] = number();
+      return true;
+    }
+  }
+  for (const FeField& f : fe_fields())
+    if (section == f.section && key == f.key) {
+      const double v = number();
+      f.set(d, f.integer ? whole(v) : v);
+      return true;
+    }
+  return false;
+}
+
+std::string fe_override_help() {
+  std::string s;
+  for (const FeField& f : fe_fields()) s += fmt::format("{}.{}, ", f.section, f.key);
+  return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, ";
+}
+
 void apply_override(Parsed& c, const std::string& o) {
   auto dot = o.find('.'), eq = o.find('=');
   if (dot == std::string::npos || eq == std::string::npos || eq < dot)
@@ -153,9 +411,24 @@ void apply_override(Parsed& c, const std::string& o) {
   } catch (const std::exception&) {
     is_number = false;
   }
+  if (c.type == Type::FiniteElement && section != "contact") {
+    if (!set_fe(c.fe, section, key, value, o))
+      throw ModelError(fmt::format("--set '{}': unknown key; expected {}contact.type, contact.stiffness, contact.damping",
+                                   o, fe_override_help()));
+    try {
+      c.fe.validate();
+    } catch (const InvalidArgument& e) {
+      throw ModelError(fmt::format("--set '{}': {}", o, e.what()));
+    }
+    return;
+  }
   if (section == "contact" && key == "type") {
     if (value != "bilateral" && value != "penalty")
       throw ModelError(fmt::format("--set '{}': expected contact.type=bilateral or penalty", o));
+    if (c.type == Type::FiniteElement && value == "bilateral")
+      throw ModelError(fmt::format("--set '{}': the finite-element catenary takes a penalty contact (unilateral: the "
+                                   "head may leave the wire); expected contact.type=penalty",
+                                   o));
     c.contact.kind = value == "bilateral" ? catenary::Contact::Kind::Bilateral : catenary::Contact::Kind::Penalty;
     return;
   }
@@ -178,43 +451,75 @@ void apply_override(Parsed& c, const std::string& o) {
                                                       : "profile.span, "));
 }
 
-CatenaryFile read_catenary(const std::string& path, const std::vector<std::string>& overrides) {
+CatenaryFile read_catenary(const std::string& path, const std::vector<std::string>& overrides, bool make_fe) {
   const YAML::Node loaded = yaml_load_file(path, "catenary file");
   const YAML::Node& root = loaded;
-  if (!root.IsMap()) yaml_fail(path, root, "", "expected a mapping with 'catenary' (or 'profile') and optional 'contact'");
+  if (!root.IsMap())
+    yaml_fail(path, root, "", "expected a mapping with 'catenary' (or 'profile', or type: finite_element) and optional 'contact'");
   Parsed c;
   if (const YAML::Node t = root["type"]; t.IsDefined()) {
     const std::string type = t.IsScalar() ? t.Scalar() : "";
     if (type == "wire_profile")
       c.type = Type::WireProfile;
+    else if (type == "finite_element")
+      c.type = Type::FiniteElement;
     else if (type != "lumped")
-      yaml_fail(path, t, "type", "expected lumped (the lumped catenary, eq. 7.1) or wire_profile");
-  }
-  const char* body = c.type == Type::Lumped ? "catenary" : "profile";
-  for (auto it = root.begin(); it != root.end(); ++it) {
-    std::string k = it->first.as<std::string>();
-    if (k != "name" && k != "type" && k != body && k != "contact")
-      yaml_fail(path, it->first, k, fmt::format("unknown key; expected name, type, {}, contact", body));
+      yaml_fail(path, t, "type",
+                "expected lumped (the lumped catenary, eq. 7.1), wire_profile (a rigid wire of given heights) or "
+                "finite_element (messenger, contact wire and droppers)");
   }
   c.name = root["name"].IsDefined() ? root["name"].as<std::string>() : path;
-  if (c.type == Type::Lumped)
-    read_lumped(path, root["catenary"], c);
-  else
-    read_profile(path, root["profile"], c);
-  if (const YAML::Node ct = root["contact"]; ct.IsDefined()) read_contact(path, ct, c.contact);
-  make(c, path);  // the file's own values are valid
+  if (c.type == Type::FiniteElement) {
+    read_fe(path, root, c);
+  } else {
+    const char* body = c.type == Type::Lumped ? "catenary" : "profile";
+    std::set<std::string> seen;
+    for (auto it = root.begin(); it != root.end(); ++it) {
+      std::string k = it->first.as<std::string>();
+      if (!seen.insert(k).second) yaml_fail(path, it->first, k, "duplicate key; give each key once");
+      const bool fe_section = std::find(kFeSections.begin(), kFeSections.end(), k) != kFeSections.end() && k != "contact";
+      if (k != "name" && k != "type" && k != body && k != "contact")
+        yaml_fail(path, it->first, k,
+                  fmt::format("unknown key; expected name, type, {}, contact{}", body,
+                              fe_section ? " (a finite-element catenary needs type: finite_element)" : ""));
+    }
+    if (c.type == Type::Lumped)
+      read_lumped(path, root["catenary"], c);
+    else
+      read_profile(path, root["profile"], c);
+    if (const YAML::Node ct = root["contact"]; ct.IsDefined()) read_contact(path, ct, c.contact);
+    make(c, path);  // the file's own values are valid
+  }
   for (const std::string& o : overrides) apply_override(c, o);
-  return {c.name, make(c, overrides.empty() ? path : path + " (after --set)"), c.contact};
+  CatenaryFile f{c.name, make(c, overrides.empty() ? path : path + " (after --set)", make_fe), c.contact, std::nullopt};
+  if (c.type == Type::FiniteElement) f.fe = c.fe;
+  return f;
 }
-}  // namespace
 
-CatenaryFile load_catenary(const std::string& path, const std::vector<std::string>& overrides) {
+CatenaryFile guarded(const std::string& path, const std::vector<std::string>& overrides, bool make_fe) {
   try {
-    return read_catenary(path, overrides);
+    return read_catenary(path, overrides, make_fe);
   } catch (const YAML::Exception& e) {  // a wrong node type (a list where a name belongs, ...)
     throw ModelError(fmt::format("{}:{}: {}; expected the catenary file format of docs/model-format.md", path,
                                  e.mark.line + 1, e.msg));
   }
+}
+}  // namespace
+
+CatenaryFile load_catenary(const std::string& path, const std::vector<std::string>& overrides) {
+  return guarded(path, overrides, true);
+}
+
+CatenaryFile read_catenary_file(const std::string& path, const std::vector<std::string>& overrides) {
+  return guarded(path, overrides, false);
+}
+
+catenary::FeCatenaryData read_fe_catenary_data(const std::string& path, const std::vector<std::string>& overrides) {
+  CatenaryFile f = read_catenary_file(path, overrides);
+  if (!f.fe)
+    throw ModelError(fmt::format("{}: not a finite-element catenary file (expected type: finite_element); it is a {}",
+                                 path, f.catenary->describe()));
+  return *f.fe;
 }
 
 }  // namespace inerta::io

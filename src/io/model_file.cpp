@@ -6,6 +6,8 @@
 //   element_registry.hpp     type name → {accepted keys, builder}, for forces, joints and outputs
 //   model_options.cpp, model_bodies.cpp, model_joints.cpp, model_forces.cpp, model_outputs.cpp,
 //   model_pantograph.cpp, model_overrides.cpp
+// A file whose top level has `lumped_pantograph:` is a lumped n-mass pantograph instead
+// (lumped_pantograph_file.{hpp,cpp}).
 #include "inerta/io/model_file.hpp"
 
 #include <fmt/format.h>
@@ -16,6 +18,7 @@
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/assembly.hpp"
+#include "lumped_pantograph_file.hpp"
 #include "model_loader.hpp"
 
 namespace inerta::io {
@@ -30,6 +33,14 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
     root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", source, e.mark.line + 1, e.msg));
+  }
+  if (detail::is_lumped_pantograph(root)) {  // a lumped n-mass pantograph (lumped_pantograph_file.cpp)
+    try {
+      if (!overrides.empty()) detail::apply_lumped_overrides(root, overrides, source);
+      return detail::read_lumped_pantograph(root, source);
+    } catch (const YAML::Exception& e) {
+      throw ModelError(fmt::format("{}:{}: {}", source, e.mark.line + 1, e.msg));
+    }
   }
   if (!overrides.empty()) detail::apply_overrides(root, overrides, source);
   detail::Loader ld{detail::Reader(source), {}};
@@ -65,7 +76,7 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
   } catch (const YAML::Exception& e) {  // safety net: no yaml-cpp exception leaves without file:line
     throw ModelError(fmt::format("{}:{}: {}", source, e.mark.line + 1, e.msg));
   }
-  return {std::move(ld.model), panto.first, panto.second};
+  return {std::move(ld.model), panto.first, panto.second, {}};
 }
 
 std::string read_text(const std::string& path) {
@@ -108,6 +119,24 @@ pantograph::Pantograph load_model_file(const std::string& path, const std::vecto
 
 pantograph::Pantograph load_pantograph(const std::string& path, const std::vector<std::string>& overrides) {
   return parse_pantograph(read_text(path), path, overrides);
+}
+
+pantograph::LumpedPantographData load_lumped_pantograph_data(const std::string& path,
+                                                             const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(read_text(path));
+  } catch (const YAML::ParserException& e) {
+    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+  }
+  if (!detail::is_lumped_pantograph(root))
+    throw ModelError(fmt::format("{}: not a lumped pantograph file (expected a top-level 'lumped_pantograph:')", path));
+  try {
+    if (!overrides.empty()) detail::apply_lumped_overrides(root, overrides, path);
+    return detail::read_lumped_pantograph_data(root, path);
+  } catch (const YAML::Exception& e) {
+    throw ModelError(fmt::format("{}:{}: {}", path, e.mark.line + 1, e.msg));
+  }
 }
 
 }  // namespace inerta::io

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "inerta/io/model_file.hpp"
+#include "lumped_pantograph_file.hpp"
 #include "model_loader.hpp"
 
 namespace inerta::io {
@@ -103,6 +104,7 @@ std::optional<double> model_value(const std::string& text, const std::string& so
   } catch (const YAML::ParserException& e) {
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", source, e.mark.line + 1, e.msg));
   }
+  if (detail::is_lumped_pantograph(root)) return detail::lumped_value(root, source, key);
   detail::Slot s = detail::locate(root, key, [&](const std::string& what) {
     throw ModelError(fmt::format("{}: parameter '{}': {}", source, key, what));
   });

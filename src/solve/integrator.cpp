@@ -89,19 +89,9 @@ void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(fmt::format("SUNDIALS: {} failed (flag {})", what, flag));
 }
 
-}  // namespace
-
-RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_end, double dt_sample,
-                   const IntegratorOptions& opt, const Observer& observer, bool observer_needs_accelerations) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const int n = model.n_coords(), nz = model.n_states(), N = 2 * n + nz;
-  if (!(dt_sample > 0)) throw std::invalid_argument("sample interval must be > 0");
-  if (!(t_end >= t0)) throw std::invalid_argument("t_end must be >= t0");
-  if (!(opt.rtol > 0) || !(opt.atol > 0)) throw std::invalid_argument("rtol and atol must be > 0");
-
-  if (x.z.size() != nz) throw std::invalid_argument("state has the wrong number of internal states");
-  Problem p{model, x, mbs::Workspace(model), n, nz, nullptr, {}};
-  Sundials s(opt.method);
+// Creates the SUNDIALS integrator for p at (t0, x) (the vector s.y holds [q; q̇; z]).
+void setup(Sundials& s, Problem& p, const mbs::State& x, double t0, const IntegratorOptions& opt) {
+  const int n = p.n, nz = p.nz, N = 2 * n + nz;
   s.y = N_VNew_Serial(N, s.ctx);
   double* y = N_VGetArrayPointer(s.y);
   Eigen::Map<Eigen::VectorXd>(y, n) = x.q;
@@ -131,6 +121,39 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
     check(ERKStepSetMaxNumSteps(s.mem, opt.max_steps), "ERKStepSetMaxNumSteps");
     if (opt.max_step > 0) check(ERKStepSetMaxStep(s.mem, opt.max_step), "ERKStepSetMaxStep");
   }
+}
+
+void check_arguments(const mbs::Model& model, const mbs::State& x, const IntegratorOptions& opt) {
+  if (!(opt.rtol > 0) || !(opt.atol > 0)) throw std::invalid_argument("rtol and atol must be > 0");
+  if (x.z.size() != model.n_states()) throw std::invalid_argument("state has the wrong number of internal states");
+}
+
+void counters(const Sundials& s, Method method, RunStats& stats) {
+  if (method == Method::Bdf) {
+    CVodeGetNumSteps(s.mem, &stats.steps);
+    CVodeGetNumRhsEvals(s.mem, &stats.rhs_evals);
+    long fe_ls = 0;
+    CVodeGetNumLinRhsEvals(s.mem, &fe_ls);
+    stats.rhs_evals += fe_ls;
+  } else {
+    ERKStepGetNumSteps(s.mem, &stats.steps);
+    ERKStepGetNumRhsEvals(s.mem, &stats.rhs_evals);
+  }
+}
+
+}  // namespace
+
+RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_end, double dt_sample,
+                   const IntegratorOptions& opt, const Observer& observer, bool observer_needs_accelerations) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const int n = model.n_coords(), nz = model.n_states();
+  if (!(dt_sample > 0)) throw std::invalid_argument("sample interval must be > 0");
+  if (!(t_end >= t0)) throw std::invalid_argument("t_end must be >= t0");
+  check_arguments(model, x, opt);
+  Problem p{model, x, mbs::Workspace(model), n, nz, nullptr, {}};
+  Sundials s(opt.method);
+  setup(s, p, x, t0, opt);
+  double* y = N_VGetArrayPointer(s.y);
 
   RunStats stats;
   mbs::Workspace ws(model);  // for the observer and the constraint report
@@ -195,20 +218,62 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
   if (t_end - t_last_sample > eps) sample(t_end, y);  // t_end off the sampling grid
   load_state(y, n, nz, x);
 
-  if (opt.method == Method::Bdf) {
-    CVodeGetNumSteps(s.mem, &stats.steps);
-    CVodeGetNumRhsEvals(s.mem, &stats.rhs_evals);
-    long fe_ls = 0;
-    CVodeGetNumLinRhsEvals(s.mem, &fe_ls);
-    stats.rhs_evals += fe_ls;
-  } else {
-    long fi = 0;
-    ERKStepGetNumSteps(s.mem, &stats.steps);
-    ERKStepGetNumRhsEvals(s.mem, &stats.rhs_evals);
-    (void)fi;
-  }
+  counters(s, opt.method, stats);
   stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   return stats;
+}
+
+// Stepper --------------------------------------------------------------------------------------
+struct Stepper::Impl {
+  Problem p;
+  Sundials s;
+  mbs::State x;
+  double t;
+  Method method;
+  long max_steps;
+  Impl(const mbs::Model& model, const mbs::State& x0, double t0, const IntegratorOptions& opt)
+      : p{model, x0, mbs::Workspace(model), model.n_coords(), model.n_states(), nullptr, {}},
+        s(opt.method),
+        x(x0),
+        t(t0),
+        method(opt.method),
+        max_steps(opt.max_steps) {
+    check_arguments(model, x0, opt);
+    setup(s, p, x0, t0, opt);
+  }
+};
+
+Stepper::Stepper(const mbs::Model& model, const mbs::State& x0, double t0, const IntegratorOptions& options)
+    : impl_(std::make_unique<Impl>(model, x0, t0, options)) {}
+Stepper::~Stepper() = default;
+
+const mbs::State& Stepper::state() const { return impl_->x; }
+double Stepper::time() const { return impl_->t; }
+
+void Stepper::advance(double t_end) {
+  Impl& m = *impl_;
+  if (!(t_end > m.t)) throw std::invalid_argument("Stepper::advance: t_end must be after the current time");
+  double t = m.t;
+  int flag;
+  if (m.method == Method::Bdf) {
+    check(CVodeSetStopTime(m.s.mem, t_end), "CVodeSetStopTime");
+    flag = CVode(m.s.mem, t_end, m.s.y, &t, CV_NORMAL);
+  } else {
+    check(ERKStepSetStopTime(m.s.mem, t_end), "ERKStepSetStopTime");
+    flag = ERKStepEvolve(m.s.mem, t_end, m.s.y, &t, ARK_NORMAL);
+  }
+  if (m.p.error) std::rethrow_exception(m.p.error);
+  if (flag < 0)
+    throw NumericalError(fmt::format("integrator ({}) failed at t = {:.6g} s (flag {}): {}", method_name(m.method), t,
+                                     flag, m.p.solver_message));
+  load_state(N_VGetArrayPointer(m.s.y), m.p.n, m.p.nz, m.x);
+  m.t = t_end;
+}
+
+RunStats Stepper::stats() const {
+  RunStats st;
+  counters(impl_->s, impl_->method, st);
+  return st;
 }
 
 }  // namespace inerta::solve

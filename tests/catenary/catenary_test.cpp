@@ -88,7 +88,7 @@ outputs:
 )";
 
 // The mini model as a pantograph: contact point head.top, rig joint `contact`.
-pantograph::Pantograph on_rig(const mbs::Model& m) { return {m, m.find_marker("head.top"), m.find_joint("contact")}; }
+pantograph::Pantograph on_rig(const mbs::Model& m) { return {m, m.find_marker("head.top"), m.find_joint("contact"), {}}; }
 
 struct Stats {
   double mean, sd;

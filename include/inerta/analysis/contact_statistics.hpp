@@ -37,9 +37,16 @@ struct SpeedResult {
   int spans = 0;                            ///< spans simulated
   double sigma_change = 0;                  ///< last span-to-span relative change of σ (largest over the contacts)
   std::vector<double> t, F;                 ///< contact-force history of the first contact (all spans)
+  /// A finite line: its supports in the analysis section (m along the line) and the largest uplift
+  /// of each over the run, m.
+  std::vector<double> support_x, support_uplift;
+  /// A finite line: each contact's statistics after the 20 Hz low-pass (EN 50317, contact_quality.hpp).
+  std::vector<ContactStatistics> filtered;
 };
 
-/// From the static equilibrium of the coupled system, span by span until σ of every contact over
+/// A finite line (Coupled::line_length): one pass from the static state until the leading
+/// pantograph is 1 m short of the end, statistics of each contact over the analysis section.
+/// Otherwise: from the static equilibrium of the coupled system, span by span until σ of every contact over
 /// one span changes by less than `tolerance` from the previous span, for `settled_spans` spans in a
 /// row (spec/06 §6.1); statistics over the last `window_spans` spans. A bilateral contact whose
 /// force becomes negative throws NumericalError with t and F.

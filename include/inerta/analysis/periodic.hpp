@@ -15,7 +15,8 @@ namespace inerta::analysis {
 /// Contact statistics of the periodic steady state at each speed (m/s), H harmonics of the pumping
 /// frequency. The catenary must have a point model (Catenary::point_model: the lumped catenary),
 /// without mass harmonics m_c1..m_c3 (ModelError otherwise). The linearisation is done once; speeds
-/// are independent solves.
+/// are independent solves. A pantograph with an aerodynamic uplift (Pantograph::aero) is
+/// linearised at each speed with that speed's uplift (pantograph::at_speed).
 std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds,
                                         int harmonics = 8);

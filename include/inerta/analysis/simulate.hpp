@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "inerta/analysis/contact_quality.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/assembly.hpp"
@@ -56,7 +57,7 @@ struct Simulation {
 Simulation simulate(const mbs::Model& model, const SimulateOptions& options, const TimeProgress& progress = {});
 
 struct CoupledOptions {
-  int spans = 12;      ///< run length in spans (t_end = spans · L / v) unless t_end > 0
+  int spans = 12;      ///< run length in spans (t_end = spans · L / v) unless t_end > 0; a finite line: to its end
   double t_end = -1;   ///< s
   double sample = -1;  ///< s; ≤ 0: L / (400 v)
   int window_spans = 2;  ///< contact statistics over the last window_spans spans
@@ -72,10 +73,20 @@ struct ContactSummary {
 };
 
 struct CoupledSimulation {
-  std::vector<TimeHistory> histories;     ///< per contact: the outputs of its multibody model (F_contact last)
+  /// Per contact: the outputs of its multibody model (F_contact among them); on a finite line then
+  /// x_contact (m along the line) and wire_uplift (m, the wire at the contact point above its
+  /// static height).
+  std::vector<TimeHistory> histories;
   std::vector<ContactSummary> contacts;   ///< per contact
   solve::RunStats stats;
   double speed = 0, span = 0, t_end = 0, sample = 0, window_from = 0;
+  /// A finite line: the statistics are over this section (by the contact point's position), the run
+  /// ends before the leading pantograph reaches the end; the supports' uplift (m) over time.
+  catenary::Section section;
+  std::vector<double> support_x;
+  TimeHistory supports;
+  std::vector<ContactQuality> quality;  ///< per contact: EN 50317 statistics raw and filtered, PSD
+  std::vector<SupportUplift> uplift;    ///< the supports in the section: max uplift and when
 };
 
 /// Couples the pantographs to the catenary at `speed` (m/s), starts from the static equilibrium

@@ -31,6 +31,11 @@ struct PantographOnLine {
   Contact contact;  ///< its contact law
 };
 
+/// A stretch of the line, m along it (the analysis section of a finite line).
+struct Section {
+  double from = 0, to = 0;
+};
+
 /// Typed handle of one contact of a coupled system (pantograph k of the list given to couple).
 struct ContactId {
   int index = -1;
@@ -66,10 +71,17 @@ class Coupled {
   virtual const mbs::Model& model(ContactId c) const = 0;
   virtual const mbs::State& state(ContactId c) const = 0;
   virtual double time() const = 0;  ///< current time, s
+  /// A finite line (Catenary::line_length) and its analysis section: runs end before the leading
+  /// pantograph reaches the end; statistics are taken over the section.
+  virtual double line_length() const { return std::numeric_limits<double>::infinity(); }
+  virtual Section section() const { return {0, line_length()}; }
+  /// The time at which the leading pantograph is 1 m short of the end of a finite line (infinite otherwise).
+  virtual double end_time() const { return std::numeric_limits<double>::infinity(); }
   /// Every part to its static equilibrium at t = 0 (the static uplift against the catenary).
   virtual void equilibrate() = 0;
   /// Integrates from time() to t_end, calling `observer` every dt (from time() on, for each
-  /// contact in time order). A bilateral contact whose force becomes negative stops the run with
+  /// contact in time order; a co-simulated catenary with a fixed step h samples every round(dt/h)
+  /// steps). A bilateral contact whose force becomes negative stops the run with
   /// NumericalError (time, speed, force). `accelerations`: the samples' workspaces hold
   /// accelerations and multipliers. Returns the integrator statistics (summed over the parts).
   /// Positions along the line of the supports whose uplift the catenary reports (none by default),
@@ -90,10 +102,7 @@ class Catenary {
   /// Length of the line, m: a run ends when the leading pantograph reaches it (infinite for a
   /// periodic catenary, which runs until its statistics settle).
   virtual double line_length() const { return std::numeric_limits<double>::infinity(); }
-  /// The analysis section of a finite line (EN 50317 statistics are taken there), m along the line.
-  struct Section {
-    double from = 0, to = 0;
-  };
+  /// The analysis section of a finite line (EN 50317 statistics are taken there).
   virtual Section section() const { return {0, line_length()}; }
   /// The catenary without its variation along the line (for modes about a static equilibrium).
   virtual std::shared_ptr<const Catenary> mean() const = 0;

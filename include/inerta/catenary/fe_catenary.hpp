@@ -27,11 +27,13 @@
 // tension would become negative, a contact opens when its force would).
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "inerta/catenary/catenary.hpp"
+#include "inerta/catenary/lumped.hpp"
 
 namespace inerta::catenary {
 
@@ -42,6 +44,10 @@ struct FeWire {
   double EI = 0;               ///< bending stiffness, N·m²
   double wave_speed() const;   ///< sqrt(T/ρA), m/s
 };
+
+/// Element matrices of a tensioned Euler–Bernoulli beam on [w_i, θ_i, w_j, θ_j] (header comment).
+Eigen::Matrix4d beam_stiffness(double EI, double tension, double length);
+Eigen::Matrix4d beam_mass(double mass_per_length, double length);
 
 /// Everything a catenary file gives (docs/model-format.md#finite-element-catenary).
 struct FeCatenaryData {
@@ -64,7 +70,7 @@ struct FeCatenaryData {
   double rayleigh_mass = 0.0125;             ///< a, 1/s
   double rayleigh_stiffness = 1e-4;          ///< b, s
   double gravity = 9.81;                     ///< m/s²
-  double time_step = 5e-4;                   ///< s, structural (and coupling) step
+  double time_step = 1e-3;                   ///< s, structural (and coupling) step
   double hht_alpha = 0.0;                    ///< α of HHT-α, in [−1/3, 0]
   int section_first = -1, section_last = -1;  ///< analysis section: spans first..last (1-based); −1: default
   /// InvalidArgument naming the offending value.
@@ -108,11 +114,17 @@ class FeLine {
   /// Shape of the contact wire at x: the 4 free-DOF indices (−1: fixed) and the Hermite values N,
   /// and their x-derivatives dN. ModelError outside [0, length()].
   struct Shape {
+    int node;  ///< the element's first station
     std::array<int, 4> dofs;
     std::array<double, 4> N, dN;
   };
   Shape contact_shape(double x) const;
   double contact_displacement(const Eigen::VectorXd& u, double x) const;  ///< N(x)ᵀ u
+  Eigen::VectorXd load_vector(double x, double F) const;  ///< F N(x): an upward point force F at x
+  /// Messenger height at station i in the static state, m (encumbrance at the masts).
+  double messenger_height(int node) const { return messenger_y_[static_cast<std::size_t>(node)]; }
+  /// Largest |form-found − nominal| dropper length, m (0 without nominal lengths).
+  double dropper_length_error_max() const;
 
   /// Linear static uplift per newton at x (all droppers taut): N(x)ᵀ K₀⁻¹ N(x), m/N.
   double elasticity(double x) const;
@@ -134,6 +146,7 @@ class FeLine {
   std::vector<int> support_dofs_;
   std::vector<double> y_contact_;  ///< form-found contact-wire heights at the nodes
   std::vector<double> s_contact_;  ///< and slopes
+  std::vector<double> messenger_y_;
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> K_llt_;
   friend class FeIntegrator;
 };
@@ -153,39 +166,74 @@ struct FeLoad {
 /// The line's dynamic state: displacements from the static state, velocities, accelerations.
 struct FeState {
   Eigen::VectorXd u, v, a;
-  std::vector<char> slack;  ///< per dropper
-  Eigen::VectorXd q;        ///< net internal force at this time (for HHT-α)
+  std::vector<char> slack;   ///< per dropper
+  std::vector<char> active;  ///< per penalty load of the last step: in contact
+  Eigen::VectorXd q;         ///< net internal force at this time (HHT-α only)
   double t = 0;
 };
 
-/// HHT-α stepping of one FeLine with a fixed step; holds the factorisation and the cache (a
-/// workspace: one per run).
+/// HHT-α stepping of one FeLine with a fixed step; holds the factorisation and the cache of
+/// columns of its inverse (a workspace: one per run, not shared between threads).
 class FeIntegrator {
  public:
   FeIntegrator(const FeLine& line, double dt, double alpha);
   double dt() const { return h_; }
-  /// A state at rest in the static state under `loads` (prescribed forces or penalty heads).
-  FeState initial(const std::vector<FeLoad>& loads) const;
-  /// One step from s.t to s.t + dt with the loads at the end of the step; `forces` receives the
-  /// force on the wire of each load (N, up; 0 for an open contact). NumericalError if the active
-  /// set does not settle.
+  const FeLine& line() const { return L_; }
+  /// The line at rest in its static equilibrium under upward forces F_k at x_k (droppers free to
+  /// slacken), at time t.
+  FeState initial(const std::vector<double>& x, const std::vector<double>& F, double t = 0) const;
+  /// One step from s.t to s.t + dt() with the loads at the end of the step; `forces` receives the
+  /// upward force on the wire of each load (N; 0 for an open contact). NumericalError (with t) if
+  /// the active set of droppers and contacts does not settle.
   void step(FeState& s, const std::vector<FeLoad>& loads, std::vector<double>& forces);
-  /// Kinetic + elastic energy of the state relative to the static state (droppers as in s.slack).
+  /// Kinetic + elastic energy relative to the static state (droppers as in s.slack), J.
   double energy(const FeState& s) const;
+  /// Wire height (m, absolute) and its vertical velocity (m/s) at the moving point x with speed.
+  double height(const FeState& s, double x) const;
+  double height_rate(const FeState& s, double x, double speed) const;
   long solves() const { return solves_; }
+  long active_set_passes() const { return passes_; }
 
  private:
-  const Eigen::VectorXd& column(int dof);  ///< A⁻¹ e_dof, cached
+  const Eigen::VectorXd& column(int dof);  ///< A⁻¹ e_dof, cached (least recently used evicted)
+  void solve(Eigen::VectorXd& b) const;    ///< b ← A⁻¹ b (banded Cholesky, LAPACK)
   const FeLine& L_;
   double h_, alpha_, beta_, gamma_;
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> A_llt_;
-  std::vector<int> cache_slot_;
+  double c0_, c1_, c2_, c3_, c4_, c5_;
+  int kd_ = 0;                ///< half bandwidth of A
+  std::vector<double> band_;  ///< Cholesky factor of A, LAPACK lower band storage
+  Eigen::SparseMatrix<double> Mw_, Kw_;
+  std::vector<Eigen::VectorXd> contact_z_, dropper_z_;
+  std::vector<int> slot_of_;  ///< per DOF: cache slot or −1
   std::vector<Eigen::VectorXd> cache_;
   std::vector<int> cache_dof_;
-  std::size_t cache_next_ = 0;
-  long solves_ = 0;
-  Eigen::VectorXd r_, x0_, tmp_;
+  std::vector<long> cache_used_;
+  long clock_ = 0;
+  mutable long solves_ = 0;
+  long passes_ = 0;
+  Eigen::VectorXd r_, x0_, w1_, w2_, vt_;
 };
+
+/// The lumped catenary of eq. 7.1 fitted to the line (spec/05 §5.3): along one span, the point
+/// stiffness k(x) = 1/e(x) (e: FeLine::elasticity), the equivalent moving mass
+/// m(x) = gᵀ M g / e², the mass of the static deflection shape g = K₀⁻¹ N(x) under a unit force at
+/// x seen at x (the low-frequency expansion 1/H(ω) ≈ k − m ω² of the point receptance), and the
+/// damping c(x) = gᵀ C g / e² are sampled and expanded in cosines of 2π i x / L, i = 0..3 (x = 0 at
+/// a mast): the coefficients k_ci, m_ci, c_ci of eq. 7.1.
+struct LumpedFit {
+  LumpedCatenary lumped;
+  int span = 0;  ///< the span fitted (1-based)
+  std::vector<double> x;  ///< m from the span's first mast
+  std::vector<double> elasticity, mass, damping;  ///< FE values at x: m/N, kg, N·s/m
+  std::vector<double> fitted_elasticity;          ///< 1 / (lumped k_c at x), m/N
+  double max_elasticity_error = 0;                ///< max |fitted − FE| / FE over x
+  /// The same with the FE elasticity averaged over one dropper spacing around x (the span-scale
+  /// variation that three harmonics can follow; the dropper-scale wiggles they cannot).
+  double max_smoothed_error = 0;
+  double rms_error = 0, rms_smoothed_error = 0;  ///< root-mean-square of the same relative errors
+};
+/// span: 1-based, 0 = the middle span. points: samples along the span (>= 16).
+LumpedFit fit_lumped(const FeLine& line, int span = 0, int points = 220);
 
 /// The finite-element catenary as a catenary type (co-simulated: the line is stepped by
 /// FeIntegrator, each pantograph's multibody model by the multibody integrator; see fe_coupled).

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "inerta/mbs/model.hpp"
+#include "inerta/pantograph/lumped.hpp"
 #include "inerta/pantograph/pantograph.hpp"
 
 namespace inerta::io {
@@ -30,6 +31,14 @@ pantograph::Pantograph parse_model_file(const std::string& text, const std::stri
                                         const std::vector<std::string>& overrides = {});
 pantograph::Pantograph parse_pantograph(const std::string& text, const std::string& source,
                                         const std::vector<std::string>& overrides = {});
+
+/// A file whose top level has `lumped_pantograph:` is a lumped n-mass pantograph
+/// (docs/model-format.md#lumped-pantograph-files): every function above reads it
+/// (pantograph::make_lumped_pantograph), with overrides "lumped_pantograph.KEY=VALUE" (static_uplift,
+/// masses[i], stiffness[i], damping[i], aerodynamic.a|b|c). This gives its data; ModelError if
+/// the file is not one.
+pantograph::LumpedPantographData load_lumped_pantograph_data(const std::string& path,
+                                                             const std::vector<std::string>& overrides = {});
 
 /// The number at an override key ("c2.c", "kf_cf.k", "actuator.params.k") in model text, or
 /// nullopt for a `params` value the file leaves to its layout's default. ModelError as for overrides.

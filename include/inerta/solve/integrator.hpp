@@ -5,6 +5,7 @@
 //   rk:  ARKODE ERKStep, Dormand–Prince 5(4) — explicit, cheaper per step on non-stiff models.
 // The first-order state is y = [q; q̇].
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "inerta/mbs/model.hpp"
@@ -43,5 +44,25 @@ using Observer = std::function<void(double t, const mbs::State& x, const mbs::Wo
 RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_end, double dt_sample,
                    const IntegratorOptions& options, const Observer& observer = {},
                    bool observer_needs_accelerations = true);
+
+/// The same integrator kept alive between calls: for co-simulation, where the model's inputs for
+/// the next interval are known only when the previous one is done (catenary/fe_catenary.hpp).
+/// Each advance stops exactly at t_end (the integrator never evaluates the model beyond it).
+class Stepper {
+ public:
+  Stepper(const mbs::Model& model, const mbs::State& x0, double t0, const IntegratorOptions& options);
+  ~Stepper();
+  Stepper(const Stepper&) = delete;
+  Stepper& operator=(const Stepper&) = delete;
+  /// Integrates from time() to t_end (> time()). NumericalError with the time on failure.
+  void advance(double t_end);
+  const mbs::State& state() const;
+  double time() const;
+  RunStats stats() const;  ///< steps and right-hand-side evaluations so far
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace inerta::solve
