@@ -317,6 +317,17 @@ void bind_analysis(py::module_& m) {
       .def_property_readonly("sample", [](const CoupledResult& r) { return r.sim->sample; }, "s")
       .def_property_readonly("window_from", [](const CoupledResult& r) { return r.sim->window_from; },
                              "s: start of the statistics window")
+      .def_property_readonly("section", [](const CoupledResult& r) { return r.sim->section; },
+                             "a finite line: the statistics' section (m along the line)")
+      .def_property_readonly("support_x", [](const CoupledResult& r) { return copy(r.sim->support_x); },
+                             "a finite line: the supports reported, m")
+      .def_property_readonly("supports", [](const CoupledResult& r) {
+        return History{r.sim, &r.sim->supports, nullptr, r.wall_s};
+      }, "a finite line: the supports' uplift over time (m), a Result")
+      .def_property_readonly("quality", [](const CoupledResult& r) { return r.sim->quality; },
+                             "per pantograph: EN 50317 ContactQuality (raw and filtered statistics, PSD)")
+      .def_property_readonly("uplift", [](const CoupledResult& r) { return r.sim->uplift; },
+                             "the supports in the section: SupportUplift (max uplift, m, and when)")
       .def_property_readonly("wall_s", [](const CoupledResult& r) { return r.wall_s; })
       .def("__repr__", [](const CoupledResult& r) {
         return fmt::format("CoupledResult({} pantograph(s), v = {:.4g} m/s, t_end = {:.4g} s)", r.sim->histories.size(),
@@ -359,6 +370,12 @@ void bind_analysis(py::module_& m) {
       .def_readonly("contacts", &analysis::SpeedResult::contacts, "of every pantograph")
       .def_readonly("spans", &analysis::SpeedResult::spans, "spans simulated")
       .def_readonly("sigma_change", &analysis::SpeedResult::sigma_change, "last span-to-span relative change of σ")
+      .def_property_readonly("support_x", [](const analysis::SpeedResult& s) { return copy(s.support_x); },
+                             "a finite line: supports in the analysis section, m")
+      .def_property_readonly("support_uplift", [](const analysis::SpeedResult& s) { return copy(s.support_uplift); },
+                             "a finite line: the largest uplift of each, m")
+      .def_readonly("filtered", &analysis::SpeedResult::filtered,
+                    "a finite line: each contact's statistics after the 20 Hz low-pass (EN 50317)")
       .def_property_readonly("t", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().t, self); },
                              "s (run_speed only; empty in sweeps)")
       .def_property_readonly("F", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().F, self); },
@@ -486,7 +503,7 @@ void bind_analysis(py::module_& m) {
 
   py::class_<analysis::ModalAnalysis>(m, "ModalAnalysis", "Modes about a static equilibrium (as `inerta modes`).")
       .def_readonly("setting", &analysis::ModalAnalysis::setting, "what the modes are of, in words")
-      .def_property_readonly("model", [](const analysis::ModalAnalysis& a) { return make_model({a.model, -1, -1}); },
+      .def_property_readonly("model", [](const analysis::ModalAnalysis& a) { return make_model(a.model); },
                              "the model that was linearised")
       .def_readonly("equilibrium", &analysis::ModalAnalysis::equilibrium)
       .def_readonly("linear", &analysis::ModalAnalysis::linear)

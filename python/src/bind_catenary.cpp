@@ -8,6 +8,7 @@
 
 #include "common.hpp"
 #include "inerta/catenary/contact.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/catenary/wire_profile.hpp"
 #include "inerta/error.hpp"
@@ -18,6 +19,10 @@ namespace inerta::python {
 CatenaryArg catenary_arg(const py::object& o) {
   if (py::isinstance<io::CatenaryFile>(o)) {
     const auto& f = o.cast<const io::CatenaryFile&>();
+    if (!f.catenary)
+      throw InvalidArgument(fmt::format("catenary file '{}' was read without making its catenary (read_catenary_file); "
+                                        "use load_catenary",
+                                        f.name));
     return {f.catenary, f.contact};
   }
   if (py::isinstance<catenary::Catenary>(o)) return {o.cast<std::shared_ptr<catenary::Catenary>>(), std::nullopt};
@@ -39,6 +44,7 @@ catenary::Contact::Kind kind_of(const std::string& s) {
 std::string type_name(const catenary::Catenary& c) {
   if (dynamic_cast<const catenary::Lumped*>(&c)) return "lumped";
   if (dynamic_cast<const catenary::WireProfileCatenary*>(&c)) return "wire_profile";
+  if (dynamic_cast<const catenary::FeCatenary*>(&c)) return "finite_element";
   int status = 0;
   char* d = abi::__cxa_demangle(typeid(c).name(), nullptr, nullptr, &status);
   std::string n = status == 0 && d ? d : typeid(c).name();
@@ -128,20 +134,29 @@ void bind_catenary(py::module_& m) {
       .def_readwrite("periodic", &catenary::WireProfile::periodic)
       .def_readwrite("span", &catenary::WireProfile::span);
 
+  py::class_<catenary::Section>(m, "Section", "A stretch of the line, m along it; unpacks as (from_, to).")
+      .def(py::init([](double a, double b) { return catenary::Section{a, b}; }), py::arg("from_"), py::arg("to"))
+      .def_readwrite("from_", &catenary::Section::from, "m")
+      .def_readwrite("to", &catenary::Section::to, "m")
+      .def("__len__", [](const catenary::Section&) { return 2; })
+      .def("__getitem__", [](const catenary::Section& s, int i) {
+        if (i == 0 || i == -2) return s.from;
+        if (i == 1 || i == -1) return s.to;
+        throw py::index_error("a Section has two values");
+      })
+      .def("__repr__", [](const catenary::Section& s) { return fmt::format("Section({:g}, {:g})", s.from, s.to); });
+
   py::class_<catenary::Catenary, std::shared_ptr<catenary::Catenary>>(
       m, "Catenary",
       "A catenary of any type (the library's catenary::Catenary interface): lumped, wire profile, and every type "
       "that catenary files can name. Analyses take it with a Contact.")
       .def_property_readonly("type", [](const catenary::Catenary& c) { return type_name(c); },
-                             "'lumped', 'wire_profile', or the C++ class name of another type")
+                             "'lumped', 'wire_profile', 'finite_element', or the C++ class name of another type")
       .def("describe", &catenary::Catenary::describe, "one line with its key numbers")
       .def_property_readonly("span", &catenary::Catenary::span, "m: the period of the line (statistics windows)")
       .def_property_readonly("max_pantographs", &catenary::Catenary::max_pantographs)
       .def_property_readonly("line_length", &catenary::Catenary::line_length, "m (inf for a periodic catenary)")
-      .def("section", [](const catenary::Catenary& c) {
-        const auto s = c.section();
-        return py::make_tuple(s.from, s.to);
-      }, "(from, to), m: the analysis section of a finite line")
+      .def("section", &catenary::Catenary::section, "Section (from_, to; m): the analysis section of a finite line")
       .def("mean", [](const catenary::Catenary& c) { return mutable_ptr(c.mean()); },
            "The catenary without its variation along the line (modes about a static equilibrium).")
       .def("point_model", [](const catenary::Catenary& c) -> py::object {
@@ -164,11 +179,13 @@ void bind_catenary(py::module_& m) {
 
   py::class_<io::CatenaryFile>(m, "CatenaryFile", "A catenary file as read: its name, the catenary and the contact law.")
       .def_readonly("name", &io::CatenaryFile::name)
-      .def_property_readonly("catenary", [](const io::CatenaryFile& f) { return mutable_ptr(f.catenary); })
+      .def_property_readonly("catenary", [](const io::CatenaryFile& f) { return mutable_ptr(f.catenary); },
+                             "the catenary (None after read_catenary_file for a finite-element file)")
       .def_readonly("contact", &io::CatenaryFile::contact)
-      .def("describe", [](const io::CatenaryFile& f) { return f.catenary->describe(); })
+      .def_readonly("fe", &io::CatenaryFile::fe, "type finite_element: the data it was made from, else None")
+      .def("describe", [](const io::CatenaryFile& f) { return f.catenary ? f.catenary->describe() : f.name; })
       .def("__repr__", [](const io::CatenaryFile& f) {
-        return fmt::format("CatenaryFile('{}': {}, {} contact)", f.name, f.catenary->describe(),
+        return fmt::format("CatenaryFile('{}': {}, {} contact)", f.name, f.catenary ? f.catenary->describe() : "not made",
                            catenary::kind_name(f.contact.kind));
       });
   m.def("load_catenary", [](const py::object& path, const py::object& overrides) {
@@ -191,7 +208,7 @@ void bind_catenary(py::module_& m) {
   py::class_<catenary::LumpedCoupling>(m, "LumpedCoupling",
                                        "One pantograph coupled to a lumped catenary: the multibody model with the wire "
                                        "and its typed handles (catenary::couple_lumped).")
-      .def_property_readonly("model", [](const catenary::LumpedCoupling& c) { return make_model({c.model, -1, -1}); })
+      .def_property_readonly("model", [](const catenary::LumpedCoupling& c) { return make_model(c.model); })
       .def_readonly("wire_body", &catenary::LumpedCoupling::wire_body)
       .def_readonly("wire_y", &catenary::LumpedCoupling::wire_y, "index of the wire's vertical coordinate in q")
       .def_readonly("element", &catenary::LumpedCoupling::element, "index of the catenary element in the forces")

@@ -10,7 +10,9 @@
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/catenary/wire_profile.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/file_kind.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/pantograph/lumped.hpp"
 #include "inerta/mbs/applied_forces.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -30,6 +32,12 @@ Model make_model(pantograph::Pantograph p) {
   m.p = std::move(p);
   m.source = m.p.model.source;
   return m;
+}
+
+Model make_model(mbs::Model m) {
+  pantograph::Pantograph p;
+  p.model = std::move(m);
+  return make_model(std::move(p));
 }
 
 Model parse_model_handle(const std::string& text, const std::string& source, const std::vector<std::string>& overrides) {
@@ -425,6 +433,20 @@ void bind_model(py::module_& m) {
                              "index of the head's contact marker (−1: none)")
       .def_property_readonly("rig_joint", [](const Model& h) { return h.p.rig_joint; },
                              "index of the rig joint (−1: none)")
+      .def_property_readonly("aero", [](const Model& h) -> py::object {
+        if (!h.p.aero.active()) return py::none();
+        py::dict d;
+        d["body"] = h.p.aero.body, d["a"] = h.p.aero.a, d["b"] = h.p.aero.b, d["c"] = h.p.aero.c;
+        return d;
+      }, "the aerodynamic uplift a v² + b v + c on the head (N, v in m/s): {'body', 'a', 'b', 'c'}, or None")
+      .def("aero_force", [](const Model& h, double v) { return h.p.aero.active() ? h.p.aero.force(v) : 0.0; },
+           py::arg("speed"), "the aerodynamic uplift at speed v (m/s), N")
+      .def("at_speed", [](const Model& h, double v) {
+        return h.transformed([v](pantograph::Pantograph& p) { p = pantograph::at_speed(p, v); },
+                             fmt::format("at speed {:g} m/s", v));
+      }, py::arg("speed"),
+           "The pantograph running at speed v (m/s): its aerodynamic uplift added as a constant force "
+           "(pantograph::at_speed; Catenary couplings do it themselves).")
       .def("find_body", [](const Model& h, const std::string& n) { return h.model().find_body(n); }, py::arg("name"),
            "index, −1 for 'ground', −2 if unknown")
       .def("find_marker", [](const Model& h, const std::string& n) { return h.model().find_marker(n); },
@@ -536,6 +558,67 @@ void bind_model(py::module_& m) {
     return io::model_value(text, source, key);
   }, py::arg("text"), py::arg("source"), py::arg("key"),
         "The number at an override key in model text (io::model_value), or None.");
+  m.def("at_speed", [](const Model& h, double v) { return py::cast(h).attr("at_speed")(v).cast<Model>(); },
+        py::arg("model"), py::arg("speed"), "Same as Model.at_speed.");
+
+  py::class_<pantograph::LumpedPantographData>(m, "LumpedPantographData",
+                                               "A lumped n-mass pantograph (head first): masses (kg), stiffness (N/m) "
+                                               "and damping (N·s/m) below each mass, the static uplift (N) and the "
+                                               "aerodynamic uplift a v² + b v + c (N).")
+      .def(py::init([](std::vector<double> mass, std::vector<double> k, std::vector<double> c, double F0, double a,
+                       double b, double cc) {
+             pantograph::LumpedPantographData d;
+             d.mass = std::move(mass), d.stiffness = std::move(k), d.damping = std::move(c);
+             d.static_uplift = F0, d.aero_a = a, d.aero_b = b, d.aero_c = cc;
+             return d;
+           }),
+           py::arg("mass"), py::arg("stiffness"), py::arg("damping"), py::arg("static_uplift") = 0.0,
+           py::arg("aero_a") = 0.0, py::arg("aero_b") = 0.0, py::arg("aero_c") = 0.0)
+      .def_readwrite("mass", &pantograph::LumpedPantographData::mass, "kg")
+      .def_readwrite("stiffness", &pantograph::LumpedPantographData::stiffness, "N/m")
+      .def_readwrite("damping", &pantograph::LumpedPantographData::damping, "N·s/m")
+      .def_readwrite("static_uplift", &pantograph::LumpedPantographData::static_uplift, "N")
+      .def_readwrite("aero_a", &pantograph::LumpedPantographData::aero_a, "N·s²/m²")
+      .def_readwrite("aero_b", &pantograph::LumpedPantographData::aero_b, "N·s/m")
+      .def_readwrite("aero_c", &pantograph::LumpedPantographData::aero_c, "N")
+      .def("validate", &pantograph::LumpedPantographData::validate);
+  m.def("make_lumped_pantograph", [](const pantograph::LumpedPantographData& d) {
+    return make_model(pantograph::make_lumped_pantograph(d));
+  }, py::arg("data"), "The lumped pantograph's model (rig joint, contact marker head.cm, outputs y_*, F_contact).");
+  m.def("load_lumped_pantograph_data", [](const py::object& path, const py::object& o) {
+    return io::load_lumped_pantograph_data(path_arg(path), override_strings(o));
+  }, py::arg("path"), py::arg("overrides") = py::none(),
+        "The data of a lumped-pantograph file (load_model reads the file as a model).");
+  m.def("file_kind", [](const py::object& path) {
+    switch (io::file_kind(path_arg(path))) {
+      case io::FileKind::Model: return std::string("model");
+      case io::FileKind::LumpedPantograph: return std::string("lumped_pantograph");
+      case io::FileKind::Catenary: return std::string("catenary");
+    }
+    return std::string("?");
+  }, py::arg("path"), "What an input file is: 'model', 'lumped_pantograph' or 'catenary' (ModelError otherwise).");
+
+  py::class_<solve::Stepper>(m, "Stepper",
+                             "An integrator kept alive between calls (solve::Stepper): advance(t_end) integrates from "
+                             "time to t_end (s), stopping exactly there.")
+      .def(py::init([](const Model& h, const State& x0, double t0, const py::object& integrator) {
+             check_state(h.model(), x0);
+             return std::make_unique<solve::Stepper>(h.model(), x0, t0,
+                                                     integrator_arg(integrator, py::none(), py::none(), py::none(),
+                                                                    py::none()));
+           }),
+           py::arg("model"), py::arg("state"), py::arg("t0") = 0.0, py::arg("integrator") = py::none(),
+           py::keep_alive<1, 2>())
+      .def("advance", [](solve::Stepper& s, double t_end) {
+        run(py::none(), [&](Call&) {
+          s.advance(t_end);
+          return 0;
+        });
+      }, py::arg("t_end"), "NumericalError with the time on failure")
+      .def_property_readonly("state", &solve::Stepper::state)
+      .def_property_readonly("time", &solve::Stepper::time, "s")
+      .def_property_readonly("stats", &solve::Stepper::stats);
+
   m.def("check_model", [](const Model& h) { return mbs::check_model(h.model()); }, py::arg("model"),
         "Same as Model.check().");
 

@@ -172,6 +172,7 @@ struct Model {
 };
 
 Model make_model(pantograph::Pantograph p);  ///< not from a file
+Model make_model(mbs::Model m);              ///< not from a file, no pantograph data
 Model load_model_handle(const std::string& path, const std::vector<std::string>& overrides);
 Model parse_model_handle(const std::string& text, const std::string& source, const std::vector<std::string>& overrides);
 
@@ -231,5 +232,7 @@ void bind_analysis(py::module_& m);
 void bind_optim(py::module_& m);
 void bind_identification(py::module_& m);
 void bind_numerics(py::module_& m);
+void bind_signal(py::module_& m);
+void bind_fe(py::module_& m);
 
 }  // namespace inerta::python

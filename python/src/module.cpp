@@ -73,6 +73,8 @@ PYBIND11_MODULE(_inerta, m) {
   bind_network(m);
   bind_model(m);
   bind_catenary(m);
+  bind_fe(m);
+  bind_signal(m);
   bind_analysis(m);
   bind_optim(m);
   bind_identification(m);
