@@ -86,6 +86,16 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [dt, inerta.fit_actuator_dynamic([dt], 1e4, 0.0, 0.0), inerta.Variable("k")]
     out += [inerta.pattern_search([inerta.Variable("k", 1, 10, False, False)], lambda v: (v[0] - 3) ** 2)]
     out += [inerta.CubicSpline([0, 1, 2], [0, 1, 0])]
+    fe = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 3})
+    out += [fe, fe.catenary, fe.catenary.line, fe.fe, inerta.fit_lumped(fe.catenary, points=32)]
+    out += [inerta.load_lumped_pantograph_data(model("pantograph-3mass.yaml"))]
+    lp = inerta.butterworth_lowpass(20.0, 1000.0)
+    tt = np.arange(2000) / 1000.0
+    FF = 100 + np.sin(2 * np.pi * 3 * tt)
+    out += [lp, inerta.welch(FF, 1000.0), inerta.WelchOptions(), inerta.ContactQualityOptions()]
+    out += [inerta.contact_quality(tt, 10 * tt, FF, 1.0, 15.0)]
+    out += inerta.support_uplift([0.0, 1.0], [5.0], [[0.0], [0.01]], 0, 10)
+    out += [inerta.Stepper(twobar, x), inerta.Section(0, 1)]
     return out
 
 

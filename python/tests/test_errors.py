@@ -49,7 +49,7 @@ def test_yaml_syntax_error(cli, tmp_path):
 def test_missing_file(cli):
     with pytest.raises(inerta.ModelError, match="nothere.yaml: cannot open the model file") as e:
         inerta.load_model("models/nothere.yaml")
-    assert str(e.value) == cli_error(cli, "check", "models/nothere.yaml")
+    assert str(e.value) == cli_error(cli, "simulate", "models/nothere.yaml")
 
 
 def test_bad_override(cli, twobar):
