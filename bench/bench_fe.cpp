@@ -20,7 +20,6 @@ void run_line(benchmark::State& state, const char* model, double kmh, const std:
     auto sys = c.catenary->couple(p, c.contact, kmh / 3.6);
     auto r = analysis::run_speed(*sys, analysis::RunOptions{});
     benchmark::DoNotOptimize(r.stats.std);
-    state.counters["sigma_N"] = r.stats.std;
   }
 }
 }  // namespace

@@ -80,7 +80,7 @@ TEST(FeCatenaryFile, TheBundledLineHoldsTheBenchmarkTypeData) {
   EXPECT_EQ(d.element_length, 0.25);
   EXPECT_EQ(d.rayleigh_mass, 0.0125);
   EXPECT_EQ(d.rayleigh_stiffness, 1e-4);
-  EXPECT_EQ(d.time_step, 5e-4);
+  EXPECT_EQ(d.time_step, 1e-3);
   EXPECT_EQ(d.hht_alpha, 0);
   EXPECT_EQ(d.section_first, -1);  // the default section
   const io::CatenaryFile f = io::read_catenary_file(path);
@@ -107,7 +107,7 @@ TEST(FeCatenaryFile, OptionalKeysTakeTheirDocumentedDefaults) {
   EXPECT_EQ(d.element_length, 0.25);
   EXPECT_EQ(d.rayleigh_mass, 0.0125);
   EXPECT_EQ(d.rayleigh_stiffness, 1e-4);
-  EXPECT_EQ(d.time_step, 5e-4);
+  EXPECT_EQ(d.time_step, 1e-3);
   EXPECT_EQ(d.hht_alpha, 0);
   const io::CatenaryFile f = io::read_catenary_file(write(kLine));
   EXPECT_EQ(f.contact.kind, catenary::Contact::Kind::Penalty);  // no contact section: penalty 50 kN/m
