@@ -639,7 +639,7 @@ int cmd_catenary_fit(const FitArgs& a) {
   const catenary::LumpedCatenary& c = fit.lumped;
   fmt::print("{}\n", line.describe());
   // Form-finding of the fitted span: dropper lengths and tensions, against the file's nominal lengths.
-  fmt::print("form-finding, span {}: dropper x (m), unstretched length (m){}, static tension (N)\n", fit.span > 0 ? fit.span : 0,
+  fmt::print("form-finding, span {}: dropper x (m), unstretched length (m){}, static tension (N)\n", fit.span,
              d.nominal_dropper_length.empty() ? "" : " [nominal]");
   for (const auto& dr : line.droppers()) {
     if (dr.x < (fit.span - 1) * d.span || dr.x > fit.span * d.span) continue;

@@ -136,8 +136,6 @@ TEST(FeLine, FormFindingReproducesThePresagAndNominalDropperLengths) {
   const FeLine line(benchmark(10));
   const auto& d = line.data();
   for (const auto& dr : line.droppers()) {
-    const int j = static_cast<int>(std::lround(std::fmod(dr.x, d.span) / d.span * 1000));
-    (void)j;
     const auto k = static_cast<std::size_t>(&dr - line.droppers().data()) % d.dropper_x.size();
     EXPECT_NEAR(line.static_height(dr.x), -d.presag[k], 1e-6) << "dropper at " << dr.x;
     EXPECT_GT(dr.tension, 0);
