@@ -16,6 +16,7 @@
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
 #include "support/run.hpp"
+#include "support/temp.hpp"
 
 using namespace inerta;
 
@@ -134,7 +135,7 @@ TEST(CatenaryFile, ErrorsNameTheFileLineOrOverride) {
   EXPECT_EQ(c.catenary->point_model()->k[0], 5000);
   EXPECT_EQ(c.catenary->point_model()->k[1], 2100);
   // A file with a bad key names its line.
-  const std::string bad = (std::filesystem::temp_directory_path() / "bad_catenary.yaml").string();
+  const std::string bad = (inerta::testing::temp_dir() / "bad_catenary.yaml").string();
   std::ofstream(bad) << "catenary:\n  span: 60\n  kc: [7000, 1, 2]\n";
   try {
     io::load_catenary(bad);
@@ -145,7 +146,7 @@ TEST(CatenaryFile, ErrorsNameTheFileLineOrOverride) {
 }
 
 TEST(CatenaryFile, WrongNodeTypeIsAModelErrorWithTheLine) {
-  const std::string bad = (std::filesystem::temp_directory_path() / "bad_catenary2.yaml").string();
+  const std::string bad = (inerta::testing::temp_dir() / "bad_catenary2.yaml").string();
   std::ofstream(bad) << "catenary:\n  span: 60\n  kc: [7000, 0, 0, 0]\n  mc: [177, 0, 0, 0]\n  cc: [1, 0, 0, 0]\n"
                         "contact:\n  type: [penalty]\n";
   try {

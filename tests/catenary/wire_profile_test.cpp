@@ -16,6 +16,7 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "support/run.hpp"
+#include "support/temp.hpp"
 
 using namespace inerta;
 using std::numbers::pi;
@@ -209,7 +210,7 @@ TEST(WireProfile, EnergyBalanceIncludesTheWorkOfTheMovingWire) {
 }
 
 TEST(WireProfileFile, ReadsHeightsOrACsvAndNamesTheLineOfAnError) {
-  const auto dir = std::filesystem::temp_directory_path();
+  const auto dir = inerta::testing::temp_dir();
   const std::string csv = (dir / "inerta_heights.csv").string(), yaml = (dir / "inerta_profile.yaml").string();
   std::ofstream(csv) << "x,height\n0,0\n20,-0.02\n40,0\n";
   std::ofstream(yaml) << "type: wire_profile\nprofile:\n  file: inerta_heights.csv\n  periodic: true\n"
@@ -266,7 +267,7 @@ TEST(CatenaryConstructors, RejectNonPhysicalParametersWithATypedError) {
 }
 
 TEST(WireProfileFile, AnOpenPeriodicProfileOrAMissingSpanNamesTheLineAndKey) {
-  const std::string yaml = (std::filesystem::temp_directory_path() / "inerta_profile_open.yaml").string();
+  const std::string yaml = (inerta::testing::temp_dir() / "inerta_profile_open.yaml").string();
   auto message = [&](const std::string& text) {
     std::ofstream(yaml) << text;
     try {

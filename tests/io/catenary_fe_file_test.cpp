@@ -9,6 +9,7 @@
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/file_kind.hpp"
 #include "support/run.hpp"
+#include "support/temp.hpp"
 
 using namespace inerta;
 
@@ -31,7 +32,7 @@ const std::string kLine =
     "registration: {stiffness: 2500}\n";                         // 13
 
 std::string write(const std::string& text) {
-  const std::string path = (std::filesystem::temp_directory_path() / "inerta_fe_catenary.yaml").string();
+  const std::string path = (inerta::testing::temp_dir() / "inerta_fe_catenary.yaml").string();
   std::ofstream(path) << text;
   return path;
 }

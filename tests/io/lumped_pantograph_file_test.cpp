@@ -9,6 +9,7 @@
 #include "inerta/io/file_kind.hpp"
 #include "inerta/io/model_file.hpp"
 #include "support/run.hpp"
+#include "support/temp.hpp"
 
 using namespace inerta;
 
@@ -24,7 +25,7 @@ const std::string kGood =
     "  aerodynamic: {a: 0.001, b: 0, c: 2}\n";  // 7
 
 std::string write(const std::string& name, const std::string& text) {
-  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  const std::string path = (inerta::testing::temp_dir() / name).string();
   std::ofstream(path) << text;
   return path;
 }

@@ -15,6 +15,7 @@
 #include "inerta/error.hpp"
 #include "inerta/network/layouts.hpp"
 #include "support/run.hpp"
+#include "support/temp.hpp"
 
 using namespace inerta;
 
@@ -132,7 +133,7 @@ TEST(Report, ReportDataAndCsvFiles) {
   EXPECT_DOUBLE_EQ(r.map->ys.back(), std::max(1e5, 1.25 * r.map_opt_y));
   EXPECT_DOUBLE_EQ(r.time_check.J, optim::evaluate_time(s, r.best.net).J);
 
-  const auto dir = std::filesystem::temp_directory_path() / "inerta_report_test";
+  const auto dir = inerta::testing::temp_dir() / "inerta_report_test";
   std::filesystem::remove_all(dir);
   const auto files = io::write_study_report(r, dir.string());
   EXPECT_EQ(files.size(), 6u);

@@ -9,6 +9,7 @@
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/solve/integrator.hpp"
+#include "temp.hpp"
 
 namespace inerta::testing {
 
@@ -16,7 +17,7 @@ inline std::string model_path(const std::string& name) { return std::string(INER
 
 /// Writes `text` to the file `name` in the system temp directory; returns its path.
 inline std::string write_study(const std::string& name, const std::string& text) {
-  const auto p = std::filesystem::temp_directory_path() / name;
+  const auto p = inerta::testing::temp_dir() / name;
   std::ofstream(p) << text;
   return p.string();
 }
