@@ -17,9 +17,11 @@
 #include <sstream>
 
 #include "identify.hpp"
+#include "linear.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
+#include "inerta/io/model_study_file.hpp"
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/analysis/modal.hpp"
 #include "inerta/analysis/simulate.hpp"
@@ -664,17 +666,19 @@ int cmd_catenary_fit(const FitArgs& a) {
 }
 
 struct ModesArgs {
-  std::string model, out, export_json;
+  std::string model, out, export_json, inputs, outputs;
+  std::vector<std::string> model_sets;
   CatenaryArgs cat;
 };
 
 // Modes of the linearised model about its static equilibrium (spec/02 §2.5, spec/06 §6.3).
 int cmd_modes(const ModesArgs& a) {
   analysis::ModalAnalysis ma;
+  const bool plain = a.cat.catenary.empty() && !io::load_model_file(a.model, a.model_sets).has_rig();
   if (!a.cat.catenary.empty()) {
     auto [panto, cat] = pantograph_setup(a.model, a.cat);
     ma = analysis::modal_analysis(panto, *cat.catenary, cat.contact);
-  } else if (const pantograph::Pantograph p = io::load_model_file(a.model); p.has_rig()) {
+  } else if (const pantograph::Pantograph p = io::load_model_file(a.model, a.model_sets); p.has_rig()) {
     ma = analysis::modal_analysis_free_head(p);
   } else {
     ma = analysis::modal_analysis(p.model);
@@ -684,24 +688,42 @@ int cmd_modes(const ModesArgs& a) {
   const std::vector<mbs::Mode>& ms = ma.modes;
   const std::string& setting = ma.setting;
   if (!a.export_json.empty()) {
-    io::write_linear_model(a.export_json, model, lin);  // for MATLAB/Python
-    fmt::print("wrote {} (linear model: A, N, M, C, K)\n", a.export_json);
+    if (plain) {
+      auto list = [](const std::string& s) {
+        std::vector<std::string> v;
+        std::stringstream ss(s);
+        for (std::string x; std::getline(ss, x, ',');)
+          if (!x.empty()) v.push_back(x);
+        return v;
+      };
+      fmt::print("state space: {}\n",
+                 inerta::cli::export_state_space(a.model, a.model_sets, a.export_json, list(a.inputs), list(a.outputs)));
+    } else {
+      io::write_linear_model(a.export_json, model, lin);  // for MATLAB/Python
+      fmt::print("wrote {} (linear model: A, N, M, C, K)\n", a.export_json);
+    }
   }
   fmt::print("modes of {} about its static equilibrium{}{}: {} independent coordinates, {} internal states\n",
              model.name, setting.empty() ? "" : ", ", setting, lin.dof, lin.nz);
-  fmt::print("  {:>3} {:>10} {:>10}  {}\n", "#", "f [Hz]", "zeta",
-             "dominant coordinates (mode shape, body coordinates)");
+  fmt::print("  {:>3} {:>12} {:>12} {:>10}  {}\n", "#", "f_d [Hz]", "|λ|/2π [Hz]", "zeta",
+             "dominant coordinates (mode shape, body coordinates; largest +100 %)");
   for (std::size_t i = 0; i < ms.size(); ++i)
-    fmt::print("  {:>3} {:>10.4f} {:>10.4f}  {}{}\n", i + 1, ms[i].frequency_hz, ms[i].damping_ratio,
-               ms[i].eigenvalue.imag() == 0 ? "(real, non-oscillatory) " : "", ms[i].description);
+    fmt::print("  {:>3} {:>12.6g} {:>12.6g} {:>10.6f}  {}{}\n", i + 1, ms[i].damped_frequency_hz, ms[i].frequency_hz,
+               std::abs(ms[i].damping_ratio) < 5e-7 ? 0.0 : ms[i].damping_ratio, ms[i].eigenvalue.imag() == 0 ? "(real, non-oscillatory) " : "", ms[i].description);
+  const auto und = mbs::undamped_modes(model, lin);
+  if (!und.empty()) {
+    fmt::print("undamped natural frequencies of (M, K) (damping removed, network states held):\n");
+    for (std::size_t i = 0; i < und.size(); ++i)
+      fmt::print("  {:>3} {:>12.6g} Hz  {}\n", i + 1, und[i].frequency_hz, und[i].description);
+  }
   if (!a.out.empty()) {
     OutputFile file(a.out);
-    fmt::print(file.get(), "mode,f_hz,zeta,re_lambda,im_lambda");
+    fmt::print(file.get(), "mode,f_hz,f_damped_hz,zeta,re_lambda,im_lambda");
     for (int k = 0; k < model.n_coords(); ++k) fmt::print(file.get(), ",{}", model.coord_name(k));
     fmt::print(file.get(), "\n");
     for (std::size_t i = 0; i < ms.size(); ++i) {
-      fmt::print(file.get(), "{},{:.10g},{:.10g},{:.10g},{:.10g}", i + 1, ms[i].frequency_hz, ms[i].damping_ratio,
-                 ms[i].eigenvalue.real(), ms[i].eigenvalue.imag());
+      fmt::print(file.get(), "{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}", i + 1, ms[i].frequency_hz, ms[i].damped_frequency_hz,
+                 ms[i].damping_ratio, ms[i].eigenvalue.real(), ms[i].eigenvalue.imag());
       for (int k = 0; k < ms[i].shape.size(); ++k) fmt::print(file.get(), ",{:.6g}", ms[i].shape[k]);
       fmt::print(file.get(), "\n");
     }
@@ -711,14 +733,25 @@ int cmd_modes(const ModesArgs& a) {
 }
 
 struct FrfArgs {
-  std::string model, outputs, freq, method = "linear", out;
+  std::string model, outputs, freq, method = "linear", out, input;
+  std::vector<std::string> sets;
   double vc = 0.06;
   int cycles = 100, analysed = 50;
 };
 
-// Test-rig FRF (spec/04 §4.2, eq. 6.25): acceleration over contact force.
+// FRF from any input to any outputs of the linearised model (--input), or the test-rig FRF
+// (spec/04 §4.2, eq. 6.25): acceleration over contact force.
 int cmd_frf(const FrfArgs& a) {
-  const pantograph::Pantograph rig = io::load_model_file(a.model);
+  if (!a.input.empty()) {
+    if (a.method != "linear") throw CLI::ValidationError("--method", "with --input the FRF is the linear one");
+    std::vector<std::string> outputs;
+    std::stringstream ss(a.outputs);
+    for (std::string o; std::getline(ss, o, ',');)
+      if (!o.empty()) outputs.push_back(o);
+    if (outputs.empty()) throw CLI::ValidationError("--outputs", "expected a comma-separated list of output names");
+    return inerta::cli::run_frf_any(a.model, a.sets, a.input, outputs, frequency_range(a.freq), a.out);
+  }
+  const pantograph::Pantograph rig = io::load_model_file(a.model, a.sets);
   const mbs::Model& model = rig.model;
   std::vector<std::string> outputs;
   std::stringstream ss(a.outputs);
@@ -837,6 +870,7 @@ void draw_plots(const std::string& dir) {
 
 // Structure-based design (spec/07): optimise every layout of the study, print and write the table.
 int cmd_optimise(const OptimiseArgs& a) {
+  if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
   optim::Study study = io::load_study(a.study);
   const bool tty = isatty(STDOUT_FILENO);
   fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), periodic fast path\n", study.name,
@@ -993,14 +1027,20 @@ int main(int argc, char** argv) {
       app.add_subcommand("modes", "Natural frequencies, damping ratios and mode shapes about the static equilibrium");
   mds->add_option("model", ma.model, "Model file (YAML)")->required();
   mds->add_option("--out", ma.out, "CSV of the modes and their shapes");
-  mds->add_option("--export", ma.export_json, "JSON file with the linear model (A, N, M, C, K) for MATLAB/Python");
+  mds->add_option("--export", ma.export_json,
+                  "JSON file with the state space (A, B, C, D, names; also PATH_{A,B,C,D}.csv) for MATLAB/Python; "
+                  "a pantograph: the linear model (A, N, M, C, K)");
+  mds->add_option("--inputs", ma.inputs, "State space: inputs, comma-separated (default: every load and driving joint)");
+  mds->add_option("--outputs", ma.outputs, "State space: outputs, comma-separated (default: every output)");
   mds->add_option("--catenary", ma.cat.catenary, "Couple to this catenary (its mean, time-invariant part)");
   mds->add_option("--set", ma.cat.sets, "Override a catenary value (repeatable)");
 
   FrfArgs fa;
-  auto* frf = app.add_subcommand("frf", "Test-rig FRF: vertical accelerations over contact force (spec/04 §4.2)");
-  frf->add_option("model", fa.model, "Pantograph model with a rig joint (YAML)")->required();
-  frf->add_option("--outputs", fa.outputs, "Acceleration outputs, comma-separated (e.g. P_ay,E_ay,B_ay)")->required();
+  auto* frf = app.add_subcommand("frf", "FRF from an input to outputs of any model (--input), or the test-rig FRF (spec/04 §4.2)");
+  frf->add_option("model", fa.model, "Model (YAML); without --input a pantograph with a rig joint")->required();
+  frf->add_option("--input", fa.input, "A load (point_force/point_torque) or driving joint of the model: linear FRF about the static equilibrium");
+  frf->add_option("--outputs", fa.outputs, "Outputs, comma-separated (rig FRF: accelerations, e.g. P_ay,E_ay,B_ay)")->required();
+  frf->add_option("--set", fa.sets, "Override a model value NAME.KEY=VALUE (repeatable)");
   frf->add_option("--freq", fa.freq, "Frequencies F0:DF:F1 in Hz")->required();
   frf->add_option("--method", fa.method, "linear or stepped-sine")
       ->check(CLI::IsMember({"linear", "stepped-sine"}))
@@ -1031,6 +1071,7 @@ int main(int argc, char** argv) {
   cat_cmd->require_subcommand(1);
 
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
+  CLI::App* rms = inerta::cli::add_rms_command(app);         // apps/inerta/linear.cpp
 
   OptimiseArgs oa;
   auto* opt = app.add_subcommand("optimise", "Optimise the suspension layouts of a study file (spec/07)");
@@ -1055,6 +1096,7 @@ int main(int argc, char** argv) {
     if (crs->parsed()) return cmd_catenary_response(ca);
     if (fit->parsed()) return cmd_catenary_fit(fit_args);
     if (idn->parsed()) return inerta::cli::run_identify();
+    if (rms->parsed()) return inerta::cli::run_rms();
     if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);

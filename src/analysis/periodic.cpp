@@ -66,7 +66,7 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
   const Eigen::VectorXd qdd0 = ws.qdd, zd0 = ws.zd;
   const double F_p = F_of(probe, wp, state_of(X0));
   Eigen::VectorXd B(S);  // response of [ξ̇; ξ̈; ż] to a unit wire force
-  B << Eigen::VectorXd::Zero(d), L.N.transpose() * (wp.qdd - qdd0), wp.zd - zd0;
+  B << Eigen::VectorXd::Zero(d), L.Nt * (wp.qdd - qdd0), wp.zd - zd0;
   const double Lf = F_p - F_s;
   // Λ = ∂F/∂X at X = 0 (central differences, h = 1e-6).
   const Eigen::RowVectorXd LX = numerics::central_difference_jacobian(

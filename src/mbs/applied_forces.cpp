@@ -44,6 +44,17 @@ PointTorque::PointTorque(std::string name, int body, Vec3 axis, TimeFunction f)
       n_(check::direction({"point torque", this->name()}, "axis", axis).normalized()),
       f_(valid({"point torque", this->name()}, std::move(f))) {}
 
+std::shared_ptr<const ForceElement> PointForce::with_value(const TimeFunction& f) const {
+  auto copy = std::make_shared<PointForce>(*this);
+  copy->f_ = valid({"point force", name()}, f);
+  return copy;
+}
+std::shared_ptr<const ForceElement> PointTorque::with_value(const TimeFunction& f) const {
+  auto copy = std::make_shared<PointTorque>(*this);
+  copy->f_ = valid({"point torque", name()}, f);
+  return copy;
+}
+
 RotationalSpringDamper::RotationalSpringDamper(std::string name, int body_i, int body_j, double k, double angle0,
                                                double c)
     : ForceElement(std::move(name)),

@@ -134,6 +134,7 @@ SpatialFrame Model::sframe(const State& x, int body) const {
 }
 
 double ForceElement::length(const Model&, const State&) const { return std::nan(""); }
+double ForceElement::load_value(double) const { return std::nan(""); }
 
 std::shared_ptr<const ForceElement> ForceElement::with_state_offset(int) const {
   throw std::logic_error("force element '" + name() + "' has internal states but does not implement with_state_offset");

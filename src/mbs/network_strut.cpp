@@ -147,6 +147,20 @@ std::shared_ptr<const ForceElement> NetworkStrut::with_state_offset(int offset) 
   c->state_offset_ = offset;
   return c;
 }
+void NetworkStrut::replace_network(const network::Network& net) {
+  net_ = realisable({"network strut", name()}, net);
+  r_ = network::realise(net_);
+}
+std::shared_ptr<const ForceElement> NetworkStrut::with_network(const network::Network& net) const {
+  auto c = std::make_shared<NetworkStrut>(*this);
+  c->replace_network(net);
+  return c;
+}
+std::shared_ptr<const ForceElement> Actuator::with_network(const network::Network& net) const {
+  auto c = std::make_shared<Actuator>(*this);
+  c->replace_network(net);
+  return c;
+}
 std::shared_ptr<const ForceElement> Actuator::with_state_offset(int offset) const {
   auto c = std::make_shared<Actuator>(*this);
   c->state_offset_ = offset;

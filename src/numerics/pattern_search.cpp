@@ -39,11 +39,21 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
   Result best;
   best.cost = INFINITY;
   int total = 0;
-  for (int start = 0; start < std::max(1, o.starts); ++start) {
+  const int random_starts = std::max(1, o.starts);
+  for (const auto& w : o.initial_values)
+    if (w.size() != n) throw std::invalid_argument("pattern search: an initial point needs one value per variable");
+  for (int start = 0; start < random_starts + static_cast<int>(o.initial_values.size()); ++start) {
     std::vector<double> u(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double a = box_lo(vars[i]), b = box_hi(vars[i]);
-      u[i] = start == 0 ? 0.5 * (a + b) : std::uniform_real_distribution<double>(a, b)(rng);
+      if (start >= random_starts) {  // a warm start: its value's cell (0 and ∞ in their half decades)
+        const double v = o.initial_values[static_cast<std::size_t>(start - random_starts)][i];
+        const double la = std::log10(vars[i].lo), lb = std::log10(vars[i].hi);
+        u[i] = v <= 0 ? (vars[i].can_open ? a + 0.25 : la) : std::isinf(v) ? (vars[i].can_rigid ? b - 0.25 : lb)
+                                                              : std::clamp(std::log10(v), la, lb);
+      } else {
+        u[i] = start == 0 ? 0.5 * (a + b) : std::uniform_real_distribution<double>(a, b)(rng);
+      }
     }
     // Cache of evaluated points: decoded values identify a design (0/∞ cells and clamped ends repeat).
     std::map<std::vector<double>, double> cache;

@@ -31,7 +31,7 @@ TEST_F(JsonCli, ModesExportIsValidJsonForAnAwkwardModelName) {
 
   const auto r = run_inerta("modes " + quote(model.string()) + " --export " + quote(json.string()));
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(contains(r.out, "wrote " + json.string() + " (linear model: A, N, M, C, K)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "wrote " + json.string() + " and ")) << r.out;
   EXPECT_TRUE(contains(r.out, "modes of " + kAwkward + " about its static equilibrium")) << r.out;
   nlohmann::ordered_json j;
   ASSERT_NO_THROW(j = nlohmann::ordered_json::parse(read_file(json))) << read_file(json);

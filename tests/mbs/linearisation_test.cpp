@@ -47,7 +47,7 @@ TEST(Linearisation, LinearResponseMatchesNonlinearAtSmallAmplitude) {
   opt.atol = 1e-14;
   std::vector<Eigen::VectorXd> xi_nl;
   solve::integrate(moving, x0, 0.0, 3.0, 0.01, opt, [&](double, const mbs::State& s, const mbs::Workspace&) {
-    xi_nl.push_back(lin.N.transpose() * (s.q - x.q));
+    xi_nl.push_back(lin.Nt * (s.q - x.q));
   });
   const double h = 1e-4;
   double err = 0, amp = 0;
@@ -95,7 +95,7 @@ TEST(Linearisation, JacobianPredictsTheNonlinearRightHandSide) {
     mbs::State s{x.q + lin.N * X.head(d), lin.N * X.segment(d, d), x.z + X.tail(lin.nz)};
     mbs::accelerations(m, 0.0, s, ws);
     Eigen::VectorXd out(S);
-    out << X.segment(d, d), lin.N.transpose() * ws.qdd, ws.zd;
+    out << X.segment(d, d), lin.Nt * ws.qdd, ws.zd;
     return out;
   };
   std::srand(3);

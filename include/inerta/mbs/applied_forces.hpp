@@ -36,6 +36,8 @@ class PointForce : public ForceElement {
   void add(const Model&, double t, const State& x, Workspace& ws) const override;
   double power(const Model&, double t, const State& x) const override;
   double force(const Model&, double t, const State&, const Workspace&) const override { return f_.value(t); }
+  std::shared_ptr<const ForceElement> with_value(const TimeFunction& f) const override;
+  double load_value(double t) const override { return f_.value(t); }
 
  private:
   int body_;
@@ -53,6 +55,8 @@ class PointTorque : public ForceElement {
   void add(const Model&, double t, const State& x, Workspace& ws) const override;
   double power(const Model&, double t, const State& x) const override;
   double force(const Model&, double t, const State&, const Workspace&) const override { return f_.value(t); }
+  std::shared_ptr<const ForceElement> with_value(const TimeFunction& f) const override;
+  double load_value(double t) const override { return f_.value(t); }
 
  private:
   int body_;

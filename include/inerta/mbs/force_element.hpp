@@ -6,11 +6,16 @@
 #include <memory>
 #include <string>
 
+namespace inerta::network {
+struct Network;
+}
+
 namespace inerta::mbs {
 
 struct Model;
 struct State;
 struct Workspace;
+struct TimeFunction;
 
 class ForceElement {
  public:
@@ -39,6 +44,16 @@ class ForceElement {
   virtual std::shared_ptr<const ForceElement> with_state_offset(int offset) const;
   /// Sets the internal states to their steady values at rest in the configuration x.q.
   virtual void relax(const Model&, State&) const {}
+  /// A load whose value is a time function (point force, point torque): the same load with value f
+  /// instead (the inputs of a linear analysis, mbs::linearise). Null for every other element.
+  virtual std::shared_ptr<const ForceElement> with_value(const TimeFunction&) const { return nullptr; }
+  /// The value of such a load at t (NaN for other elements).
+  virtual double load_value(double) const;
+  /// A network strut (network, actuator): its network, and the same strut with another network
+  /// (simplified, neither open nor rigid; same markers and reference length), for design studies.
+  /// Null for every other element.
+  virtual const network::Network* strut_network() const { return nullptr; }
+  virtual std::shared_ptr<const ForceElement> with_network(const network::Network&) const { return nullptr; }
 
  protected:
   int state_offset_ = 0;

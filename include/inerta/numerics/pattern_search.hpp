@@ -34,6 +34,10 @@ struct Options {
   double initial_step = 1.0;   ///< decades
   double min_step = 1e-3;      ///< decades: stop when the mesh is finer
   int max_evaluations = 5000;  ///< per start
+  /// Further starts after the random ones, as values (0 = open, ∞ = rigid; others clamped to
+  /// [lo, hi]), one per variable: warm starts, e.g. the optimum of a smaller layout. The result is
+  /// never worse than the best of them.
+  std::vector<std::vector<double>> initial_values;
 };
 
 struct Result {

@@ -1,0 +1,383 @@
+#include "linear.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+#include "inerta/analysis/state_space.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/json.hpp"
+#include "inerta/io/model_file.hpp"
+#include "inerta/io/model_study_file.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/network/layouts.hpp"
+
+namespace inerta::cli {
+
+namespace {
+
+struct File {
+  explicit File(const std::string& path) {
+    if (path.empty()) return;
+    f.reset(std::fopen(path.c_str(), "w"));
+    if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", path));
+  }
+  std::FILE* get() const { return f ? f.get() : stdout; }
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{nullptr, &std::fclose};
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string x; std::getline(ss, x, ',');)
+    if (!x.empty()) out.push_back(x);
+  return out;
+}
+
+mbs::Model load(const std::string& path, const std::vector<std::string>& sets) { return io::load_model_file(path, sets).model; }
+
+}  // namespace
+
+int run_frf_any(const std::string& model_path, const std::vector<std::string>& sets, const std::string& input,
+                const std::vector<std::string>& outputs, const std::vector<double>& f, const std::string& out) {
+  const mbs::Model model = load(model_path, sets);
+  const auto wall0 = std::chrono::steady_clock::now();
+  const analysis::StateSpace ss = analysis::state_space(model, {input}, outputs);
+  const auto H = analysis::frequency_response(ss, f);
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  File file(out);
+  fmt::print(file.get(), "f_hz");
+  for (const auto& o : outputs) fmt::print(file.get(), ",{0}_mag,{0}_phase_deg,{0}_re,{0}_im", o);
+  fmt::print(file.get(), "\n");
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    fmt::print(file.get(), "{:.10g}", f[k]);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+      const auto h = H[k](static_cast<Eigen::Index>(i), 0);
+      fmt::print(file.get(), ",{:.10g},{:.10g},{:.10g},{:.10g}", std::abs(h), std::arg(h) * 180 / std::numbers::pi, h.real(), h.imag());
+    }
+    fmt::print(file.get(), "\n");
+  }
+  std::FILE* info = out.empty() ? stderr : stdout;
+  fmt::print(info, "FRF (linear, about the static equilibrium) of {}: input '{}' ({}), {} frequencies, {} state(s), wall {:.3f} s\n",
+             model.name, input, ss.input_units[0], f.size(), ss.A.rows(), wall);
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    std::size_t kmax = 0;
+    for (std::size_t k = 0; k < f.size(); ++k)
+      if (std::abs(H[k](static_cast<Eigen::Index>(i), 0)) > std::abs(H[kmax](static_cast<Eigen::Index>(i), 0))) kmax = k;
+    fmt::print(info, "  {}: peak |H| = {:.6g} per {} at {:.6g} Hz\n", outputs[i], std::abs(H[kmax](static_cast<Eigen::Index>(i), 0)),
+               ss.input_units[0], f[kmax]);
+  }
+  if (ss.has_rate_feedthrough())
+    fmt::print(info, "  note: an output responds directly to the input's rate or acceleration (D1, D2 terms)\n");
+  if (!out.empty()) fmt::print(info, "wrote {}\n", out);
+  return 0;
+}
+
+std::string export_state_space(const std::string& model_path, const std::vector<std::string>& sets, const std::string& path,
+                               const std::vector<std::string>& inputs_in, const std::vector<std::string>& outputs_in) {
+  const mbs::Model model = load(model_path, sets);
+  std::vector<std::string> inputs = inputs_in, outputs = outputs_in;
+  if (inputs.empty()) {
+    for (const auto& f : model.forces)
+      if (f->with_value(mbs::TimeFunction::constant(0))) inputs.push_back(f->name());
+    for (const auto& j : model.joints)
+      if (j.type == mbs::JointType::Driving) inputs.push_back(j.name);
+  }
+  if (outputs.empty())
+    for (const auto& o : model.outputs) outputs.push_back(o.name);
+  const analysis::StateSpace ss = analysis::state_space(model, inputs, outputs);
+  const mbs::LinearModel& lin = ss.system.lin;
+  io::Json j;
+  j["model"] = model.name;
+  j["form"] = "dY/dt = A Y + B u, y = C Y + D u + D1 du/dt + D2 d2u/dt2; Y = X - T0 u - T1 du/dt, X = [xi; xi_dot; z], "
+              "q = q_e + N xi (xi: the independent coordinates named in 'states'); deviations from the static equilibrium, SI";
+  j["dof"] = lin.dof;
+  j["internal_states"] = lin.nz;
+  j["states"] = ss.states;
+  j["inputs"] = ss.inputs;
+  j["input_units"] = ss.input_units;
+  j["outputs"] = ss.outputs;
+  std::vector<std::string> coords;
+  for (int k = 0; k < model.n_coords(); ++k) coords.push_back(model.coord_name(k));
+  j["coordinates"] = coords;
+  j["q_e"] = io::json_rows(lin.equilibrium.q.transpose());
+  j["N"] = io::json_rows(lin.N);
+  for (const auto& [name, M] : std::vector<std::pair<std::string, const Eigen::MatrixXd*>>{
+           {"A", &ss.A}, {"B", &ss.B}, {"C", &ss.C}, {"D", &ss.D}, {"D1", &ss.D1}, {"D2", &ss.D2}, {"T0", &ss.T0}, {"T1", &ss.T1},
+           {"M", &lin.M}, {"C_damping", &lin.C}, {"K", &lin.K}})
+    j[name] = io::json_rows(*M);
+  io::write_json(path, j);
+  // The same matrices as CSV (numpy.loadtxt(…, delimiter=',', skiprows=1)): PATH-without-.json_A.csv, …
+  std::string stem = path;
+  if (stem.size() > 5 && stem.substr(stem.size() - 5) == ".json") stem.resize(stem.size() - 5);
+  auto csv = [&](const std::string& name, const Eigen::MatrixXd& M, const std::vector<std::string>& cols) {
+    File f(stem + "_" + name + ".csv");
+    for (std::size_t c = 0; c < cols.size(); ++c) fmt::print(f.get(), "{}{}", c ? "," : "", cols[c]);
+    fmt::print(f.get(), "\n");
+    for (Eigen::Index r = 0; r < M.rows(); ++r) {
+      for (Eigen::Index c = 0; c < M.cols(); ++c) fmt::print(f.get(), "{}{:.17g}", c ? "," : "", M(r, c));
+      fmt::print(f.get(), "\n");
+    }
+  };
+  csv("A", ss.A, ss.states);
+  csv("B", ss.B, ss.inputs);
+  csv("C", ss.C, ss.states);
+  csv("D", ss.D, ss.inputs);
+  return fmt::format("{} states, {} input(s), {} output(s): wrote {} and {}_{{A,B,C,D}}.csv", ss.states.size(), inputs.size(),
+                     outputs.size(), path, stem);
+}
+
+// ---- rms --------------------------------------------------------------------------------------
+
+namespace {
+struct RmsArgs {
+  std::string model, outputs, inputs, road_class, out, delays;
+  std::vector<std::string> sets, noise;
+  double gd0 = 0, speed = 0;
+  int pade = 8;
+} rms_args;
+CLI::App* rms_cmd = nullptr;
+}  // namespace
+
+CLI::App* add_rms_command(CLI::App& app) {
+  RmsArgs& a = rms_args;
+  rms_cmd = app.add_subcommand("rms", "Random response (rms, H2) of outputs under white noise or an ISO 8608 road, by Lyapunov equations");
+  rms_cmd->add_option("model", a.model, "Model file (YAML)")->required();
+  rms_cmd->add_option("--outputs", a.outputs, "Outputs, comma-separated")->required();
+  rms_cmd->add_option("--road", a.road_class, "ISO 8608 road class A…H (with --speed and --inputs)");
+  rms_cmd->add_option("--gd0", a.gd0, "Road: G_d(n0) in m³ instead of a class (n0 = 0.1 cycles/m)");
+  rms_cmd->add_option("--speed", a.speed, "Road: speed, m/s");
+  rms_cmd->add_option("--inputs", a.inputs, "Road: the driving joints that see the road, comma-separated");
+  rms_cmd->add_option("--delays", a.delays, "Road: delay of each input, s, comma-separated (e.g. 0,0.1)");
+  rms_cmd->add_option("--pade", a.pade, "Road: Padé order of a delay")->capture_default_str();
+  rms_cmd->add_option("--white-noise", a.noise, "INPUT=W: white noise of intensity W (E[u(t)u(s)] = W δ(t−s)); repeatable");
+  rms_cmd->add_option("--set", a.sets, "Override a model value NAME.KEY=VALUE (repeatable)");
+  rms_cmd->add_option("--out", a.out, "CSV of the rms values");
+  return rms_cmd;
+}
+
+int run_rms() {
+  const RmsArgs& a = rms_args;
+  const bool road = !a.road_class.empty() || a.gd0 > 0;
+  if (road == !a.noise.empty())
+    throw CLI::ValidationError("rms", "give either a road (--road CLASS or --gd0, --speed, --inputs) or --white-noise INPUT=W");
+  const mbs::Model model = load(a.model, a.sets);
+  const std::vector<std::string> outputs = split(a.outputs);
+  analysis::RandomResponse r;
+  std::string what;
+  const auto wall0 = std::chrono::steady_clock::now();
+  if (road) {
+    analysis::Road rd;
+    if (!a.road_class.empty()) {
+      if (a.road_class.size() != 1 || a.road_class[0] < 'A' || a.road_class[0] > 'H')
+        throw CLI::ValidationError("--road", "expected an ISO 8608 class A to H, got '" + a.road_class + "'");
+      rd.gd0 = 16e-6 * std::pow(4.0, a.road_class[0] - 'A');
+    } else {
+      rd.gd0 = a.gd0;
+    }
+    if (!(a.speed > 0)) throw CLI::ValidationError("--speed", "a road needs the speed in m/s (> 0)");
+    rd.speed = a.speed;
+    rd.inputs = split(a.inputs);
+    if (rd.inputs.empty()) throw CLI::ValidationError("--inputs", "name the driving joints that see the road");
+    for (const auto& d : split(a.delays)) {
+      double v = 0;
+      if (!CLI::detail::lexical_cast(d, v)) throw CLI::ValidationError("--delays", "not a number: '" + d + "'");
+      rd.delays.push_back(v);
+    }
+    rd.pade_order = a.pade;
+    const analysis::StateSpace ss = analysis::state_space(model, rd.inputs, outputs);
+    r = analysis::road_response(ss, rd);
+    what = fmt::format("ISO 8608 road G_d(n0) = {:g} m³ at {:g} m/s ({:.4g} km/h)", rd.gd0, rd.speed, rd.speed * 3.6);
+  } else {
+    std::vector<std::string> inputs;
+    std::vector<double> W;
+    for (const auto& s : a.noise) {
+      const auto eq = s.find('=');
+      double v = 0;
+      if (eq == std::string::npos || !CLI::detail::lexical_cast(s.substr(eq + 1), v) || !(v > 0))
+        throw CLI::ValidationError("--white-noise", "expected INPUT=W with W > 0, got '" + s + "'");
+      inputs.push_back(s.substr(0, eq));
+      W.push_back(v);
+    }
+    const analysis::StateSpace ss = analysis::state_space(model, inputs, outputs);
+    r = analysis::white_noise_response(ss, Eigen::VectorXd::Map(W.data(), static_cast<Eigen::Index>(W.size())).asDiagonal().toDenseMatrix());
+    what = "white noise";
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  fmt::print("random response of {} under {} (Lyapunov, about the static equilibrium; wall {:.4f} s):\n", model.name, what, wall);
+  for (std::size_t i = 0; i < outputs.size(); ++i) fmt::print("  {:<16} rms {:.6g}\n", outputs[i], r.rms[static_cast<Eigen::Index>(i)]);
+  if (!a.out.empty()) {
+    File f(a.out);
+    fmt::print(f.get(), "output,rms\n");
+    for (std::size_t i = 0; i < outputs.size(); ++i) fmt::print(f.get(), "{},{:.10g}\n", outputs[i], r.rms[static_cast<Eigen::Index>(i)]);
+    fmt::print("wrote {}\n", a.out);
+  }
+  return 0;
+}
+
+// ---- optimise (model study) -------------------------------------------------------------------
+
+int run_model_study(const std::string& path, const std::string& out, bool plots) {
+  const optim::ModelStudy study = io::load_model_study(path);
+  const optim::Objective& o = study.objective;
+  const bool tty = isatty(STDOUT_FILENO);
+  fmt::print("study {}: model {}, strut '{}', objective {}, {} layouts, {} starts (seed {})\n", study.name, study.model.name,
+             study.model.forces[static_cast<std::size_t>(study.strut)]->name(), optim::Objective::name(o.kind), study.layouts.size(),
+             study.search.starts, study.search.seed);
+  const auto wall0 = std::chrono::steady_clock::now();
+  const network::Network baseline = optim::default_network(study);
+  const optim::ModelCost def = optim::evaluate(study, baseline);
+  std::vector<optim::ModelLayoutResult> results;
+  // Warm starts: the default's values and every earlier layout's optimum (optim::optimise_layout).
+  std::vector<network::Params> warm;
+  {
+    network::Params p;
+    std::function<void(const network::Network&)> collect = [&](const network::Network& n) {
+      if (n.is_element()) p[n.name] = n.value;
+      for (const auto& c : n.children) collect(c);
+    };
+    collect(baseline);
+    warm.push_back(p);
+  }
+  for (std::size_t l = 0; l < study.layouts.size(); ++l) {
+    const std::string& layout = study.layouts[l];
+    results.push_back(optim::optimise_layout(study, layout, [&](int start, int evals, double best) {
+      if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(), layout,
+                          start + 1, evals, best);
+      std::fflush(stdout);
+    }, warm));
+    warm.push_back(results.back().values);
+    if (tty) fmt::print("\r{:90}\r", "");
+    const auto& r = results.back();
+    fmt::print("  [{}/{}] {:<14} J = {:.6g}{} after {} evaluations\n", l + 1, study.layouts.size(), layout, r.cost.J,
+               r.cost.feasible ? "" : " (a limit is exceeded)", r.evaluations);
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  fmt::print("\n  {:<14} {:<14} {:>12} {:>10}", "layout", "network", "J", "vs default");
+  for (const auto& w : o.outputs) fmt::print(" {:>12}", w.name);
+  for (const auto& lim : o.limits) fmt::print(" {:>12}", lim.output + "≤" + fmt::format("{:g}", lim.limit));
+  fmt::print("  values (SI)\n");
+  auto row = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, const std::string& values,
+                 const std::string& bounds) {
+    fmt::print("  {:<14} {:<14} {:>12.6g} {:>9.1f}%", layout, expr, c.J, 100 * (c.J - def.J) / def.J);
+    for (double v : c.values) fmt::print(" {:>12.5g}", v);
+    for (double v : c.limit_values) fmt::print(" {:>12.5g}", v);
+    fmt::print("  {}{}{}\n", values, bounds.empty() ? "" : "  at limits: " + bounds, c.feasible ? "" : "  INFEASIBLE");
+  };
+  row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "");
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& r = results[i];
+    std::string values, bounds;
+    for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
+    for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
+    row(r.layout, r.expression, r.cost, values, bounds);
+    const bool better = (r.cost.feasible && !results[best].cost.feasible) ||
+                        (r.cost.feasible == results[best].cost.feasible && r.cost.J < results[best].cost.J);
+    if (better) best = i;
+  }
+  fmt::print("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n", network::to_string(baseline, true), def.J,
+             results[best].layout, results[best].expression, results[best].cost.J, 100 * (results[best].cost.J - def.J) / def.J, wall);
+  if (out.empty()) return 0;
+  std::filesystem::create_directories(out);
+  // Table: a column per element name of any layout.
+  std::vector<std::string> elements;
+  for (const auto& r : results)
+    for (const auto& [k, v] : r.values)
+      if (std::find(elements.begin(), elements.end(), k) == elements.end()) elements.push_back(k);
+  {
+    File f(out + "/results.csv");
+    fmt::print(f.get(), "layout,expression,J,vs_default_pct,feasible,evaluations");
+    for (const auto& w : o.outputs) fmt::print(f.get(), ",{}", w.name);
+    for (const auto& lim : o.limits) fmt::print(f.get(), ",{}", lim.output);
+    for (const auto& e : elements) fmt::print(f.get(), ",{}", e);
+    fmt::print(f.get(), "\n");
+    auto line = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, int evals, const network::Params& p) {
+      fmt::print(f.get(), "{},\"{}\",{:.10g},{:.6g},{},{}", layout, expr, c.J, 100 * (c.J - def.J) / def.J, c.feasible ? 1 : 0, evals);
+      for (double v : c.values) fmt::print(f.get(), ",{:.10g}", v);
+      for (double v : c.limit_values) fmt::print(f.get(), ",{:.10g}", v);
+      for (const auto& e : elements) {
+        const auto it = p.find(e);
+        fmt::print(f.get(), ",{}", it == p.end() ? std::string("") : fmt::format("{:.10g}", it->second));
+      }
+      fmt::print(f.get(), "\n");
+    };
+    line("default", network::to_string(baseline, true), def, 1, {});
+    for (const auto& r : results) line(r.layout, r.expression, r.cost, r.evaluations, r.values);
+  }
+  {
+    io::Json j;
+    j["study"] = study.name;
+    j["objective"] = optim::Objective::name(o.kind);
+    j["default"] = {{"network", network::to_string(baseline, true)}, {"J", def.J}, {"values", def.values}, {"limits", def.limit_values}};
+    io::Json rows = io::Json::array();
+    for (const auto& r : results) {
+      io::Json v = io::Json::object();
+      for (const auto& [k, x] : r.values) v[k] = std::isinf(x) ? io::Json("inf") : io::Json(x);
+      rows.push_back({{"layout", r.layout}, {"expression", r.expression}, {"J", r.cost.J}, {"feasible", r.cost.feasible},
+                      {"outputs", r.cost.values}, {"limits", r.cost.limit_values}, {"values", v}, {"at_limits", r.at_bounds},
+                      {"evaluations", r.evaluations}});
+    }
+    j["layouts"] = rows;
+    j["best"] = results[best].layout;
+    io::write_json(out + "/results.json", j);
+  }
+  std::vector<std::string> written = {"results.csv", "results.json"};
+  // FRF default vs best, and the objective over two elements of the best layout.
+  if (o.kind != optim::Objective::Kind::Peak) {
+    std::vector<double> f = o.frequencies;
+    if (f.empty())
+      for (int k = 0; k < 400; ++k) f.push_back(0.1 * std::pow(500.0, k / 399.0));  // 0.1 … 50 Hz
+    const auto fd = optim::study_frf(study, baseline, f);
+    const auto fb = optim::study_frf(study, network::resolve(results[best].layout, results[best].values), f);
+    File file(out + "/frf.csv");
+    fmt::print(file.get(), "f_hz");
+    for (const auto& n : fd.outputs) fmt::print(file.get(), ",{0}_default,{0}_best", n);
+    fmt::print(file.get(), "\n");
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      fmt::print(file.get(), "{:.10g}", f[k]);
+      for (std::size_t i = 0; i < fd.outputs.size(); ++i) fmt::print(file.get(), ",{:.10g},{:.10g}", fd.magnitude[i][k], fb.magnitude[i][k]);
+      fmt::print(file.get(), "\n");
+    }
+    written.push_back("frf.csv");
+  }
+  {
+    std::vector<std::string> finite;
+    for (const auto& [k, v] : results[best].values)
+      if (v > 0 && std::isfinite(v)) finite.push_back(k);
+    if (finite.size() >= 2) {
+      const auto map = optim::objective_map(study, results[best].layout, results[best].values, finite[0], finite[1]);
+      File file(out + "/map.csv");
+      fmt::print(file.get(), "# {} of layout {} over {} (rows) and {} (columns)\n{}", optim::Objective::name(o.kind), map.layout,
+                 map.x_name, map.y_name, map.x_name + "\\" + map.y_name);
+      for (double y : map.y) fmt::print(file.get(), ",{:.6g}", y);
+      fmt::print(file.get(), "\n");
+      for (std::size_t i = 0; i < map.x.size(); ++i) {
+        fmt::print(file.get(), "{:.6g}", map.x[i]);
+        for (double v : map.J[i]) fmt::print(file.get(), ",{:.8g}", v);
+        fmt::print(file.get(), "\n");
+      }
+      written.push_back("map.csv");
+    }
+  }
+  fmt::print("wrote");
+  for (const auto& w : written) fmt::print(" {}", w);
+  fmt::print(" in {}\n", out);
+  if (plots) {
+    const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / "plot-model-study";
+    std::fflush(stdout);
+    const std::string cmd = "'" + script.string() + "' '" + out + "'";
+    if (!std::filesystem::exists(script) || std::system(cmd.c_str()) != 0)
+      fmt::print("note: no plots (scripts/plot-model-study needs /usr/bin/python3 with matplotlib); the CSV files in {} are complete\n", out);
+  }
+  return 0;
+}
+
+}  // namespace inerta::cli
