@@ -480,6 +480,8 @@ void bind_analysis(py::module_& m) {
       .def_readonly("equilibrium", &mbs::LinearModel::equilibrium)
       .def_readonly("t", &mbs::LinearModel::t)
       .def_readonly("N", &mbs::LinearModel::N)
+      .def_readonly("Nt", &mbs::LinearModel::Nt, "ξ = Nt (q − q_e): selects the independent coordinates")
+      .def_readonly("independent", &mbs::LinearModel::independent, "the coordinates ξ are (indices into q)")
       .def_readonly("A", &mbs::LinearModel::A, "state matrix of [ξ; ξ̇; z] (the state-space model Ẋ = A X)")
       .def_readonly("M", &mbs::LinearModel::M, "kg (kg·m² for angles)")
       .def_readonly("C", &mbs::LinearModel::C, "N·s/m")
@@ -488,7 +490,8 @@ void bind_analysis(py::module_& m) {
       .def_readonly("nz", &mbs::LinearModel::nz, "internal states");
   py::class_<mbs::Mode>(m, "Mode", "One mode: eigenvalue λ (1/s), |λ|/2π (Hz), damping ratio, real shape (body coordinates).")
       .def_readonly("eigenvalue", &mbs::Mode::eigenvalue)
-      .def_readonly("frequency_hz", &mbs::Mode::frequency_hz)
+      .def_readonly("frequency_hz", &mbs::Mode::frequency_hz, "|λ|/2π, Hz")
+      .def_readonly("damped_frequency_hz", &mbs::Mode::damped_frequency_hz, "Im λ/2π, Hz")
       .def_readonly("damping_ratio", &mbs::Mode::damping_ratio)
       .def_readonly("shape", &mbs::Mode::shape)
       .def_readonly("description", &mbs::Mode::description)

@@ -75,6 +75,7 @@ PYBIND11_MODULE(_inerta, m) {
   bind_catenary(m);
   bind_fe(m);
   bind_signal(m);
+  bind_linear(m);
   bind_analysis(m);
   bind_optim(m);
   bind_identification(m);

@@ -1,0 +1,63 @@
+"""Linear analysis of any model (state space, FRF, random response) and model design studies,
+equal to the CLI's numbers for the same inputs."""
+import re
+import subprocess
+
+import numpy as np
+import pytest
+
+import inerta
+from conftest import CLI, SRC
+
+
+def quarter_car():
+    return inerta.load_model(f"{SRC}/models/quarter_car.yaml")
+
+
+def test_state_space_has_named_states_and_the_tyre_input():
+    ss = inerta.state_space(quarter_car(), ["road"], ["a_body", "travel"])
+    assert ss.states == ["wheel.y", "body.y", "wheel.y_dot", "body.y_dot"]
+    assert ss.input_units == ["m"]
+    assert ss.A.shape == (4, 4) and ss.B.shape == (4, 1) and ss.C.shape == (2, 4)
+    # B = k_t / m_u on the wheel's rate row (hand derivation, docs/linear-analysis.md)
+    assert ss.B[2, 0] == pytest.approx(160000 / 35, rel=1e-6)
+    H = inerta.frequency_response(ss, [1.0, 10.0])
+    assert H.shape == (2, 2, 1) and H.dtype == complex
+
+
+def test_road_rms_equals_the_cli():
+    ss = inerta.state_space(quarter_car(), ["road"], ["a_body", "travel", "tyre_force"])
+    road = inerta.Road()
+    road.gd0, road.speed, road.inputs = 256e-6, 25.0, ["road"]
+    r = inerta.road_response(ss, road)
+    out = subprocess.run([CLI, "rms", f"{SRC}/models/quarter_car.yaml", "--road", "C", "--speed", "25", "--inputs", "road",
+                          "--outputs", "a_body,travel,tyre_force"], capture_output=True, text=True, check=True).stdout
+    cli = [float(x) for x in re.findall(r"rms ([0-9.eE+-]+)", out)]
+    assert np.allclose(r.rms, cli, rtol=1e-5)
+
+
+def test_white_noise_h2_and_errors():
+    ss = inerta.state_space(quarter_car(), ["F_body"], ["y_body"])
+    r = inerta.white_noise_response(ss, np.eye(1))
+    assert r.rms[0] > 0
+    with pytest.raises(inerta.InvalidArgument, match="no input 'roud'"):
+        inerta.state_space(quarter_car(), ["roud"], ["a_body"])
+    ssa = inerta.state_space(quarter_car(), ["F_body"], ["a_body"])
+    with pytest.raises(inerta.InvalidArgument, match="responds directly"):
+        inerta.white_noise_response(ssa, np.eye(1))
+
+
+def test_model_study_from_a_file_matches_the_cli(tmp_path):
+    study = inerta.load_model_study(f"{SRC}/studies/quarter_car.yaml")
+    assert study.objective.kind == "rms" and study.layouts[0] == "c"
+    r = inerta.optimise_model_layout(study, "c")
+    out = subprocess.run([CLI, "optimise", f"{SRC}/studies/quarter_car.yaml"], capture_output=True, text=True, check=True).stdout
+    m = re.search(r"\[1/4\] c +J = ([0-9.eE+-]+)", out)
+    assert m and float(m.group(1)) == pytest.approx(r.cost.J, rel=1e-5)
+    # warm-started from the damper's optimum, a parallel inerter does at least as well
+    rb = inerta.optimise_model_layout(study, "c|b", [r.values])
+    assert rb.cost.J <= r.cost.J
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(f"model: {SRC}/models/quarter_car.yaml\nstrut: k_s\n")
+    with pytest.raises(inerta.ModelError, match=r"bad.yaml:2: 'strut': 'k_s' is not a network strut"):
+        inerta.load_model_study(bad)
