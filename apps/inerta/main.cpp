@@ -82,8 +82,8 @@ void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyR
   fmt::print(to, "\n");
 }
 
-int check_model_file(const std::string& path) {
-  mbs::Model model = io::load_model(path);
+int check_model_file(const std::string& path, const std::vector<std::string>& sets) {
+  mbs::Model model = io::load_model(path, sets);
   for (const auto& note : model.notes) fmt::print("note: {}\n", note);
   fmt::print("model: {} ({})\n", model.name, path);
   fmt::print("bodies ({}){}:\n", model.bodies.size(), model.spatial() ? ", spatial (Euler parameters)" : "");
@@ -130,8 +130,8 @@ int check_model_file(const std::string& path) {
 }
 
 // A catenary file: its key numbers (a finite-element line from its data, without the form-finding).
-int check_catenary(const std::string& path) {
-  const io::CatenaryFile f = io::read_catenary_file(path);
+int check_catenary(const std::string& path, const std::vector<std::string>& sets) {
+  const io::CatenaryFile f = io::read_catenary_file(path, sets);
   fmt::print("catenary: {} ({})\n", f.name, path);
   if (f.fe) {
     const catenary::FeCatenaryData& d = *f.fe;
@@ -166,17 +166,17 @@ int check_catenary(const std::string& path) {
 }
 
 // `inerta check FILE`: a model, a lumped pantograph or a catenary file (io::file_kind).
-int cmd_check(const std::string& path) {
+int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
   const io::FileKind kind = io::file_kind(path);
-  if (kind == io::FileKind::Catenary) return check_catenary(path);
+  if (kind == io::FileKind::Catenary) return check_catenary(path, sets);
   if (kind == io::FileKind::LumpedPantograph) {
-    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path);
+    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path, sets);
     fmt::print("lumped pantograph: {} masses, head first: m = [{}] kg, k = [{}] N/m, c = [{}] N·s/m\n", d.mass.size(),
                fmt::join(d.mass, ", "), fmt::join(d.stiffness, ", "), fmt::join(d.damping, ", "));
     fmt::print("static uplift {:g} N on the lowest mass; aerodynamic uplift on the head {:g} v² + {:g} v + {:g} N (v in m/s)\n",
                d.static_uplift, d.aero_a, d.aero_b, d.aero_c);
   }
-  return check_model_file(path);
+  return check_model_file(path, sets);
 }
 
 // A CSV destination: the file given with --out (created or replaced), or standard output.
@@ -231,8 +231,9 @@ double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6
 // The pantograph with the requested suspension, and the catenary file with its overrides.
 std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::string& path, const CatenaryArgs& c,
                                                                      bool no_centripetal = false) {
-  std::vector<std::string> panto_sets, cat_sets;  // --set lumped_pantograph.* belongs to the pantograph file
-  for (const std::string& o : c.sets) (o.rfind("lumped_pantograph.", 0) == 0 ? panto_sets : cat_sets).push_back(o);
+  // --set NAME.KEY: to the model if NAME is one of its elements, bodies or joints (or lumped_pantograph),
+  // else to the catenary file.
+  const auto [panto_sets, cat_sets] = io::split_overrides(path, c.sets);
   pantograph::Pantograph p = io::load_pantograph(path, panto_sets);
   if (no_centripetal) p.model.options.centripetal = false;
   if (!c.suspension.empty()) {
@@ -259,8 +260,9 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
       ->check(CLI::IsMember({"ms", "kmh"}))
       ->capture_default_str();
   app->add_option("--set", c.sets,
-                  "Override a catenary value, e.g. catenary.kc0=5000, or a lumped pantograph's, e.g. "
-                  "lumped_pantograph.static_uplift=90 (repeatable)");
+                  "Override a value NAME.KEY=VALUE of the model (a force element, body or joint: k_s.k=12000, "
+                  "drive.speed=20, lumped_pantograph.static_uplift=90) or of the catenary (catenary.kc0=5000); "
+                  "repeatable");
   app->add_option("--contact", c.contact, "bilateral (thesis) or penalty; default: the catenary file's")
       ->check(CLI::IsMember({"bilateral", "penalty"}));
   app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
@@ -454,7 +456,7 @@ int cmd_simulate(const SimulateArgs& a) {
   }
   if (a.speed > 0) throw CLI::ValidationError("--speed", "needs --catenary FILE");
   if (!a.positions.empty()) throw CLI::ValidationError("--positions", "needs --catenary FILE");
-  mbs::Model model = io::load_model(a.model);
+  mbs::Model model = io::load_model(a.model, a.cat.sets);
   if (a.no_centripetal) model.options.centripetal = false;
   for (const auto& note : model.notes) fmt::print(info, "note: {}\n", note);
   analysis::SimulateOptions so;
@@ -674,7 +676,7 @@ int cmd_modes(const ModesArgs& a) {
   if (!a.cat.catenary.empty()) {
     auto [panto, cat] = pantograph_setup(a.model, a.cat);
     ma = analysis::modal_analysis(panto, *cat.catenary, cat.contact);
-  } else if (const pantograph::Pantograph p = io::load_model_file(a.model); p.has_rig()) {
+  } else if (const pantograph::Pantograph p = io::load_model_file(a.model, a.cat.sets); p.has_rig()) {
     ma = analysis::modal_analysis_free_head(p);
   } else {
     ma = analysis::modal_analysis(p.model);
@@ -933,6 +935,8 @@ int main(int argc, char** argv) {
   std::string check_model;
   auto* check = app.add_subcommand("check", "Validate a model (print bodies, constraints, DOF), a lumped pantograph or a catenary file");
   check->add_option("model", check_model, "Model, lumped pantograph or catenary file (YAML)")->required();
+  std::vector<std::string> check_sets;
+  check->add_option("--set", check_sets, "Override a value NAME.KEY=VALUE of the file (repeatable)");
 
   // --t-end and --sample default to the model's options; a given value must be positive.
   auto positive = [](const std::string& s) {
@@ -995,7 +999,9 @@ int main(int argc, char** argv) {
   mds->add_option("--out", ma.out, "CSV of the modes and their shapes");
   mds->add_option("--export", ma.export_json, "JSON file with the linear model (A, N, M, C, K) for MATLAB/Python");
   mds->add_option("--catenary", ma.cat.catenary, "Couple to this catenary (its mean, time-invariant part)");
-  mds->add_option("--set", ma.cat.sets, "Override a catenary value (repeatable)");
+  mds->add_option("--set", ma.cat.sets,
+                  "Override a value NAME.KEY=VALUE of the model (k_s.k=12000) or, with --catenary, of the catenary "
+                  "(repeatable)");
 
   FrfArgs fa;
   auto* frf = app.add_subcommand("frf", "Test-rig FRF: vertical accelerations over contact force (spec/04 §4.2)");
@@ -1046,7 +1052,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    if (check->parsed()) return cmd_check(check_model);
+    if (check->parsed()) return cmd_check(check_model, check_sets);
     if (sim->parsed()) return cmd_simulate(sa);
     if (adm->parsed()) return cmd_admittance(aa);
     if (swp->parsed()) return cmd_sweep(wa);
