@@ -84,8 +84,8 @@ void print_assembly(std::FILE* to, const mbs::Model& model, const mbs::AssemblyR
   fmt::print(to, "\n");
 }
 
-int check_model_file(const std::string& path) {
-  mbs::Model model = io::load_model(path);
+int check_model_file(const std::string& path, const std::vector<std::string>& sets) {
+  mbs::Model model = io::load_model(path, sets);
   for (const auto& note : model.notes) fmt::print("note: {}\n", note);
   fmt::print("model: {} ({})\n", model.name, path);
   fmt::print("bodies ({}){}:\n", model.bodies.size(), model.spatial() ? ", spatial (Euler parameters)" : "");
@@ -132,8 +132,8 @@ int check_model_file(const std::string& path) {
 }
 
 // A catenary file: its key numbers (a finite-element line from its data, without the form-finding).
-int check_catenary(const std::string& path) {
-  const io::CatenaryFile f = io::read_catenary_file(path);
+int check_catenary(const std::string& path, const std::vector<std::string>& sets) {
+  const io::CatenaryFile f = io::read_catenary_file(path, sets);
   fmt::print("catenary: {} ({})\n", f.name, path);
   if (f.fe) {
     const catenary::FeCatenaryData& d = *f.fe;
@@ -168,17 +168,17 @@ int check_catenary(const std::string& path) {
 }
 
 // `inerta check FILE`: a model, a lumped pantograph or a catenary file (io::file_kind).
-int cmd_check(const std::string& path) {
+int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
   const io::FileKind kind = io::file_kind(path);
-  if (kind == io::FileKind::Catenary) return check_catenary(path);
+  if (kind == io::FileKind::Catenary) return check_catenary(path, sets);
   if (kind == io::FileKind::LumpedPantograph) {
-    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path);
+    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path, sets);
     fmt::print("lumped pantograph: {} masses, head first: m = [{}] kg, k = [{}] N/m, c = [{}] N·s/m\n", d.mass.size(),
                fmt::join(d.mass, ", "), fmt::join(d.stiffness, ", "), fmt::join(d.damping, ", "));
     fmt::print("static uplift {:g} N on the lowest mass; aerodynamic uplift on the head {:g} v² + {:g} v + {:g} N (v in m/s)\n",
                d.static_uplift, d.aero_a, d.aero_b, d.aero_c);
   }
-  return check_model_file(path);
+  return check_model_file(path, sets);
 }
 
 // A CSV destination: the file given with --out (created or replaced), or standard output.
@@ -233,8 +233,9 @@ double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6
 // The pantograph with the requested suspension, and the catenary file with its overrides.
 std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::string& path, const CatenaryArgs& c,
                                                                      bool no_centripetal = false) {
-  std::vector<std::string> panto_sets, cat_sets;  // --set lumped_pantograph.* belongs to the pantograph file
-  for (const std::string& o : c.sets) (o.rfind("lumped_pantograph.", 0) == 0 ? panto_sets : cat_sets).push_back(o);
+  // --set NAME.KEY: to the model if NAME is one of its elements, bodies or joints (or lumped_pantograph),
+  // else to the catenary file.
+  const auto [panto_sets, cat_sets] = io::split_overrides(path, c.sets);
   pantograph::Pantograph p = io::load_pantograph(path, panto_sets);
   if (no_centripetal) p.model.options.centripetal = false;
   if (!c.suspension.empty()) {
@@ -261,8 +262,9 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
       ->check(CLI::IsMember({"ms", "kmh"}))
       ->capture_default_str();
   app->add_option("--set", c.sets,
-                  "Override a catenary value, e.g. catenary.kc0=5000, or a lumped pantograph's, e.g. "
-                  "lumped_pantograph.static_uplift=90 (repeatable)");
+                  "Override a value NAME.KEY=VALUE of the model (a force element, body or joint: k_s.k=12000, "
+                  "drive.speed=20, lumped_pantograph.static_uplift=90) or of the catenary (catenary.kc0=5000); "
+                  "repeatable");
   app->add_option("--contact", c.contact, "bilateral (thesis) or penalty; default: the catenary file's")
       ->check(CLI::IsMember({"bilateral", "penalty"}));
   app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
@@ -456,7 +458,7 @@ int cmd_simulate(const SimulateArgs& a) {
   }
   if (a.speed > 0) throw CLI::ValidationError("--speed", "needs --catenary FILE");
   if (!a.positions.empty()) throw CLI::ValidationError("--positions", "needs --catenary FILE");
-  mbs::Model model = io::load_model(a.model);
+  mbs::Model model = io::load_model(a.model, a.cat.sets);
   if (a.no_centripetal) model.options.centripetal = false;
   for (const auto& note : model.notes) fmt::print(info, "note: {}\n", note);
   analysis::SimulateOptions so;
@@ -667,18 +669,17 @@ int cmd_catenary_fit(const FitArgs& a) {
 
 struct ModesArgs {
   std::string model, out, export_json, inputs, outputs;
-  std::vector<std::string> model_sets;
   CatenaryArgs cat;
 };
 
 // Modes of the linearised model about its static equilibrium (spec/02 §2.5, spec/06 §6.3).
 int cmd_modes(const ModesArgs& a) {
   analysis::ModalAnalysis ma;
-  const bool plain = a.cat.catenary.empty() && !io::load_model_file(a.model, a.model_sets).has_rig();
+  const bool plain = a.cat.catenary.empty() && !io::load_model_file(a.model, a.cat.sets).has_rig();
   if (!a.cat.catenary.empty()) {
     auto [panto, cat] = pantograph_setup(a.model, a.cat);
     ma = analysis::modal_analysis(panto, *cat.catenary, cat.contact);
-  } else if (const pantograph::Pantograph p = io::load_model_file(a.model, a.model_sets); p.has_rig()) {
+  } else if (const pantograph::Pantograph p = io::load_model_file(a.model, a.cat.sets); p.has_rig()) {
     ma = analysis::modal_analysis_free_head(p);
   } else {
     ma = analysis::modal_analysis(p.model);
@@ -697,7 +698,7 @@ int cmd_modes(const ModesArgs& a) {
         return v;
       };
       fmt::print("state space: {}\n",
-                 inerta::cli::export_state_space(a.model, a.model_sets, a.export_json, list(a.inputs), list(a.outputs)));
+                 inerta::cli::export_state_space(a.model, a.cat.sets, a.export_json, list(a.inputs), list(a.outputs)));
     } else {
       io::write_linear_model(a.export_json, model, lin);  // for MATLAB/Python
       fmt::print("wrote {} (linear model: A, N, M, C, K)\n", a.export_json);
@@ -967,6 +968,8 @@ int main(int argc, char** argv) {
   std::string check_model;
   auto* check = app.add_subcommand("check", "Validate a model (print bodies, constraints, DOF), a lumped pantograph or a catenary file");
   check->add_option("model", check_model, "Model, lumped pantograph or catenary file (YAML)")->required();
+  std::vector<std::string> check_sets;
+  check->add_option("--set", check_sets, "Override a value NAME.KEY=VALUE of the file (repeatable)");
 
   // --t-end and --sample default to the model's options; a given value must be positive.
   auto positive = [](const std::string& s) {
@@ -1033,7 +1036,9 @@ int main(int argc, char** argv) {
   mds->add_option("--inputs", ma.inputs, "State space: inputs, comma-separated (default: every load and driving joint)");
   mds->add_option("--outputs", ma.outputs, "State space: outputs, comma-separated (default: every output)");
   mds->add_option("--catenary", ma.cat.catenary, "Couple to this catenary (its mean, time-invariant part)");
-  mds->add_option("--set", ma.cat.sets, "Override a catenary value (repeatable)");
+  mds->add_option("--set", ma.cat.sets,
+                  "Override a value NAME.KEY=VALUE of the model (k_s.k=12000) or, with --catenary, of the catenary "
+                  "(repeatable)");
 
   FrfArgs fa;
   auto* frf = app.add_subcommand("frf", "FRF from an input to outputs of any model (--input), or the test-rig FRF (spec/04 §4.2)");
@@ -1087,7 +1092,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    if (check->parsed()) return cmd_check(check_model);
+    if (check->parsed()) return cmd_check(check_model, check_sets);
     if (sim->parsed()) return cmd_simulate(sa);
     if (adm->parsed()) return cmd_admittance(aa);
     if (swp->parsed()) return cmd_sweep(wa);

@@ -55,7 +55,7 @@ def test_missing_file(cli):
 def test_bad_override(cli, twobar):
     with pytest.raises(inerta.ModelError) as e:
         inerta.load_model(model("twobar.yaml"), {"nosuch.k": 1})
-    assert "no force element or body named 'nosuch'" in str(e.value)
+    assert "no force element, body or joint named 'nosuch'" in str(e.value)
     with pytest.raises(inerta.ModelError, match=r"twobar.yaml:\d+: "):
         twobar.with_overrides({"k.k": -1})
 

@@ -40,6 +40,7 @@ Simulation simulate(const mbs::Model& model, const SimulateOptions& o, const Tim
   if (o.from_equilibrium) {
     r.equilibrium.emplace();
     mbs::static_equilibrium(model, 0.0, x, &*r.equilibrium);
+    mbs::consistent_velocities(model, 0.0, x);  // the driving joints' f′(0), q̇ = 0 otherwise
   }
   r.history = empty_history(model);
   double next_report = 0;

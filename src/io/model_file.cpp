@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -24,6 +25,57 @@
 namespace inerta::io {
 
 namespace {
+
+// Global positions of body b's centre and markers in q.
+std::vector<Eigen::Vector3d> body_points(const mbs::Model& m, const Eigen::VectorXd& q, int b) {
+  const mbs::State x{q, Eigen::VectorXd::Zero(q.size()), Eigen::VectorXd::Zero(m.n_states())};
+  std::vector<Eigen::Vector3d> pts;
+  auto at = [&](const mbs::Vec2& u, const mbs::Vec3& u3) -> Eigen::Vector3d {
+    if (m.spatial()) {
+      const mbs::SpatialFrame f = m.sframe(x, b);
+      return f.R + f.A * u3;
+    }
+    const mbs::BodyFrame f = m.frame(x, b);
+    const mbs::Vec2 r = f.q.head<2>() + f.rotate(u);
+    return {r.x(), r.y(), 0.0};
+  };
+  pts.push_back(at(mbs::Vec2::Zero(), mbs::Vec3::Zero()));
+  for (const mbs::Marker& mk : m.markers)
+    if (mk.body == b) pts.push_back(at(mk.u, mk.u3));
+  return pts;
+}
+
+// A warning when assembly moves a body's point by more than kLargeCorrection of the model's size
+// (the largest distance between two tabulated points): the tabulated pose was probably not meant
+// (degrees written as radians, a wrong sign). docs/assumptions.md#assembly-warnings.
+constexpr double kLargeCorrection = 0.1;
+void warn_large_correction(const detail::Loader& ld, const YAML::Node& bodies, const Eigen::VectorXd& q) {
+  const mbs::Model& m = ld.model;
+  const Eigen::VectorXd q0 = m.q0();
+  std::vector<Eigen::Vector3d> all;
+  for (const mbs::Marker& mk : m.markers)
+    if (mk.body < 0) all.push_back(m.spatial() ? Eigen::Vector3d(mk.u3) : Eigen::Vector3d(mk.u.x(), mk.u.y(), 0.0));
+  for (int b = 0; b < static_cast<int>(m.bodies.size()); ++b)
+    for (const auto& p : body_points(m, q0, b)) all.push_back(p);
+  double size = 0;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j) size = std::max(size, (all[i] - all[j]).norm());
+  for (int b = 0; b < static_cast<int>(m.bodies.size()); ++b) {
+    const auto before = body_points(m, q0, b), after = body_points(m, q, b);
+    double move = 0;
+    for (std::size_t k = 0; k < before.size(); ++k) move = std::max(move, (after[k] - before[k]).norm());
+    if (size > 0 && move > kLargeCorrection * size) {
+      const YAML::Node at = bodies.IsSequence() && static_cast<std::size_t>(b) < bodies.size()
+                                ? bodies[static_cast<std::size_t>(b)]
+                                : bodies;
+      ld.rd.warning(at, "",
+                    fmt::format("assembly moved body '{}' by {:.4g} m (largest displacement of its points), more than "
+                                "{:g} % of the model's size {:.4g} m; check its tabulated position and angle against "
+                                "the joints (angle is in rad, angle_deg in degrees)",
+                                m.bodies[static_cast<std::size_t>(b)].name, move, 100 * kLargeCorrection, size));
+    }
+  }
+}
 
 // The whole file: the model and, if the file has a `pantograph:` section, its contact point and rig joint.
 pantograph::Pantograph parse_file(const std::string& text, const std::string& source,
@@ -44,6 +96,7 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
   }
   if (!overrides.empty()) detail::apply_overrides(root, overrides, source);
   detail::Loader ld{detail::Reader(source), {}};
+  ld.rd.set_notes(&ld.model.notes);
   std::pair<int, int> panto{-1, -1};
   const detail::Reader& rd = ld.rd;
   try {
@@ -66,6 +119,7 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
     ld.model.finalize();
     try {
       mbs::State x = mbs::assemble(ld.model, 0.0);
+      warn_large_correction(ld, root["bodies"], x.q);
       ld.forces(root["forces"], x.q);
       ld.model.finalize();  // internal states, and distance joints of rigid networks
     } catch (const NumericalError& e) {

@@ -81,7 +81,7 @@ void driving(const JointSite& s) {
   jt.component = c == "x" ? 0 : c == "y" ? 1 : 2;
   Vec3 qj = s.ld.q_of(s.q_tabulated, jt.body_j);
   jt.value0 = jt.component == 2 ? qj.z() : (qj.head<2>() + mbs::rotate(qj.z(), jt.u_j))[jt.component];
-  jt.motion = time_function(rd, rd.need(s.node, "motion", s.what), "motion");
+  jt.motion = time_function(rd, rd.need(s.node, "motion", s.what), "motion", true);
 }
 
 // Spatial (mbs::evaluate_joint_3d): axes are global directions at the tabulated configuration ------
@@ -130,7 +130,7 @@ void driving_3d(const JointSite& s) {
     rd.fail(s.node["coordinate"], "coordinate", "expected x, y or z (a 3D model drives point coordinates)");
   jt.component = c == "x" ? 0 : c == "y" ? 1 : 2;
   jt.value0 = (R0(s.ld, jt.body_j) + A0(s.ld, jt.body_j) * jt.p_j)[jt.component];
-  jt.motion = time_function(rd, rd.need(s.node, "motion", s.what), "motion");
+  jt.motion = time_function(rd, rd.need(s.node, "motion", s.what), "motion", true);
 }
 
 const std::vector<std::string> kDrivingKeys{"body", "marker", "coordinate", "motion"};

@@ -45,6 +45,10 @@ struct Loader {
   std::pair<int, int> pantograph(const YAML::Node& n);
 };
 
+/// Whether an override NAME.KEY belongs to the model file: NAME a force element or body, or a joint
+/// whose motion has KEY (or KEY = motion.…) (model_overrides.cpp).
+bool names_model_item(const YAML::Node& root, const std::string& name, const std::string& key);
+
 /// Applies "NAME.KEY=VALUE" overrides to the YAML tree before it is read (model_overrides.cpp).
 void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides, const std::string& source);
 

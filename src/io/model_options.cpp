@@ -8,7 +8,7 @@ namespace inerta::io::detail {
 
 void Loader::options(const YAML::Node& n) {
   if (!n.IsDefined()) return;
-  rd.keys(n, "options", {"gravity", "baumgarte", "centripetal", "t_end", "sample"});
+  rd.keys(n, "options", {"gravity", "baumgarte", "centripetal", "t_end", "sample", "max_violation"});
   if (YAML::Node g = n["gravity"]; g.IsDefined()) {
     if (g.IsSequence() && model.spatial())
       model.options.g3 = rd.vec3(g, "gravity");
@@ -37,6 +37,10 @@ void Loader::options(const YAML::Node& n) {
   model.options.sample = rd.number_or(n, "sample", model.options.sample);
   if (!(model.options.t_end > 0)) rd.fail(n["t_end"], "t_end", "must be > 0 (s)");
   if (!(model.options.sample > 0)) rd.fail(n["sample"], "sample", "must be > 0 (s)");
+  model.options.max_violation = rd.number_or(n, "max_violation", model.options.max_violation);
+  if (!(model.options.max_violation > 0))
+    rd.fail(n["max_violation"], "max_violation",
+            "must be > 0 (m or rad; .inf switches the check off): the largest constraint violation |C| a run may reach");
 }
 
 }  // namespace inerta::io::detail

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <set>
 
@@ -112,49 +114,32 @@ mbs::Vec3 Reader::unit3(const YAML::Node& n, const std::string& key) const {
   return v.normalized();
 }
 
+void Reader::warning(const YAML::Node& at, const std::string& key, const std::string& what) const {
+  if (!notes_) return;
+  std::string where = file_;
+  if (at.IsDefined() && at.Mark().line >= 0) where += fmt::format(":{}", at.Mark().line + 1);
+  notes_->push_back(fmt::format("warning: {}: {}{}", where, key.empty() ? "" : "'" + key + "': ", what));
+}
+
+std::string Reader::relative_path(const std::string& path) const {
+  const std::filesystem::path p(path), dir = std::filesystem::path(file_).parent_path();
+  return p.is_absolute() || dir.empty() ? path : (dir / p).string();
+}
+
 double Reader::angle(const YAML::Node& map, const std::string& key, double fallback) const {
   YAML::Node r = map[key], d = map[key + "_deg"];
   if (r.IsDefined() && d.IsDefined())
     fail(d, key + "_deg", fmt::format("give either {} (rad) or {}_deg, not both", key, key));
-  if (r.IsDefined()) return number(r, key);
+  if (r.IsDefined()) {
+    const double a = number(r, key);
+    if (std::abs(a) > 2 * std::numbers::pi)
+      warning(r, key,
+              fmt::format("{:g} rad is more than 2π in magnitude; {} is in radians (for degrees write {}_deg: {:g})", a,
+                          key, key, a));
+    return a;
+  }
   if (d.IsDefined()) return number(d, key + "_deg") * std::numbers::pi / 180.0;
   return fallback;
-}
-
-mbs::TimeFunction time_function(const Reader& rd, const YAML::Node& n, const std::string& key) {
-  if (n.IsScalar()) {
-    const double value = rd.number(n, key);
-    return rd.guard_value(n, key, [&] { return mbs::TimeFunction::constant(value); });
-  }
-  if (!n.IsMap()) rd.fail(n, key, "expected a number or a function {type: constant|sine|table, ...}");
-  std::string type = rd.text(n, "type", key);
-  if (type == "constant") {
-    const std::string what = key + " (constant)";
-    rd.keys(n, what, {"type", "value"});
-    const double value = rd.number(n, "value", key);
-    return rd.guard(n, what, [&] { return mbs::TimeFunction::constant(value); });
-  }
-  if (type == "sine") {
-    const std::string what = key + " (sine)";
-    rd.keys(n, what, {"type", "amplitude", "frequency", "phase", "phase_deg", "offset"});
-    const double f = rd.number(n, "frequency", key), amplitude = rd.number(n, "amplitude", key);
-    const double phase = rd.angle(n, "phase", 0.0), offset = rd.number_or(n, "offset", 0.0);
-    return rd.guard(n, what, [&] { return mbs::TimeFunction::sine(amplitude, f, phase, offset); });
-  }
-  if (type == "table") {
-    const std::string what = key + " (table)";
-    rd.keys(n, what, {"type", "points"});
-    YAML::Node pts = rd.need(n, "points", key);
-    if (!pts.IsSequence()) rd.fail(pts, "points", "expected a list of [t, value] pairs");
-    std::vector<double> t, v;
-    for (const auto& p : pts) {
-      const mbs::Vec2 tv = rd.vec2(p, "points");
-      t.push_back(tv.x());
-      v.push_back(tv.y());
-    }
-    return rd.guard(n, what, [&] { return mbs::TimeFunction::table(std::move(t), std::move(v)); });
-  }
-  rd.fail(n["type"], "type", fmt::format("unknown function type '{}'; expected constant, sine or table", type));
 }
 
 }  // namespace inerta::io::detail

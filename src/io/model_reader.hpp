@@ -19,6 +19,10 @@ class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
   const std::string& file() const { return file_; }
+  /// Where warning() puts its messages (the model's notes, printed by the CLI); none by default.
+  void set_notes(std::vector<std::string>* notes) { notes_ = notes; }
+  /// A warning "file:line: 'key': what" (nothing if no notes were set).
+  void warning(const YAML::Node& at, const std::string& key, const std::string& what) const;
 
   /// "file:line: 'key': what" at node `at` (no line if it is undefined, no key if `key` is empty).
   [[noreturn]] void fail(const YAML::Node& at, const std::string& key, const std::string& what) const;
@@ -64,14 +68,20 @@ class Reader {
   mbs::Vec3 vec3(const YAML::Node& n, const std::string& key) const;
   mbs::Vec3 unit3(const YAML::Node& n, const std::string& key) const;  ///< non-zero, normalised
   /// Angle from `key` (rad) or `key_deg` (degrees), not both; `fallback` if neither is given.
+  /// A value in rad above 2π in magnitude is a warning (degrees given as radians?).
   double angle(const YAML::Node& map, const std::string& key, double fallback) const;
+  /// A path relative to the file's folder (as written if absolute, or if the file has no folder).
+  std::string relative_path(const std::string& path) const;
 
  private:
   std::string file_;
+  std::vector<std::string>* notes_ = nullptr;
 };
 
-/// A time function (docs/model-format.md#time-functions): a number, or {type: constant|sine|table, ...};
-/// its values are checked by TimeFunction's factories.
-mbs::TimeFunction time_function(const Reader& rd, const YAML::Node& n, const std::string& key);
+/// A time function (docs/model-format.md#time-functions): a number, or {type: constant|sine|table|
+/// ramp|step|chirp|sum_of_sines|polynomial|road, ...}; its values are checked by TimeFunction's
+/// factories. For a driving joint (`driving`) a function with corners (TimeFunction::smooth) is
+/// refused unless the mapping says `accept_linear: true`.
+mbs::TimeFunction time_function(const Reader& rd, const YAML::Node& n, const std::string& key, bool driving = false);
 
 }  // namespace inerta::io::detail

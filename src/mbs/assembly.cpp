@@ -12,16 +12,6 @@
 namespace inerta::mbs {
 
 namespace {
-// Name of the joint owning constraint row r, for messages.
-std::string row_name(const Model& model, int r) {
-  for (const Joint& j : model.joints)
-    if (r >= j.row && r < j.row + j.rows()) return fmt::format("joint '{}' (equation {})", j.name, r - j.row + 1);
-  for (std::size_t b = 0; b < model.bodies.size() && model.spatial(); ++b)
-    if (r == model.norm_row(static_cast<int>(b)))
-      return fmt::format("the Euler-parameter normalisation of body '{}'", model.bodies[b].name);
-  return "?";
-}
-
 int argmax_abs(const Eigen::VectorXd& v) {
   Eigen::Index k = 0;
   if (v.size() > 0) v.cwiseAbs().maxCoeff(&k);
@@ -54,7 +44,7 @@ State assemble(const Model& model, double t0, AssemblyReport* report) {
           fmt::format("assembly did not converge after {} Newton iterations: max |C| = {:.3g} in {}; "
                       "the tabulated positions may be too far from a configuration that satisfies the joints, "
                       "or the held coordinates over-constrain the mechanism",
-                      it, rep.residual, row_name(model, r)));
+                      it, rep.residual, model.constraint_name(r)));
     }
     for (int c = 0; c < nf; ++c) Jf.col(c) = ws.Cq.col(free[static_cast<std::size_t>(c)]);
     Eigen::VectorXd step = Jf.completeOrthogonalDecomposition().solve(-ws.C);  // minimum-norm step
@@ -64,14 +54,18 @@ State assemble(const Model& model, double t0, AssemblyReport* report) {
   rep.dq = x.q - model.q0();
   rep.largest = argmax_abs(rep.dq);
 
-  // Velocities consistent with C_q q̇ + C_t = 0 (eq. 4.2), minimum-norm change.
-  if (m > 0) {
-    evaluate_constraints(model, t0, x, ws);
-    Eigen::VectorXd vres = ws.Cq * x.qd + ws.Ct;
-    x.qd -= ws.Cq.completeOrthogonalDecomposition().solve(vres);
-  }
+  consistent_velocities(model, t0, x);
   if (report) *report = rep;
   return x;
+}
+
+void consistent_velocities(const Model& model, double t, State& x) {
+  if (model.n_constraints() == 0) return;
+  // C_q q̇ + C_t = 0 (eq. 4.2), minimum-norm change of q̇.
+  Workspace ws(model);
+  evaluate_constraints(model, t, x, ws);
+  const Eigen::VectorXd vres = ws.Cq * x.qd + ws.Ct;
+  x.qd -= ws.Cq.completeOrthogonalDecomposition().solve(vres);
 }
 
 void static_equilibrium(const Model& model, double t0, State& x, EquilibriumReport* report) {

@@ -1,5 +1,7 @@
 #include "inerta/mbs/model.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 #include "inerta/mbs/parameter_check.hpp"
@@ -29,6 +31,15 @@ int Model::find_joint(const std::string& name) const {
 }
 int Model::find_force(const std::string& name) const {
   return find_named(forces, name, [](const auto& f) { return f->name(); });
+}
+
+std::string Model::constraint_name(int r) const {
+  for (const Joint& j : joints)
+    if (r >= j.row && r < j.row + j.rows()) return fmt::format("joint '{}' (equation {})", j.name, r - j.row + 1);
+  for (std::size_t b = 0; b < bodies.size() && spatial(); ++b)
+    if (r == norm_row(static_cast<int>(b)))
+      return fmt::format("the Euler-parameter normalisation of body '{}'", bodies[b].name);
+  return fmt::format("constraint row {}", r);
 }
 
 std::string Model::coord_name(int k) const {

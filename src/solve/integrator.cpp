@@ -123,6 +123,15 @@ void setup(Sundials& s, Problem& p, const mbs::State& x, double t0, const Integr
   }
 }
 
+// The run has left the constraint manifold (docs/assumptions.md#constraint-drift).
+[[noreturn]] void violation_error(const mbs::Model& model, double t, int row, double v) {
+  throw NumericalError(fmt::format(
+      "constraint violation {:.3g} (m or rad) at t = {:.6g} s in {} exceeds the bound {:g} (options.max_violation): "
+      "the coordinates no longer satisfy the joints; a driving function that is not smooth (corners, a linear "
+      "table) or too loose tolerances make the constraints drift",
+      v, t, model.constraint_name(row), model.options.max_violation));
+}
+
 void check_arguments(const mbs::Model& model, const mbs::State& x, const IntegratorOptions& opt) {
   if (!(opt.rtol > 0) || !(opt.atol > 0)) throw std::invalid_argument("rtol and atol must be > 0");
   if (x.z.size() != model.n_states()) throw std::invalid_argument("state has the wrong number of internal states");
@@ -162,8 +171,10 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
     if (model.n_constraints() == 0) return;
     load_state(yv, n, nz, x);
     mbs::evaluate_constraints(model, t, x, ws);
-    double v = ws.C.cwiseAbs().maxCoeff();
+    Eigen::Index row = 0;
+    double v = ws.C.cwiseAbs().maxCoeff(&row);
     if (v > stats.max_violation) stats.max_violation = v, stats.t_max_violation = t;
+    if (v > model.options.max_violation) violation_error(model, t, static_cast<int>(row), v);
     ws.c.noalias() = ws.Cq * x.qd;
     ws.c += ws.Ct;
     stats.max_velocity_violation = std::max(stats.max_velocity_violation, ws.c.cwiseAbs().maxCoeff());
@@ -268,6 +279,12 @@ void Stepper::advance(double t_end) {
                                      flag, m.p.solver_message));
   load_state(N_VGetArrayPointer(m.s.y), m.p.n, m.p.nz, m.x);
   m.t = t_end;
+  if (m.p.model.n_constraints() > 0) {  // the bound of integrate(), at the end of each advance
+    mbs::evaluate_constraints(m.p.model, t_end, m.x, m.p.ws);
+    Eigen::Index row = 0;
+    const double v = m.p.ws.C.cwiseAbs().maxCoeff(&row);
+    if (v > m.p.model.options.max_violation) violation_error(m.p.model, t_end, static_cast<int>(row), v);
+  }
 }
 
 RunStats Stepper::stats() const {

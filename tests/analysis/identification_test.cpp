@@ -166,7 +166,7 @@ TEST(ModelOverrides, ErrorsNameTheOverride) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message("nothing.k=1").find("no force element or body named 'nothing'"), std::string::npos);
+  EXPECT_NE(message("nothing.k=1").find("no force element, body or joint named 'nothing'"), std::string::npos);
   EXPECT_NE(message("c2.q=1").find("'c2' has no value 'q'; its values: c"), std::string::npos) << message("c2.q=1");
   EXPECT_NE(message("c2.c=abc").find("'abc' is not a number"), std::string::npos);
   EXPECT_NE(message("c2.name=3").find("'name' is not a number"), std::string::npos);

@@ -144,7 +144,7 @@ TEST_F(Identify, FrfFitErrors) {
   const std::string csv = write("meas.csv", "f_hz,P_ay_re,P_ay_im\n1,0.1,0.1\n2,0.1,0.1\n");
   Result r = run("frf-fit " + quote(model) + " --measured " + quote(csv) + " --fit nothing.c");
   EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_TRUE(contains(r.err, "parameter 'nothing.c': no force element or body named 'nothing'")) << r.err;
+  EXPECT_TRUE(contains(r.err, "parameter 'nothing.c': no force element, body or joint named 'nothing'")) << r.err;
   r = run("frf-fit " + quote(model) + " --measured " + quote(csv) + " --fit c2.c --band 20:30");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_TRUE(contains(r.err, "no measured frequency in the band 20–30 Hz (data cover 1–2 Hz)")) << r.err;

@@ -17,9 +17,14 @@ struct AssemblyReport {
 };
 
 /// Newton solve of C(q, t0) = 0 from the tabulated positions with Model::held coordinates fixed
-/// (minimum-norm correction of the free ones), then projection of the initial velocities onto
-/// C_q q̇ = −C_t. Throws NumericalError if it does not converge.
+/// (minimum-norm correction of the free ones), then consistent_velocities. Throws NumericalError
+/// if it does not converge.
 State assemble(const Model& model, double t0, AssemblyReport* report = nullptr);
+
+/// The velocity level of the constraints (eq. 4.2): x.qd receives its minimum-norm correction onto
+/// C_q q̇ = −C_t at (x.q, t), so that driving joints move at their prescribed f′(t) (from
+/// x.qd = 0 after static_equilibrium: the least-norm velocities that the drives impose).
+void consistent_velocities(const Model& model, double t, State& x);
 
 struct EquilibriumReport {
   int iterations = 0;
@@ -30,7 +35,9 @@ struct EquilibriumReport {
 
 /// Static equilibrium: Q(q, q̇ = 0, t0) − C_qᵀ λ = 0, C(q, t0) = 0 (damped Newton, Jacobian by
 /// central differences). x.q is the start and receives the solution; x.qd is set to zero and the
-/// internal states x.z to their steady values (ForceElement::relax).
+/// internal states x.z to their steady values (ForceElement::relax). Driving joints are held at
+/// f(t0); a run from this state calls consistent_velocities for their velocity f′(t0)
+/// (analysis::simulate with from_equilibrium).
 void static_equilibrium(const Model& model, double t0, State& x, EquilibriumReport* report = nullptr);
 
 }  // namespace inerta::mbs

@@ -52,6 +52,8 @@ struct Options {
   bool centripetal = true;  ///< model-wide switch of the inerter correction (eq. 3.9)
   double t_end = 10.0;      ///< default simulation end time, s
   double sample = 0.01;     ///< default output sampling interval, s
+  /// A run fails when max |C(q, t)| exceeds this (m or rad; docs/assumptions.md#constraint-drift).
+  double max_violation = 1e-4;
 };
 
 struct Model {
@@ -79,6 +81,8 @@ struct Model {
   int find_joint(const std::string& name) const;
   int find_force(const std::string& name) const;
   std::string coord_name(int k) const;  ///< "bar1.theta" (2D), "bar1.e2" (3D)
+  /// Constraint row r for messages: "joint 'pin' (equation 2)", or a 3D body's normalisation.
+  std::string constraint_name(int row) const;
   /// 3D: the row of body b's normalisation constraint pᵀp − 1 = 0 (after the joints' rows).
   int norm_row(int b) const { return n_joint_rows_ + b; }
   /// Rows of eq. 4.12 as solved by `accelerations`: all in 2D, the joints' in 3D (the normalisation
