@@ -17,6 +17,7 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/model_study_file.hpp"
 #include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
 
 namespace inerta::cli {
@@ -176,9 +177,12 @@ int run_rms() {
   if (road) {
     analysis::Road rd;
     if (!a.road_class.empty()) {
-      if (a.road_class.size() != 1 || a.road_class[0] < 'A' || a.road_class[0] > 'H')
+      try {
+        if (a.road_class.size() != 1) throw InvalidArgument("--road");
+        rd.gd0 = mbs::iso8608_gd0(a.road_class[0]);
+      } catch (const InvalidArgument&) {
         throw CLI::ValidationError("--road", "expected an ISO 8608 class A to H, got '" + a.road_class + "'");
-      rd.gd0 = 16e-6 * std::pow(4.0, a.road_class[0] - 'A');
+      }
     } else {
       rd.gd0 = a.gd0;
     }

@@ -42,6 +42,7 @@ class SearchOptions:
     starts: int
     seed: int
     initial_step: float
+    initial_values: list[list[float]]
     min_step: float
     max_evaluations: int
     def __init__(self, starts: int = 4, seed: int = 1, initial_step: float = 1.0, min_step: float = 1e-3,

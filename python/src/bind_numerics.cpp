@@ -41,13 +41,15 @@ void bind_numerics(py::module_& m) {
       });
   py::class_<numerics::Options>(m, "SearchOptions", "Options of the pattern search.")
       .def(py::init([](int starts, unsigned seed, double initial_step, double min_step, int max_evaluations) {
-             return numerics::Options{starts, seed, initial_step, min_step, max_evaluations};
+             return numerics::Options{starts, seed, initial_step, min_step, max_evaluations, {}};
            }),
            py::arg("starts") = 4, py::arg("seed") = 1u, py::arg("initial_step") = 1.0, py::arg("min_step") = 1e-3,
            py::arg("max_evaluations") = 5000)
       .def_readwrite("starts", &numerics::Options::starts, "random starts (the first at the box centre)")
       .def_readwrite("seed", &numerics::Options::seed)
       .def_readwrite("initial_step", &numerics::Options::initial_step, "decades")
+      .def_readwrite("initial_values", &numerics::Options::initial_values,
+                     "warm starts after the random ones: one value per variable (0 open, inf rigid)")
       .def_readwrite("min_step", &numerics::Options::min_step, "decades")
       .def_readwrite("max_evaluations", &numerics::Options::max_evaluations, "per start")
       .def("__repr__", [](const numerics::Options& o) {

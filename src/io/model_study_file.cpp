@@ -10,6 +10,7 @@
 #include "inerta/error.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/yaml_errors.hpp"
+#include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
 
 namespace inerta::io {
@@ -20,12 +21,6 @@ namespace {
 bool is_scalar(const YAML::Node& n) { return n.IsDefined() && n.IsScalar(); }
 bool is_map(const YAML::Node& n) { return n.IsDefined() && n.IsMap(); }
 bool is_seq(const YAML::Node& n) { return n.IsDefined() && n.IsSequence(); }
-
-// ISO 8608 G_d(n0) of a class (TODO(merge): the library's mbs road header).
-double iso8608_gd0(char c) {
-  if (c < 'A' || c > 'H') throw InvalidArgument("class");
-  return 16e-6 * std::pow(4.0, c - 'A');
-}
 
 void only_keys(const std::string& path, const YAML::Node& map, const std::string& where,
                const std::vector<std::string>& allowed) {
@@ -112,7 +107,7 @@ optim::Objective read_objective(const std::string& path, const YAML::Node& o, co
         const std::string c = road["class"].Scalar();
         try {
           if (c.size() != 1) throw InvalidArgument("class");
-          r.gd0 = iso8608_gd0(c[0]);
+          r.gd0 = mbs::iso8608_gd0(c[0]);
         } catch (const InvalidArgument&) {
           yaml_fail(path, road["class"], "class", fmt::format("expected an ISO 8608 class A to H, got '{}'", c));
         }

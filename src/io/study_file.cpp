@@ -22,11 +22,15 @@ optim::Study read_study(const std::string& path) {
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string k = it->first.as<std::string>();
     static const char* allowed[] = {"name",   "model",   "catenary", "catenaries",
-                                    "speeds", "layouts", "search",   "harmonics"};
+                                    "speeds", "layouts", "search",   "harmonics", "objective"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
       yaml_fail(path, it->first, k,
-                    "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics");
+                    "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics, objective");
+  }
+  if (const YAML::Node o = root["objective"]; o.IsDefined()) {  // optional: a pantograph study's objective is J2
+    if (!o.IsMap() || o.size() != 1 || !o["type"].IsDefined() || !o["type"].IsScalar() || o["type"].Scalar() != "j2")
+      yaml_fail(path, o, "objective", "a study with catenary: optimises J2; expected objective: {type: j2} or no objective");
   }
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   auto rel = [&](const YAML::Node& n, const char* key) {
