@@ -19,6 +19,7 @@
 #include "inerta/mbs/model_check.hpp"
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/mbs/output.hpp"
+#include "inerta/mbs/road.hpp"
 #include "inerta/mbs/struts.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
@@ -134,6 +135,12 @@ solve::IntegratorOptions integrator_arg(const py::object& base, const py::object
 }
 
 namespace {
+
+// An ISO 8608 class given as a one-letter string ("C").
+char road_class(const std::string& c) {
+  if (c.size() != 1) throw InvalidArgument("ISO 8608 road", "class", "expected a class A to H, got '" + c + "'");
+  return c[0];
+}
 
 // ---- Force elements, for inspection ----------------------------------------------------------------
 
@@ -293,7 +300,9 @@ void bind_model(py::module_& m) {
       .def_readonly("beta", &mbs::Options::beta, "Baumgarte β, 1/s")
       .def_readonly("centripetal", &mbs::Options::centripetal, "the inerter's centripetal correction (eq. 3.20) on")
       .def_readonly("t_end", &mbs::Options::t_end, "default simulation end time, s")
-      .def_readonly("sample", &mbs::Options::sample, "default output sampling interval, s");
+      .def_readonly("sample", &mbs::Options::sample, "default output sampling interval, s")
+      .def_readonly("max_violation", &mbs::Options::max_violation,
+                    "a run fails when max |C| exceeds this, m or rad (options.max_violation)");
 
   py::class_<State>(m, "State",
                     "A mutable state: coordinates q (m, rad; Euler parameters in 3D), velocities qd and the internal "
@@ -554,6 +563,11 @@ void bind_model(py::module_& m) {
     return parse_model_handle(text, source, override_strings(o));
   }, py::arg("text"), py::arg("source") = "<text>", py::arg("overrides") = py::none(),
         "A model from YAML text (io::parse_model_file); `source` names it in error messages.");
+  m.def("split_overrides", [](const py::object& path, const py::object& overrides) {
+    return io::split_overrides(path_arg(path), override_strings(overrides));
+  }, py::arg("path"), py::arg("overrides"),
+        "(model overrides, catenary overrides): --set routing of the CLI (io::split_overrides): NAME a force "
+        "element, body or joint (with that motion key) of the model file goes to the model.");
   m.def("model_value", [](const std::string& text, const std::string& source, const std::string& key) {
     return io::model_value(text, source, key);
   }, py::arg("text"), py::arg("source"), py::arg("key"),
@@ -642,6 +656,25 @@ void bind_model(py::module_& m) {
   }, py::arg("model"), py::arg("state") = py::none(), py::arg("t0") = 0.0,
         "(State, EquilibriumReport): static equilibrium under all loads from `state` (default: assembled), "
         "velocities zero, internal states relaxed.");
+  m.def("consistent_velocities", [](const Model& h, const State& state, double t) {
+    State x = state;
+    check_state(h.model(), x);
+    mbs::consistent_velocities(h.model(), t, x);
+    return x;
+  }, py::arg("model"), py::arg("state"), py::arg("t") = 0.0,
+        "State: a copy of `state` whose velocities are corrected (least norm) onto C_q q̇ = −C_t (eq. 4.2), e.g. the "
+        "driving joints' velocities after static_equilibrium.");
+  m.def("iso8608_gd0", [](const std::string& c) { return mbs::iso8608_gd0(road_class(c)); }, py::arg("road_class"),
+        "G_d(n0) of ISO 8608 class 'A'..'H', m³ (one-sided, n0 = 0.1 cycles/m): 16e-6 · 4^k.");
+  m.def("iso8608_psd", [](const std::string& c, double n) { return mbs::iso8608_psd(road_class(c), n); },
+        py::arg("road_class"), py::arg("n"), "G_d(n) = G_d(n0) (n/n0)^-2, m³ (n in cycles/m).");
+  m.def("iso8608_velocity_psd", [](const std::string& c, double v) { return mbs::iso8608_velocity_psd(road_class(c), v); },
+        py::arg("road_class"), py::arg("speed"),
+        "White one-sided PSD of the vertical velocity at speed v (m/s): 4π² n0² G_d(n0) v, m²/s² per Hz.");
+  m.def("iso8608_variance",
+        [](const std::string& c, double lo, double hi) { return mbs::iso8608_variance(road_class(c), lo, hi); },
+        py::arg("road_class"), py::arg("n_min"), py::arg("n_max"),
+        "∫ G_d dn over [n_min, n_max] (cycles/m), m²: the profile variance in that band.");
   m.def("accelerations", [](const Model& h, double t, const State& x) {
     check_state(h.model(), x);
     mbs::Workspace ws(h.model());

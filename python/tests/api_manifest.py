@@ -80,6 +80,11 @@ BOUND = {
     "io::is_model_study": "is_model_study",
     "mbs::assemble": "assemble",
     "mbs::static_equilibrium": "static_equilibrium",
+    "mbs::consistent_velocities": "consistent_velocities",
+    "mbs::iso8608_gd0": "iso8608_gd0",
+    "mbs::iso8608_psd": "iso8608_psd",
+    "mbs::iso8608_velocity_psd": "iso8608_velocity_psd",
+    "mbs::iso8608_variance": "iso8608_variance",
     "mbs::accelerations": "accelerations",
     "mbs::evaluate_constraints": "constraints",
     "mbs::evaluate_forces": "forces",
@@ -245,6 +250,7 @@ BOUND = {
     "io::parse_model_file": "parse_model",
     "io::parse_pantograph": "parse_model",  # then Model.is_pantograph
     "io::model_value": "model_value",
+    "io::split_overrides": "split_overrides",
     "io::CatenaryFile": "CatenaryFile",
     "io::load_catenary": "load_catenary",
     "io::load_study": "load_study",
@@ -286,6 +292,8 @@ EXCLUDED = {
     "mbs::spatial_vector": _KINEMATICS,
     "mbs::check::*": "parameter checks of the element constructors; their failures reach Python as "
                      "inerta.InvalidArgument / ModelError with the file's line",
+    "mbs::RoadProfile": "the parameters of a road time function (TimeFunction::road), written in model files as "
+                        "type: road; the ISO 8608 class table is bound (iso8608_gd0, iso8608_psd, ...)",
     "mbs::TimeFunction": "time functions of point forces and driving joints are written in model files "
                          "(docs/model-format.md); the Model is immutable and does not expose them",
     "numerics::Step": "finite differences are C++ templates over functors (the library's Jacobians); "

@@ -116,6 +116,9 @@ def test_functions_of_a_state(twobar):
     assert twobar.forces[2].power(twobar, 0.0, x) == 0.0
     x.qd[:] = 0.1  # State arrays are views of the state's memory
     assert inerta.kinetic_energy(twobar, x) > 0
+    with pytest.raises(inerta.NumericalError, match="initial velocities violate"):  # drifts off the joints
+        inerta.integrate(twobar, x, 0.0, 1.0, 0.1, rtol=1e-8)
+    x = inerta.consistent_velocities(twobar, x)
     y, st = inerta.integrate(twobar, x, 0.0, 1.0, 0.1, rtol=1e-8)
     assert st.steps > 0 and not np.allclose(y.q, x.q)
     e, erep = inerta.static_equilibrium(inerta.load_model(model("onedof.yaml")))
@@ -124,3 +127,36 @@ def test_functions_of_a_state(twobar):
         inerta.accelerations(twobar, 0.0, inerta.State([0.0], [0.0]))
     s = inerta.State(x.q, x.qd)
     assert np.array_equal(s.copy().q, x.q) and "6 coordinates" in repr(s)
+
+
+def test_iso8608_road_classes_and_overrides_routing():
+    # ISO 8608: G_d(n0) = 16e-6 m³ for class A, ×4 per class; G_d ∝ n^-2; white velocity PSD 4π² n0² G_d0 v.
+    assert inerta.iso8608_gd0("A") == pytest.approx(16e-6) and inerta.iso8608_gd0("c") == pytest.approx(256e-6)
+    assert inerta.iso8608_psd("B", 0.2) == pytest.approx(64e-6 / 4)
+    assert inerta.iso8608_velocity_psd("C", 20) == pytest.approx(4 * np.pi**2 * 0.01 * 256e-6 * 20)
+    assert inerta.iso8608_variance("C", 0.05, 2) == pytest.approx(256e-6 * 0.01 * (1 / 0.05 - 1 / 2))
+    with pytest.raises(inerta.InvalidArgument, match="class"):
+        inerta.iso8608_gd0("J")
+    to_model, to_catenary = inerta.split_overrides(model("hsx.yaml"), ["head.mass=5", "catenary.kc0=5000"])
+    assert list(to_model) == ["head.mass=5"] and list(to_catenary) == ["catenary.kc0=5000"]
+
+
+def test_consistent_velocities_give_the_drive_its_speed():
+    m = inerta.parse_model("""
+options: {gravity: true}
+ground: {markers: {P: [0, 0]}}
+bodies:
+  - {name: base, mass: 1, inertia: 0.1, position: [0, 0]}
+  - {name: top, mass: 2, inertia: 0.1, position: [0, 1]}
+joints:
+  - {name: rail, type: prismatic, markers: [ground.P, base.cm], axis: [0, 1]}
+  - {name: rail2, type: prismatic, markers: [ground.P, top.cm], axis: [0, 1]}
+  - {name: drive, type: driving, body: base, coordinate: y, motion: {type: ramp, slope: 0.2}}
+forces:
+  - {name: k, type: spring, markers: [base.cm, top.cm], k: 2000, free_length: 1}
+""")
+    x, _ = inerta.static_equilibrium(m)
+    assert np.all(x.qd == 0)
+    y = inerta.consistent_velocities(m, x)
+    assert y.qd[1] == pytest.approx(0.2) and y.qd[4] == pytest.approx(0.0, abs=1e-12)
+    assert m.options.max_violation == pytest.approx(1e-4)

@@ -124,12 +124,20 @@ void setup(Sundials& s, Problem& p, const mbs::State& x, double t0, const Integr
 }
 
 // The run has left the constraint manifold (docs/assumptions.md#constraint-drift).
-[[noreturn]] void violation_error(const mbs::Model& model, double t, int row, double v) {
+// `v0`: max |C_q q̇ + C_t| of the initial state, < 0 if the initial state itself violates the bound.
+[[noreturn]] void violation_error(const mbs::Model& model, double t, int row, double v, double v0) {
+  const std::string why =
+      v0 < 0 ? "the initial state does not satisfy the joints (start from an assembled state, mbs::assemble)"
+      : v0 > 1e-6
+          ? fmt::format("the initial velocities violate C_q q̇ = −C_t by {:.3g} (start from an assembled state or "
+                        "mbs::consistent_velocities)",
+                        v0)
+          : "a driving function that is not smooth (corners, a linear table) or too loose tolerances make the "
+            "constraints drift";
   throw NumericalError(fmt::format(
       "constraint violation {:.3g} (m or rad) at t = {:.6g} s in {} exceeds the bound {:g} (options.max_violation): "
-      "the coordinates no longer satisfy the joints; a driving function that is not smooth (corners, a linear "
-      "table) or too loose tolerances make the constraints drift",
-      v, t, model.constraint_name(row), model.options.max_violation));
+      "the coordinates no longer satisfy the joints; {}",
+      v, t, model.constraint_name(row), model.options.max_violation, why));
 }
 
 void check_arguments(const mbs::Model& model, const mbs::State& x, const IntegratorOptions& opt) {
@@ -167,6 +175,7 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
   RunStats stats;
   mbs::Workspace ws(model);  // for the observer and the constraint report
   // Constraint drift of the integrator's own solution, checked after every step.
+  double v0 = 0;  // initial velocity violation, for the message
   auto drift = [&](double t, const double* yv) {
     if (model.n_constraints() == 0) return;
     load_state(yv, n, nz, x);
@@ -174,10 +183,11 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
     Eigen::Index row = 0;
     double v = ws.C.cwiseAbs().maxCoeff(&row);
     if (v > stats.max_violation) stats.max_violation = v, stats.t_max_violation = t;
-    if (v > model.options.max_violation) violation_error(model, t, static_cast<int>(row), v);
     ws.c.noalias() = ws.Cq * x.qd;
     ws.c += ws.Ct;
     stats.max_velocity_violation = std::max(stats.max_velocity_violation, ws.c.cwiseAbs().maxCoeff());
+    if (t == t0) v0 = stats.max_velocity_violation;
+    if (v > model.options.max_violation) violation_error(model, t, static_cast<int>(row), v, t == t0 ? -1 : v0);
   };
   auto sample = [&](double t, const double* yv) {
     if (!observer) return;
@@ -283,7 +293,7 @@ void Stepper::advance(double t_end) {
     mbs::evaluate_constraints(m.p.model, t_end, m.x, m.p.ws);
     Eigen::Index row = 0;
     const double v = m.p.ws.C.cwiseAbs().maxCoeff(&row);
-    if (v > m.p.model.options.max_violation) violation_error(m.p.model, t_end, static_cast<int>(row), v);
+    if (v > m.p.model.options.max_violation) violation_error(m.p.model, t_end, static_cast<int>(row), v, 0.0);
   }
 }
 

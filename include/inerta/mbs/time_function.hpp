@@ -28,7 +28,7 @@
 
 namespace inerta::numerics {
 class CubicSpline;
-}
+}  // namespace inerta::numerics
 
 namespace inerta::mbs {
 
