@@ -118,7 +118,8 @@ void bind_linear(py::module_& m) {
       .def_readonly("layouts", &ModelStudy::layouts);
   m.def("load_model_study", [](const py::object& path) { return io::load_model_study(path_arg(path)); }, py::arg("path"),
         "Reads a model study file (docs/studies.md).");
-  m.def("is_model_study", [](const py::object& path) { return io::is_model_study(path_arg(path)); }, py::arg("path"));
+  m.def("is_model_study", [](const py::object& path) { return io::is_model_study(path_arg(path)); }, py::arg("path"),
+        "True for a study file with objective: rms | hinf | peak (a model study), False for a pantograph J2 study.");
   py::class_<optim::ModelCost>(m, "ModelCost", "The objective J, per-output values, limits' rms, feasibility.")
       .def_readonly("J", &optim::ModelCost::J)
       .def_readonly("penalised", &optim::ModelCost::penalised)
@@ -157,7 +158,8 @@ void bind_linear(py::module_& m) {
                             const std::string& y, int n, double decades) {
     py::gil_scoped_release release;
     return optim::objective_map(s, layout, values, x, y, n, decades);
-  }, py::arg("study"), py::arg("layout"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("n") = 15, py::arg("decades") = 1.0);
+  }, py::arg("study"), py::arg("layout"), py::arg("values"), py::arg("x"), py::arg("y"), py::arg("n") = 15, py::arg("decades") = 1.0,
+        "The objective over an n × n grid of two elements x, y (±decades around their values), in parallel.");
   py::class_<optim::StudyFrf>(m, "StudyFrf")
       .def_readonly("input", &optim::StudyFrf::input)
       .def_readonly("outputs", &optim::StudyFrf::outputs)
@@ -165,7 +167,8 @@ void bind_linear(py::module_& m) {
       .def_readonly("magnitude", &optim::StudyFrf::magnitude);
   m.def("study_frf", [](const ModelStudy& s, const std::string& layout, const network::Params& p, const py::object& f) {
     return optim::study_frf(s, network::resolve(layout, p), doubles(f));
-  }, py::arg("study"), py::arg("layout"), py::arg("params"), py::arg("f_hz"));
+  }, py::arg("study"), py::arg("layout"), py::arg("params"), py::arg("f_hz"),
+        "|H| from the study's excitation input to its weighted outputs for one design, per frequency (Hz).");
 }
 
 }  // namespace inerta::python

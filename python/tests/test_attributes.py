@@ -96,6 +96,19 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [inerta.contact_quality(tt, 10 * tt, FF, 1.0, 15.0)]
     out += inerta.support_uplift([0.0, 1.0], [5.0], [[0.0], [0.01]], 0, 10)
     out += [inerta.Stepper(twobar, x), inerta.Section(0, 1)]
+    qc = inerta.load_model(model("quarter_car.yaml"))
+    ss = inerta.state_space(qc, ["road"], ["a_body", "travel"])
+    road = inerta.Road()
+    road.speed, road.inputs = 25.0, ["road"]
+    xq, _ = inerta.assemble(qc)
+    linq = inerta.linearise(qc, xq)
+    out += [ss, ss.system, inerta.road_response(ss, road), road, inerta.undamped_modes(qc, linq)[0]]
+    ms = inerta.load_model_study(pathlib.Path(model("tmd.yaml")).parent.parent / "studies" / "tmd.yaml")
+    mr = inerta.optimise_model_layout(ms, "k|c")
+    out += [ms, ms.objective, ms.objective.outputs[0], mr, mr.cost]
+    out += [inerta.objective_map(ms, "k|c", mr.values, "k", "c", n=2), inerta.study_frf(ms, "k|c", mr.values, [5.0])]
+    qs = inerta.load_model_study(pathlib.Path(model("quarter_car.yaml")).parent.parent / "studies" / "quarter_car.yaml")
+    out += [qs.objective.limits[0]]
     return out
 
 

@@ -61,3 +61,33 @@ def test_model_study_from_a_file_matches_the_cli(tmp_path):
     bad.write_text(f"model: {SRC}/models/quarter_car.yaml\nstrut: k_s\n")
     with pytest.raises(inerta.ModelError, match=r"bad.yaml:2: 'strut': 'k_s' is not a network strut"):
         inerta.load_model_study(bad)
+
+
+def test_the_linear_building_blocks_agree():
+    qc = quarter_car()
+    x, _ = inerta.assemble(qc)
+    lin = inerta.linearise(qc, x)
+    assert inerta.state_names(qc, lin) == ["wheel.y", "body.y", "wheel.y_dot", "body.y_dot"]
+    sys = inerta.linear_system(qc, x, ["road"], ["travel"])
+    assert np.allclose(sys.lin.A, lin.A, rtol=1e-6, atol=1e-6)
+    und = inerta.undamped_modes(qc, lin)
+    assert [round(m.frequency_hz, 3) for m in und] == [1.213, 11.293]
+    # lyapunov: A P + P Aᵀ + Q = 0
+    P = inerta.lyapunov(lin.A, np.eye(4))
+    assert np.allclose(lin.A @ P + P @ lin.A.T + np.eye(4), 0, atol=1e-9 * np.abs(P).max())
+    assert inerta.road_velocity_intensity(256e-6, 25.0) == pytest.approx(2 * np.pi ** 2 * 0.01 * 256e-6 * 25)
+
+
+def test_model_study_pieces():
+    study = inerta.load_model_study(f"{SRC}/studies/tmd.yaml")
+    assert inerta.is_model_study(f"{SRC}/studies/tmd.yaml") and not inerta.is_model_study(f"{SRC}/studies/hsx-s2.yaml")
+    net = inerta.default_network(study)
+    assert inerta.to_string(net) == "k|c"
+    c = inerta.evaluate_model(study, "k|c", {"k": 4535.147, "c": 38.32899})
+    assert c.J * 1e5 == pytest.approx(np.sqrt(1 + 2 / 0.05), rel=0.02)  # Den Hartog's peak x k / F
+    m2 = inerta.with_strut_network(study.model, study.strut, "k", {"k": 4535.147})
+    assert m2.n_states == 0
+    mp = inerta.objective_map(study, "k|c", {"k": 4535.147, "c": 38.32899}, "k", "c", n=3, decades=0.1)
+    assert len(mp.J) == 3 and min(min(r) for r in mp.J) <= c.J + 1e-12
+    fr = inerta.study_frf(study, "k|c", {"k": 4535.147, "c": 38.32899}, [4.0, 5.0])
+    assert fr.outputs == ["x"] and len(fr.magnitude[0]) == 2

@@ -51,12 +51,8 @@ void reduced_matrices(const Model& model, LinearModel& L, Workspace& ws) {
   L.C = -L.M * L.A.block(d, d, d, d);
 }
 
-// A time function with value a, rate b and second derivative c at t0: a sine of 1 rad/s,
-// f = (a + c) + A sin(t − t0 + ψ) with A sin ψ = −c, A cos ψ = b (exact at t0).
-TimeFunction motion_at(double t0, double a, double b, double c) {
-  const double amp = std::hypot(b, c), psi = std::atan2(-c, b);
-  return TimeFunction::sine(amp, 0.5 / std::numbers::pi, psi - t0, a + c);
-}
+// The time function with value a, rate b and second derivative c at t0.
+TimeFunction motion_at(double t0, double a, double b, double c) { return TimeFunction::polynomial({a, b, 0.5 * c}, t0); }
 
 }  // namespace
 

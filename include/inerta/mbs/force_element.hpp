@@ -6,9 +6,7 @@
 #include <memory>
 #include <string>
 
-namespace inerta::network {
-struct Network;
-}
+#include "inerta/network/network.hpp"
 
 namespace inerta::mbs {
 
