@@ -142,4 +142,22 @@ TEST(ModelStudyFile, EveryErrorNamesTheLineAndKey) {
          "output 'a' responds directly to input 'F'");
   expect(kModel + "strut: absorber\nobjective: {type: peak, outputs: {x: 1}, t_end: 0}\nlayouts: [k]\n", "'t_end': must be a finite number > 0 (s)");
   expect("model: nowhere.yaml\nstrut: a\n", "'model': ");
+  const std::string rms = kModel + "strut: absorber\nobjective: {type: rms, outputs: {x: 1}, ";
+  expect(rms + "road: {class: C, speed: 20, inputs: [F], delays: [0, 1]}}\nlayouts: [k]\n", "'delays': expected 1 delay(s) in s");
+  expect(rms + "road: {class: C, speed: 20, inputs: [F], pade_order: 30}}\nlayouts: [k]\n", "'pade_order': expected a whole number from 1 to 20");
+  expect(rms + "road: {class: C, inputs: [F]}}\nlayouts: [k]\n", "'speed': missing; expected the speed in m/s");
+  expect(rms + "road: {class: C, speed: 20}}\nlayouts: [k]\n", "'inputs': missing");
+  expect(rms + "road: {class: C, gd0: 1e-4, speed: 20, inputs: [F]}}\nlayouts: [k]\n", "give one of class (ISO 8608, A to H) and gd0");
+  expect(rms + "road: {class: C, speed: 20, inputs: [F]}}\nlayouts: [k]\n", "'F' is a load, not a driving joint");
+  expect(rms + "white_noise: [F]}\nlayouts: [k]\n", "'white_noise': expected {INPUT: intensity, ...}");
+  expect(kModel + "strut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8, spacing: cubic}}\nlayouts: [k]\n",
+         "'spacing': expected linear or log");
+  expect(kModel + "strut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8, points: 1}}\nlayouts: [k]\n",
+         "'points': expected a whole number from 2 to 100000");
+  expect(kModel + "strut: absorber\nobjective: {type: peak, outputs: {x: 1}, t_end: 10, sample: 1e-7}\nlayouts: [k]\n",
+         "'sample': more than 1e7 samples");
+  expect(kModel + "set: [absorber.params.k=-1]\nstrut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8}}\nlayouts: [k]\n",
+         "'model': ");
+  expect(kModel + "strut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8}, extra: 1}\nlayouts: [k]\n",
+         "'extra': unknown key in objective");
 }
