@@ -71,7 +71,10 @@ def test_the_linear_building_blocks_agree():
     sys = inerta.linear_system(qc, x, ["road"], ["travel"])
     assert np.allclose(sys.lin.A, lin.A, rtol=1e-6, atol=1e-6)
     und = inerta.undamped_modes(qc, lin)
-    assert [round(m.frequency_hz, 3) for m in und] == [1.213, 11.293]
+    # det(K − ω² M) = 0 for M = diag(m_u, m_s), K = [[k_s + k_t, −k_s], [−k_s, k_s]]
+    ms, mu, ks, kt = 250.0, 35.0, 16000.0, 160000.0
+    w2 = np.sort(np.roots([mu * ms, -(ms * (ks + kt) + mu * ks), ks * kt]).real)
+    assert [m.frequency_hz for m in und] == pytest.approx(np.sqrt(w2) / (2 * np.pi), rel=1e-7)
     # lyapunov: A P + P Aᵀ + Q = 0
     P = inerta.lyapunov(lin.A, np.eye(4))
     assert np.allclose(lin.A @ P + P @ lin.A.T + np.eye(4), 0, atol=1e-9 * np.abs(P).max())
