@@ -1,5 +1,7 @@
 #include "linear.hpp"
 
+#include "networks.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -250,7 +252,15 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
     collect(baseline);
     warm.push_back(p);
   }
-  for (std::size_t l = 0; l < study.layouts.size(); ++l) {
+  std::vector<optim::StructureEntry> entries;
+  if (study.all) {
+    fmt::print("every network of up to {} elements ({} networks), each also started from its best sub-network\n",
+               study.all->max_elements, study.layouts.size());
+    std::vector<optim::ModelLayoutResult> all;
+    entries = optim::optimise_all(study, all, structure_progress(""));
+    for (std::size_t i : optim::ranking(entries)) results.push_back(all[i]);  // ranked: best first
+  }
+  for (std::size_t l = 0; l < (study.all ? 0 : study.layouts.size()); ++l) {
     const std::string& layout = study.layouts[l];
     results.push_back(optim::optimise_layout(study, layout, [&](int start, int evals, double best) {
       if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(), layout,
@@ -277,20 +287,40 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
   };
   row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "");
   std::size_t best = 0;
+  const std::size_t shown = study.all ? 25 : results.size();
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
+    if (i == shown) fmt::print("  … {} more in results.csv (with --out)\n", results.size() - shown);
     std::string values, bounds;
     for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
     for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
-    row(r.layout, r.expression, r.cost, values, bounds);
+    if (i < shown) row(r.layout, r.expression, r.cost, values, bounds);
     const bool better = (r.cost.feasible && !results[best].cost.feasible) ||
                         (r.cost.feasible == results[best].cost.feasible && r.cost.J < results[best].cost.J);
     if (better) best = i;
   }
   fmt::print("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n", network::to_string(baseline, true), def.J,
              results[best].layout, results[best].expression, results[best].cost.J, 100 * (results[best].cost.J - def.J) / def.J, wall);
+  if (study.all) {
+    print_structure(entries, def.J, "", 0);
+    int evaluations = 0;
+    for (const auto& e : entries) evaluations += e.evaluations;
+    fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", entries.size(), evaluations, wall,
+               evaluations / wall);
+  }
+  if (!study.admittance_degrees.empty()) {
+    std::vector<Candidate> cands{{"default " + network::to_string(baseline, true), baseline, def.penalised, def.J}};
+    for (const auto& r : results) try {
+        cands.push_back({r.layout + " " + network::to_string(network::resolve(r.layout, r.values), true),
+                         network::resolve(r.layout, r.values), r.cost.penalised, r.cost.J});
+      } catch (const network::NetworkError&) {
+      }
+    run_admittance_bounds(study.admittance_degrees, cands, def.J, "", out,
+                          [&](int d, const network::Network& w) { return optim::admittance_bound(study, d, w); });
+  }
   if (out.empty()) return 0;
   std::filesystem::create_directories(out);
+  if (study.all) write_structure(out, study.name, optim::Objective::name(o.kind), "", def.J, entries, plots);
   // Table: a column per element name of any layout.
   std::vector<std::string> elements;
   for (const auto& r : results)

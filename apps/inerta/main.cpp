@@ -18,6 +18,7 @@
 
 #include "identify.hpp"
 #include "linear.hpp"
+#include "networks.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
@@ -874,37 +875,69 @@ int cmd_optimise(const OptimiseArgs& a) {
   if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
   optim::Study study = io::load_study(a.study);
   const bool tty = isatty(STDOUT_FILENO);
-  fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), periodic fast path\n", study.name,
-             study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts,
-             study.search.seed);
+  if (study.all)
+    fmt::print("study {}: every network of up to {} elements ({} networks), {} catenaries, {} speeds, {} starts (seed {}) and "
+               "a warm start from the best sub-network, periodic fast path\n",
+               study.name, study.all->max_elements, study.layouts.size(), study.catenaries.size(), study.speeds.size(),
+               study.search.starts, study.search.seed);
+  else
+    fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), periodic fast path\n", study.name,
+               study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed);
   const auto wall0 = std::chrono::steady_clock::now();
   const network::Network baseline = optim::default_suspension(study);
   const optim::StudyCost def = optim::evaluate(study, baseline);
   std::vector<optim::LayoutResult> results;
-  for (const auto& layout : study.layouts) {
-    results.push_back(optim::optimise_layout(study, layout, [&](int start, int evals, double best) {
-      if (tty)
-        fmt::print("\r  {:<12} start {}/{}  evaluations {:>5}  best J {:.4f} N   ", layout, start + 1,
-                   study.search.starts, evals, best);
-      std::fflush(stdout);
-    }));
-    if (tty) fmt::print("\r{:80}\r", "");
-    const auto& r = results.back();
-    fmt::print("  {:<12} J = {:.4f} N after {} evaluations\n", layout, r.cost.J, r.evaluations);
+  std::vector<optim::StructureEntry> entries;
+  if (study.all) {
+    std::vector<optim::LayoutResult> all;
+    entries = optim::optimise_all(study, all, inerta::cli::structure_progress("N"));
+    for (std::size_t i : optim::ranking(entries)) results.push_back(all[i]);  // ranked: results.csv best first
+  } else {
+    for (const auto& layout : study.layouts) {
+      results.push_back(optim::optimise_layout(study, layout, [&](int start, int evals, double best) {
+        if (tty)
+          fmt::print("\r  {:<12} start {}/{}  evaluations {:>5}  best J {:.4f} N   ", layout, start + 1,
+                     study.search.starts, evals, best);
+        std::fflush(stdout);
+      }));
+      if (tty) fmt::print("\r{:80}\r", "");
+      const auto& r = results.back();
+      fmt::print("  {:<12} J = {:.4f} N after {} evaluations\n", layout, r.cost.J, r.evaluations);
+    }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   auto value = [](const network::Params& p, const char* k) {
     auto it = p.find(k);
     return it == p.end() ? std::string("-") : numerics::describe(it->second);
   };
-  fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
-             "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
-  for (const auto& r : results)
-    fmt::print("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}\n", r.layout, r.expression,
-               value(r.values, "b"), value(r.values, "c"), value(r.values, "k"), r.cost.J,
-               100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean);
+  if (study.all) {
+    inerta::cli::print_structure(entries, def.J, "N");
+    int evaluations = 0;
+    for (const auto& e : entries) evaluations += e.evaluations;
+    fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", entries.size(), evaluations, wall,
+               evaluations / wall);
+  } else {
+    fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
+               "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
+    for (const auto& r : results)
+      fmt::print("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}\n", r.layout, r.expression,
+                 value(r.values, "b"), value(r.values, "c"), value(r.values, "k"), r.cost.J,
+                 100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean);
+  }
   fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
              network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
+  if (study.all && !a.out.empty()) inerta::cli::write_structure(a.out, study.name, "J2", "N", def.J, entries, !a.no_plots);
+  if (!study.admittance_degrees.empty()) {
+    std::vector<inerta::cli::Candidate> cands{{"default " + network::to_string(baseline, true), baseline, def.J, def.J}};
+    for (const auto& r : results) try {  // a layout without a design (values missing) is skipped
+        cands.push_back({r.layout + " " + network::to_string(network::resolve(r.layout, r.values), true),
+                         network::resolve(r.layout, r.values), r.cost.J, r.cost.J});
+      } catch (const network::NetworkError&) {
+      }
+    inerta::cli::run_admittance_bounds(study.admittance_degrees, cands, def.J, "N", a.out, [&](int d, const network::Network& w) {
+      return optim::admittance_bound(study, d, w);
+    });
+  }
   std::size_t best = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].cost.J < results[best].cost.J) best = i;
@@ -1077,6 +1110,7 @@ int main(int argc, char** argv) {
 
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
   CLI::App* rms = inerta::cli::add_rms_command(app);         // apps/inerta/linear.cpp
+  CLI::App* nets = inerta::cli::add_networks_command(app);   // apps/inerta/networks.cpp
 
   OptimiseArgs oa;
   auto* opt = app.add_subcommand("optimise", "Optimise the suspension layouts of a study file (spec/07)");
@@ -1102,6 +1136,7 @@ int main(int argc, char** argv) {
     if (fit->parsed()) return cmd_catenary_fit(fit_args);
     if (idn->parsed()) return inerta::cli::run_identify();
     if (rms->parsed()) return inerta::cli::run_rms();
+    if (nets->parsed()) return inerta::cli::run_networks();
     if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);

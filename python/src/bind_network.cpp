@@ -39,6 +39,7 @@ const char* kind_name(network::Network::Kind k) {
     case network::Network::Kind::Parallel: return "parallel";
     case network::Network::Kind::Open: return "open";
     case network::Network::Kind::Rigid: return "rigid";
+    case network::Network::Kind::Admittance: return "admittance";
   }
   return "?";
 }
@@ -58,7 +59,8 @@ void bind_network(py::module_& m) {
       .value("series", Network::Kind::Series)
       .value("parallel", Network::Kind::Parallel)
       .value("open", Network::Kind::Open)
-      .value("rigid", Network::Kind::Rigid);
+      .value("rigid", Network::Kind::Rigid)
+      .value("admittance", Network::Kind::Admittance);
   net.def(py::init([](const std::string& text) { return network::parse(text); }), py::arg("expression"),
           "Parses an expression (same as inerta.parse).")
       .def_readonly("kind", &Network::kind)
@@ -66,6 +68,8 @@ void bind_network(py::module_& m) {
       .def_readonly("value", &Network::value, "element value, SI (N/m, N·s/m, kg)")
       .def_readonly("children", &Network::children)
       .def_readonly("column", &Network::column, "position in the expression, 1-based")
+      .def_readonly("num", &Network::num, "admittance leaf: numerator coefficients of Y(s), ascending powers of s")
+      .def_readonly("den", &Network::den, "admittance leaf: denominator coefficients of Y(s), ascending powers of s")
       .def("is_element", &Network::is_element)
       .def("parameter_names", [](const Network& n) { return network::parameter_names(n); })
       .def("assign", [](const Network& n, const network::Params& p) { return network::assign(n, p); }, py::arg("params"))

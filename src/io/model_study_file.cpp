@@ -12,6 +12,7 @@
 #include "inerta/io/yaml_errors.hpp"
 #include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
+#include "network_options.hpp"
 
 namespace inerta::io {
 
@@ -185,7 +186,7 @@ optim::ModelStudy read(const std::string& path) {
   const YAML::Node loaded = yaml_load_file(path, "study file");
   const YAML::Node& root = loaded;
   if (!is_map(root)) yaml_fail(path, root, "", "expected a study (model, strut, objective, layouts)");
-  only_keys(path, root, "", {"name", "model", "set", "strut", "objective", "layouts", "search"});
+  only_keys(path, root, "", {"name", "model", "set", "strut", "objective", "layouts", "networks", "admittance", "search"});
   optim::ModelStudy s;
   s.source = path;
   s.name = is_scalar(root["name"]) ? root["name"].Scalar() : path;
@@ -210,8 +211,16 @@ optim::ModelStudy read(const std::string& path) {
   if (!root["objective"].IsDefined()) yaml_fail(path, root, "objective", "missing; expected {type: rms | hinf | peak, ...}");
   s.objective = read_objective(path, root["objective"], s.model);
   const YAML::Node ls = root["layouts"];
-  if (!is_seq(ls) || ls.size() == 0) yaml_fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts (network expressions or names)");
-  for (const auto& l : ls) {
+  s.all = read_all_layouts(path, root);
+  s.admittance_degrees = read_admittance_degrees(path, root);
+  if (s.all) {
+    s.layouts = network::enumerate(*s.all);
+    if (s.layouts.empty()) yaml_fail(path, root["networks"], "networks", "no network satisfies these options");
+  } else if (!is_seq(ls) || ls.size() == 0) {
+    yaml_fail(path, ls.IsDefined() ? ls : root, "layouts",
+              "expected a list of layouts (network expressions or names), or all (with networks: {max_elements: N})");
+  }
+  for (const auto& l : s.all ? YAML::Node(YAML::NodeType::Sequence) : ls) {
     if (!is_scalar(l)) yaml_fail(path, l, "layouts", "expected a network expression or a layout name");
     const std::string name = l.Scalar();
     try {

@@ -11,6 +11,7 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/yaml_errors.hpp"
 #include "inerta/network/layouts.hpp"
+#include "network_options.hpp"
 
 namespace inerta::io {
 
@@ -22,11 +23,12 @@ optim::Study read_study(const std::string& path) {
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string k = it->first.as<std::string>();
     static const char* allowed[] = {"name",   "model",   "catenary", "catenaries",
-                                    "speeds", "layouts", "search",   "harmonics", "objective"};
+                                    "speeds", "layouts", "search",   "harmonics", "objective", "networks", "admittance"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
       yaml_fail(path, it->first, k,
-                    "unknown key; expected name, model, catenary, catenaries, speeds, layouts, search, harmonics, objective");
+                    "unknown key; expected name, model, catenary, catenaries, speeds, layouts, networks, admittance, search, "
+                    "harmonics, objective");
   }
   if (const YAML::Node o = root["objective"]; o.IsDefined()) {  // optional: a pantograph study's objective is J2
     if (!o.IsMap() || o.size() != 1 || !o["type"].IsDefined() || !o["type"].IsScalar() || o["type"].Scalar() != "j2")
@@ -73,9 +75,15 @@ optim::Study read_study(const std::string& path) {
   for (long k = 0; from + k * step <= to + 1e-9 * step; ++k)
     s.speeds.push_back((from + k * step) / (unit == "kmh" ? 3.6 : 1.0));
   const YAML::Node ls = root["layouts"];
-  if (!ls.IsSequence() || ls.size() == 0)
-    yaml_fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts");
-  for (const auto& l : ls) {
+  s.all = read_all_layouts(path, root);
+  s.admittance_degrees = read_admittance_degrees(path, root);
+  if (s.all) {
+    s.layouts = network::enumerate(*s.all);
+    if (s.layouts.empty()) yaml_fail(path, root["networks"], "networks", "no network satisfies these options");
+  } else if (!ls.IsSequence() || ls.size() == 0) {
+    yaml_fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts, or all (with networks: {max_elements: N})");
+  }
+  for (const auto& l : s.all ? YAML::Node(YAML::NodeType::Sequence) : ls) {
     const std::string name = l.as<std::string>();
     try {
       network::parse(network::find_layout(name) ? network::find_layout(name)->expression : name);

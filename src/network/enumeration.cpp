@@ -17,6 +17,7 @@ char type_letter(K k) { return k == K::Spring ? 'k' : k == K::Damper ? 'c' : 'b'
 void check_simplified(const Network& n) {
   if (n.kind == K::Open || n.kind == K::Rigid)
     throw NetworkError("canonical form: the network has open or rigid parts; simplify it first", n.column);
+  if (n.kind == K::Admittance) throw NetworkError("canonical form: the network is a given admittance, not elements", 0);
 }
 
 // Members in canonical order: elements by type (k, c, b), then groups by size, then structure.
@@ -27,6 +28,9 @@ std::pair<int, std::string> order_key(const Network& n) {
   if (n.is_element()) return {type_rank(n.kind) - 3, ""};
   return {count_elements(n).elements, structure(n)};
 }
+
+// A pole of Y at s = 0 (a static stiffness): the denominator's constant term vanishes.
+bool n_den_constant(const Network& n) { return !n.den.empty() && n.den[0] != 0; }
 
 double combine(double a, double b, bool parallel) {
   if (parallel) return a + b;
@@ -53,6 +57,7 @@ bool static_path(const Network& net) {
   switch (net.kind) {
     case K::Spring: return true;
     case K::Rigid: return true;
+    case K::Admittance: return !n_den_constant(net);
     case K::Series: return std::all_of(net.children.begin(), net.children.end(), static_path);
     case K::Parallel: return std::any_of(net.children.begin(), net.children.end(), static_path);
     default: return false;

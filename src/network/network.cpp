@@ -137,7 +137,7 @@ Network simplify(const Network& net) {
     if (std::isinf(net.value)) return Network{K::Rigid, net.name, 0, {}, net.column};
     return net;
   }
-  if (net.kind == K::Open || net.kind == K::Rigid) return net;
+  if (net.kind == K::Open || net.kind == K::Rigid || net.kind == K::Admittance) return net;
   const bool parallel = net.kind == K::Parallel;
   const K absorbing = parallel ? K::Rigid : K::Open;  // one of these decides the whole group
   const K neutral = parallel ? K::Open : K::Rigid;    // these drop out
@@ -162,6 +162,16 @@ std::string to_string(const Network& net, bool with_values) {
   switch (net.kind) {
     case K::Open: return "open";
     case K::Rigid: return "rigid";
+    case K::Admittance: {
+      auto poly = [](const std::vector<double>& p) {
+        std::string s;
+        for (std::size_t i = 0; i < p.size(); ++i)
+          if (p[i] != 0)
+            s += fmt::format("{}{:.6g}{}", s.empty() ? "" : " + ", p[i], i == 0 ? "" : i == 1 ? " s" : fmt::format(" s^{}", i));
+        return s.empty() ? std::string("0") : s;
+      };
+      return fmt::format("Y(s) = ({}) / ({})", poly(net.num), poly(net.den));
+    }
     case K::Spring:
     case K::Damper:
     case K::Inerter: return with_values ? fmt::format("{}={:g}", net.name, net.value) : net.name;
@@ -188,6 +198,14 @@ std::complex<double> eval(const Network& net, std::complex<double> s) {
     case K::Inerter: return net.value * s;
     case K::Open: return 0.0;
     case K::Rigid: return std::complex<double>(INFINITY, 0.0);
+    case K::Admittance: {
+      auto at = [&](const std::vector<double>& p) {
+        std::complex<double> v = 0;
+        for (std::size_t i = p.size(); i-- > 0;) v = v * s + p[i];
+        return v;
+      };
+      return at(net.num) / at(net.den);
+    }
     case K::Parallel: {
       std::complex<double> y = 0;
       for (const auto& c : net.children) y += eval(c, s);
@@ -202,6 +220,21 @@ std::complex<double> eval(const Network& net, std::complex<double> s) {
   return 0.0;
 }
 }  // namespace
+
+Network admittance_leaf(std::vector<double> num, std::vector<double> den) {
+  auto check = [](std::vector<double>& p, const char* what) {
+    for (double c : p)
+      if (!std::isfinite(c)) throw NetworkError(fmt::format("admittance: a {} coefficient is {}", what, c), 0);
+    while (!p.empty() && p.back() == 0) p.pop_back();
+    if (p.empty()) throw NetworkError(fmt::format("admittance: the {} is zero", what), 0);
+  };
+  check(num, "numerator");
+  check(den, "denominator");
+  Network n;
+  n.kind = Network::Kind::Admittance;
+  n.num = std::move(num), n.den = std::move(den);
+  return n;
+}
 
 std::complex<double> admittance(const Network& net, std::complex<double> s) { return eval(simplify(net), s); }
 

@@ -38,6 +38,7 @@ Rational rational_admittance(const Network& net) {
     case K::Spring: return {{net.value}, {0.0, 1.0}};  // k/s
     case K::Damper: return {{net.value}, {1.0}};       // c
     case K::Inerter: return {{0.0, net.value}, {1.0}}; // b s
+    case K::Admittance: return {net.num, net.den};
     case K::Parallel:
     case K::Series: {
       Rational acc = rational_admittance(net.children.front());

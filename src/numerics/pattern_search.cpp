@@ -42,11 +42,44 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
   const int random_starts = std::max(1, o.starts);
   for (const auto& w : o.initial_values)
     if (w.size() != n) throw std::invalid_argument("pattern search: an initial point needs one value per variable");
-  for (int start = 0; start < random_starts + static_cast<int>(o.initial_values.size()); ++start) {
+  // The grid's best point (a start after the warm ones), evaluated up front.
+  std::vector<double> grid_best;
+  int grid_evals = 0;
+  if (n > 0 && static_cast<int>(n) <= o.grid_variables) {
+    std::vector<std::vector<double>> axes(n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (double u = box_lo(vars[i]); u <= box_hi(vars[i]) + 1e-9; u += 1.0) axes[i].push_back(u);
+    std::vector<std::vector<double>> pts(1);
+    for (const auto& ax : axes) {
+      std::vector<std::vector<double>> next;
+      for (const auto& p : pts)
+        for (double u : ax) {
+          next.push_back(p);
+          next.back().push_back(u);
+        }
+      pts = std::move(next);
+    }
+    std::vector<double> c(pts.size());
+    tbb::parallel_for(std::size_t{0}, pts.size(), [&](std::size_t k) {
+      std::vector<double> v(n);
+      for (std::size_t i = 0; i < n; ++i) v[i] = decode(vars[i], pts[k][i]);
+      c[k] = cost(v);
+    });
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < c.size(); ++j)
+      if (c[j] < c[k]) k = j;
+    grid_best = pts[k];
+    grid_evals = static_cast<int>(pts.size());
+  }
+  const int warm_starts = static_cast<int>(o.initial_values.size());
+  total += grid_evals;
+  for (int start = 0; start < random_starts + warm_starts + (grid_best.empty() ? 0 : 1); ++start) {
     std::vector<double> u(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double a = box_lo(vars[i]), b = box_hi(vars[i]);
-      if (start >= random_starts) {  // a warm start: its value's cell (0 and ∞ in their half decades)
+      if (start == random_starts + warm_starts) {
+        u[i] = grid_best[i];
+      } else if (start >= random_starts) {  // a warm start: its value's cell (0 and ∞ in their half decades)
         const double v = o.initial_values[static_cast<std::size_t>(start - random_starts)][i];
         const double la = std::log10(vars[i].lo), lb = std::log10(vars[i].hi);
         u[i] = v <= 0 ? (vars[i].can_open ? a + 0.25 : la) : std::isinf(v) ? (vars[i].can_rigid ? b - 0.25 : lb)

@@ -9,6 +9,7 @@
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/solve/integrator.hpp"
+#include "warm_starts.hpp"
 
 namespace inerta::optim {
 
@@ -154,19 +155,7 @@ ModelLayoutResult optimise_layout(const ModelStudy& study, const std::string& la
     }
   };
   numerics::Options search = study.search;
-  for (const network::Params& w : warm) {
-    std::vector<std::size_t> missing;
-    std::vector<double> v(vars.size());
-    for (std::size_t i = 0; i < vars.size(); ++i) {
-      const auto it = w.find(vars[i].name);
-      if (it == w.end()) missing.push_back(i); else v[i] = it->second;
-    }
-    if (missing.size() == vars.size() || missing.size() > 4) continue;  // nothing shared, or too many combinations
-    for (unsigned mask = 0; mask < (1u << missing.size()); ++mask) {
-      for (std::size_t j = 0; j < missing.size(); ++j) v[missing[j]] = (mask >> j) & 1u ? INFINITY : 0.0;
-      search.initial_values.push_back(v);
-    }
-  }
+  add_warm_starts(vars, warm, search);
   std::vector<double> best;
   if (vars.empty()) {
     r.evaluations = 1;

@@ -11,6 +11,7 @@
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
+#include "warm_starts.hpp"
 
 namespace inerta::optim {
 
@@ -73,7 +74,8 @@ std::vector<std::string> free_parameters(const std::string& layout) {
   return names;
 }
 
-LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress) {
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress,
+                             const std::vector<network::Params>& warm) {
   LayoutResult r;
   r.layout = layout;
   auto named = network::find_layout(layout);
@@ -100,7 +102,9 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   if (vars.empty()) {
     r.evaluations = 1;
   } else {
-    numerics::Result s = numerics::pattern_search(vars, J, study.search, progress);
+    numerics::Options search = study.search;
+    add_warm_starts(vars, warm, search);
+    numerics::Result s = numerics::pattern_search(vars, J, search, progress);
     best = s.values;
     r.evaluations = s.evaluations;
   }

@@ -161,3 +161,30 @@ TEST(ModelStudyFile, EveryErrorNamesTheLineAndKey) {
   expect(kModel + "strut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8}, extra: 1}\nlayouts: [k]\n",
          "'extra': unknown key in objective");
 }
+
+TEST(ModelStudyFile, LayoutsAllAndItsNetworkOptions) {
+  const std::string head = kModel + "strut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8}}\n";
+  EXPECT_EQ(study_error(head + "layouts: all\nnetworks: {max_elements: 2, elements: [k, c], static_load: required}\n"), "");
+  {
+    const optim::ModelStudy s = io::load_model_study(inerta::testing::write_study(
+        "all.yaml", head + "layouts: all\nnetworks: {max_elements: 2, elements: [k, c], static_load: required}\n"));
+    ASSERT_TRUE(s.all.has_value());
+    EXPECT_EQ(s.layouts, (std::vector<std::string>{"k", "k|c"}));  // c and k-c have no spring path between the terminals
+  }
+  auto expect = [&](const std::string& text, const std::string& part) {
+    const std::string msg = study_error(head + text);
+    EXPECT_NE(msg.find(part), std::string::npos) << msg << "\n---\n" << text;
+  };
+  expect("layouts: all\n", ":4: 'networks': layouts: all needs networks: {max_elements: N");
+  expect("layouts: all\nnetworks: {elements: [k]}\n", "'networks': missing max_elements");
+  expect("layouts: all\nnetworks: {max_elements: 9}\n", ":5: 'max_elements': expected a whole number from 1 to 7, got 9");
+  expect("layouts: all\nnetworks: {max_elements: 2.5}\n", "'max_elements': expected a whole number from 1 to 7, got 2.5");
+  expect("layouts: all\nnetworks: {max_elements: 3, elements: [k, x]}\n", "'elements': 'x' is not an element type");
+  expect("layouts: all\nnetworks: {max_elements: 3, static_load: yes}\n", "'static_load': expected any, required");
+  expect("layouts: all\nnetworks: {max_elements: 3, max_inerter: 1}\n", "'max_inerter': unknown key in networks");
+  expect("layouts: all\nnetworks: {max_elements: 3, max_inerters: -1}\n", "'max_inerters': expected a whole number from 0 to 7");
+  expect("layouts: [k]\nnetworks: {max_elements: 3}\n", "'networks': only with layouts: all");
+  expect("layouts: all\nnetworks: {max_elements: 2, elements: [c, b], static_load: required}\n",
+         "'networks': no network satisfies these options");
+  expect("layouts: everything\n", "'layouts': expected a list of layouts (network expressions or names), or all");
+}

@@ -3,6 +3,8 @@
 // expressions: "|" parallel, "-" series, parentheses, element names starting with k, c or b
 // ("k", "k1", "c_2", "b"). Mixing "|" and "-" at one level without parentheses is an error.
 // Element values are bound by name; 0 means open and inf rigid, simplified algebraically.
+// An Admittance leaf is a given rational admittance Y(s) = num(s)/den(s) (the positive-real
+// admittance of optim/admittance_search.hpp), not written in expressions.
 #include <complex>
 #include <map>
 #include <stdexcept>
@@ -18,12 +20,13 @@ struct NetworkError : std::runtime_error {
 };
 
 struct Network {
-  enum class Kind { Spring, Damper, Inerter, Series, Parallel, Open, Rigid };
+  enum class Kind { Spring, Damper, Inerter, Series, Parallel, Open, Rigid, Admittance };
   Kind kind = Kind::Open;
   std::string name;   ///< element name (leaves)
   double value = 0;   ///< element value, SI (N/m, N·s/m, kg); set by assign()
   std::vector<Network> children;
   int column = 0;     ///< position in the expression, 1-based
+  std::vector<double> num{}, den{};  ///< Admittance: Y(s) = num(s)/den(s), ascending powers of s, SI
 
   bool is_element() const { return kind == Kind::Spring || kind == Kind::Damper || kind == Kind::Inerter; }
 };
@@ -43,6 +46,10 @@ Network assign(const Network& net, const Params& params);
 Network simplify(const Network& net);
 /// Readable form, e.g. "b-(k|c)", with values when `with_values`.
 std::string to_string(const Network& net, bool with_values = false);
+
+/// A network of one Admittance leaf Y(s) = num(s)/den(s) (coefficients ascending, SI); throws
+/// NetworkError unless they are finite, den is not zero and the leading ones are not zero.
+Network admittance_leaf(std::vector<double> num, std::vector<double> den);
 
 /// Admittance Y(s) = F / relative velocity (spec/03 §3.1), evaluated directly on the tree.
 std::complex<double> admittance(const Network& net, std::complex<double> s);

@@ -38,6 +38,10 @@ struct Options {
   /// [lo, hi]), one per variable: warm starts, e.g. the optimum of a smaller layout. The result is
   /// never worse than the best of them.
   std::vector<std::vector<double>> initial_values;
+  /// With at most `grid_variables` variables (0: never): first evaluate a grid of one point per
+  /// decade over the whole box (the 0 and ∞ cells included), in parallel, and start once more from
+  /// its best point — a global look at small problems, whose narrow optima random starts can miss.
+  int grid_variables = 0;
 };
 
 struct Result {

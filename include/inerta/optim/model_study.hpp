@@ -14,6 +14,7 @@
 
 #include "inerta/analysis/state_space.hpp"
 #include "inerta/mbs/model.hpp"
+#include "inerta/network/enumeration.hpp"
 #include "inerta/network/network.hpp"
 #include "inerta/numerics/pattern_search.hpp"
 
@@ -53,6 +54,12 @@ struct ModelStudy {
   int strut = -1;  ///< the force element whose network is replaced
   Objective objective;
   std::vector<std::string> layouts;
+  /// `layouts: all`: the layouts are every network these options allow (network::enumerate), searched
+  /// by optim::optimise_all.
+  std::optional<network::EnumerationOptions> all;
+  /// `admittance: [2, 3]`: also optimise a positive-real admittance of each degree (the bound of
+  /// optim/admittance_search.hpp).
+  std::vector<int> admittance_degrees;
   numerics::Options search;
   double lo = 0.1, hi = 1e9;  ///< bounds of every free value (SI), 0 and ∞ reachable
 };

@@ -5,9 +5,11 @@
 #include <vector>
 
 #include <memory>
+#include <optional>
 
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
+#include "inerta/network/enumeration.hpp"
 #include "inerta/network/network.hpp"
 #include "inerta/numerics/pattern_search.hpp"
 
@@ -21,6 +23,12 @@ struct Study {
   catenary::Contact contact;
   std::vector<double> speeds;        ///< m/s
   std::vector<std::string> layouts;  ///< named layouts or expressions
+  /// `layouts: all`: the layouts are every network these options allow (network::enumerate), searched
+  /// by optim::optimise_all.
+  std::optional<network::EnumerationOptions> all;
+  /// `admittance: [2, 3]`: also optimise a positive-real admittance of each degree (the bound of
+  /// optim/admittance_search.hpp).
+  std::vector<int> admittance_degrees;
   numerics::Options search;
   double lo = 0.1, hi = 1e9;  ///< bounds of every free value (SI), 0 and ∞ reachable
   int harmonics = 8;
@@ -62,6 +70,9 @@ StudyCost evaluate_time(const Study& study, const network::Network& net);
 std::vector<std::string> free_parameters(const std::string& layout);
 
 /// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
-LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress = {});
+/// `warm`: other designs' element values as further starts (as for model studies:
+/// optim::optimise_layout(const ModelStudy&, …)), so the result is never worse than any of them.
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress = {},
+                             const std::vector<network::Params>& warm = {});
 
 }  // namespace inerta::optim

@@ -1,0 +1,213 @@
+#include "networks.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "inerta/io/json.hpp"
+#include "inerta/io/structure_results.hpp"
+#include "inerta/io/text_file.hpp"
+#include "inerta/network/enumeration.hpp"
+
+namespace inerta::cli {
+
+namespace {
+struct NetworksArgs {
+  int max_elements = 4;
+  std::string elements = "kcb", static_load = "any", out;
+  int max_springs = -1, max_dampers = -1, max_inerters = -1;
+} networks_args;
+CLI::App* networks_cmd = nullptr;
+
+std::string seconds_text(double s) {
+  if (s < 90) return fmt::format("{:.0f} s", s);
+  if (s < 5400) return fmt::format("{:.1f} min", s / 60);
+  return fmt::format("{:.1f} h", s / 3600);
+}
+}  // namespace
+
+CLI::App* add_networks_command(CLI::App& app) {
+  NetworksArgs& a = networks_args;
+  networks_cmd = app.add_subcommand("networks", "List every series–parallel spring/damper/inerter network up to N elements");
+  networks_cmd->add_option("--max-elements", a.max_elements, fmt::format("Largest number of elements, 1 … {}", network::max_enumerated_elements))
+      ->capture_default_str();
+  networks_cmd->add_option("--elements", a.elements, "Element types allowed, letters of k (spring), c (damper), b (inerter)")
+      ->capture_default_str();
+  networks_cmd->add_option("--max-springs", a.max_springs, "At most this many springs (-1: no limit)");
+  networks_cmd->add_option("--max-dampers", a.max_dampers, "At most this many dampers (-1: no limit)");
+  networks_cmd->add_option("--max-inerters", a.max_inerters, "At most this many inerters (-1: no limit)");
+  networks_cmd->add_option("--static-load", a.static_load,
+                           "any | required (a spring path between the terminals) | excluded")
+      ->capture_default_str();
+  networks_cmd->add_option("--out", a.out, "Write the list to this file (one expression per line) instead of stdout");
+  return networks_cmd;
+}
+
+int run_networks() {
+  const NetworksArgs& a = networks_args;
+  network::EnumerationOptions o;
+  o.max_elements = a.max_elements;
+  o.springs = o.dampers = o.inerters = false;
+  for (char c : a.elements) {
+    if (c == 'k') o.springs = true;
+    else if (c == 'c') o.dampers = true;
+    else if (c == 'b') o.inerters = true;
+    else if (c != ',' && c != ' ')
+      throw CLI::ValidationError("--elements", fmt::format("'{}' is not an element type; expected letters of k, c, b", c));
+  }
+  o.max_springs = a.max_springs, o.max_dampers = a.max_dampers, o.max_inerters = a.max_inerters;
+  if (a.static_load == "any") o.static_load = network::StaticLoad::Any;
+  else if (a.static_load == "required") o.static_load = network::StaticLoad::Required;
+  else if (a.static_load == "excluded") o.static_load = network::StaticLoad::Excluded;
+  else throw CLI::ValidationError("--static-load", "expected any, required or excluded, got '" + a.static_load + "'");
+  std::vector<std::string> nets;
+  try {
+    nets = network::enumerate(o);
+  } catch (const network::NetworkError& e) {
+    throw CLI::ValidationError("networks", e.what());
+  }
+  std::map<int, int> per;
+  std::string text;
+  for (const auto& e : nets) {
+    const auto c = network::count_elements(network::parse(e));
+    ++per[c.elements];
+    text += e + "\n";
+  }
+  if (a.out.empty()) fmt::print("{}", text);
+  else io::write_text_file(a.out, text);
+  std::string summary;
+  for (const auto& [n, k] : per) summary += fmt::format("{}{} with {}", summary.empty() ? "" : ", ", k, n);
+  std::fprintf(a.out.empty() ? stderr : stdout, "%s\n",
+               fmt::format("{} networks ({}){}", nets.size(), summary.empty() ? "none" : summary,
+                           a.out.empty() ? "" : "; wrote " + a.out)
+                   .c_str());
+  return 0;
+}
+
+optim::StructureProgressFn structure_progress(const std::string& unit) {
+  const bool tty = isatty(STDOUT_FILENO);
+  auto last_pct = std::make_shared<int>(-1);
+  return [tty, unit, last_pct](const optim::StructureProgress& p) {
+    const std::string line =
+        fmt::format("  [{}/{}] {:<22} J = {:<10.5g} best {:.5g} {} ({})  elapsed {}, ≈ {} left", p.done, p.total,
+                    p.last ? p.last->expression : "", p.last ? p.last->J : NAN, p.best_J, unit, p.best,
+                    seconds_text(p.elapsed), seconds_text(p.remaining));
+    if (tty) {
+      fmt::print("\r{:<150.150}", line);
+      if (p.done == p.total) fmt::print("\n");
+    } else {
+      const int pct = 20 * p.done / std::max(1, p.total);
+      if (pct != *last_pct || p.done == p.total) fmt::print("{}\n", line), *last_pct = pct;
+    }
+    std::fflush(stdout);
+  };
+}
+
+void print_structure(const std::vector<optim::StructureEntry>& entries, double default_J, const std::string& unit,
+                     std::size_t rows) {
+  const auto order = optim::ranking(entries);
+  const std::string J = unit.empty() ? "J" : "J [" + unit + "]";
+  if (rows > 0) fmt::print("\n  {:>4}  {:<24} {:>12} {:>10}  {:<8}  {}\n", "rank", "network", J, "vs default", "elements",
+             "optimum (reduced network, SI values)");
+  for (std::size_t r = 0; r < std::min(rows, order.size()); ++r) {
+    const auto& e = entries[order[r]];
+    fmt::print("  {:>4}  {:<24} {:>12.6g} {:>9.2f}%  {:<8}  {}{}\n", r + 1, e.expression, e.J, 100 * (e.J - default_J) / default_J,
+               e.reduces() ? fmt::format("{}→{}", e.counts.elements, e.reduced_counts.elements) : fmt::format("{}", e.counts.elements),
+               e.reduced, e.feasible ? "" : "  INFEASIBLE");
+  }
+  if (rows > 0 && order.size() > rows) fmt::print("  … {} more networks in structure.csv (with --out)\n", order.size() - rows);
+  int reduced = 0;
+  for (const auto& e : entries) reduced += e.reduces() ? 1 : 0;
+  fmt::print("{} of {} networks reduce at their optimum to a smaller network (an element open or rigid, or merged)\n", reduced,
+             entries.size());
+  fmt::print("\nbest by complexity (reduced networks; * = Pareto-optimal: nothing simpler does better):\n");
+  fmt::print("  {:>8} {:>8} {:>12} {:>10}  {}\n", "elements", "inerters", J, "vs default", "network");
+  for (const auto& p : optim::pareto_points(entries))
+    fmt::print("  {:>8} {:>8} {:>12.6g} {:>9.2f}%  {}{}\n", p.elements, p.inerters, p.J, 100 * (p.J - default_J) / default_J,
+               p.network, p.pareto ? "  *" : "");
+}
+
+void write_structure(const std::string& dir, const std::string& study, const std::string& objective,
+                     const std::string& unit, double default_J, const std::vector<optim::StructureEntry>& entries,
+                     bool plots) {
+  const auto files = io::write_structure_results(dir, study, objective, unit, default_J, entries);
+  fmt::print("wrote");
+  for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
+  fmt::print(" in {}\n", dir);
+  if (!plots) return;
+  const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / "plot-structure";
+  std::fflush(stdout);
+  auto q = [](const std::string& x) {
+    std::string r = "'";
+    for (char c : x) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return r + "'";
+  };
+  const std::string cmd = q(script.string()) + " " + q(dir);
+  if (!std::filesystem::exists(script) || std::system(cmd.c_str()) != 0)
+    fmt::print("note: no pareto.png (scripts/plot-structure needs /usr/bin/python3 with matplotlib); pareto.csv is complete\n");
+}
+
+void run_admittance_bounds(const std::vector<int>& degrees, const std::vector<Candidate>& candidates, double default_J,
+                           const std::string& unit, const std::string& dir,
+                           const std::function<optim::AdmittanceResult(int, const network::Network&)>& bound) {
+  if (degrees.empty()) return;
+  const std::string u = unit.empty() ? "" : " " + unit;
+  fmt::print("\npositive-real admittance bound (degree d: any network with at most d springs and inerters):\n");
+  io::Json rows = io::Json::array();
+  std::string csv = "degree,J,vs_default_pct,best_network,best_network_J,gap_pct,num,den,pr_re_min,realised,realised_elements,"
+                    "realised_reactive,minimal_reactive,method,realised_J,evaluations\n";
+  for (int d : degrees) {
+    const Candidate* best = nullptr;
+    for (const auto& c : candidates)
+      if (optim::reactive_elements(c.net) <= d && std::isfinite(c.cost) && (!best || c.cost < best->cost)) best = &c;
+    const network::Network warm = best ? best->net : network::parse("c");
+    const auto t0 = std::chrono::steady_clock::now();
+    const optim::AdmittanceResult r = bound(d, best ? best->net : network::assign(warm, {{"c", 1000.0}}));
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    auto poly = [](const network::Poly& p) {
+      std::string t;
+      for (double c : p) t += fmt::format("{}{:.8g}", t.empty() ? "" : " ", c);
+      return t;
+    };
+    const double gap = best ? 100 * (best->J - r.J) / r.J : NAN;
+    fmt::print("  degree {}: J = {:.6g}{} ({:+.2f} % vs default) after {} evaluations, {:.1f} s\n", d, r.J, u,
+               100 * (r.J - default_J) / default_J, r.evaluations, s);
+    fmt::print("    {}\n", network::to_string(network::admittance_leaf(r.y.num, r.y.den)));
+    fmt::print("    positive real: {} (min Re Y(jω) = {:.4g} at ω = {:.4g} rad/s)\n", r.pr.positive_real ? "yes" : "NO: " + r.pr.reason,
+               r.pr.re_min, r.pr.omega_min);
+    if (best)
+      fmt::print("    best network with ≤ {} springs+inerters: {} J = {:.6g}{}, {:.2f} % above the bound\n", d, best->label, best->J, u, gap);
+    if (r.synthesis)
+      fmt::print("    realised ({}): {} — {} elements, {} reactive{}; J = {:.6g}{}\n", r.synthesis->method,
+                 network::to_string(r.synthesis->network, true), r.synthesis->elements, r.synthesis->reactive,
+                 r.synthesis->minimal_reactive ? " (= degree: minimal in springs and inerters)" : " (not known to be minimal)",
+                 r.J_realised, u);
+    else
+      fmt::print("    not realised: {}\n", r.synthesis_error);
+    csv += fmt::format("{},{:.10g},{:.4g},{},{:.10g},{:.4g},{},{},{:.6g},{},{},{},{},{},{:.10g},{}\n", d, r.J,
+                       100 * (r.J - default_J) / default_J, best ? "\"" + best->label + "\"" : "", best ? best->J : NAN, gap,
+                       poly(r.y.num), poly(r.y.den), r.pr.re_min,
+                       r.synthesis ? "\"" + network::to_string(r.synthesis->network, true) + "\"" : "",
+                       r.synthesis ? r.synthesis->elements : 0, r.synthesis ? r.synthesis->reactive : 0,
+                       r.synthesis && r.synthesis->minimal_reactive ? 1 : 0, r.synthesis ? r.synthesis->method : "",
+                       r.J_realised, r.evaluations);
+    rows.push_back({{"degree", d}, {"J", r.J}, {"num", r.y.num}, {"den", r.y.den}, {"positive_real", r.pr.positive_real},
+                    {"re_min", r.pr.re_min}, {"best_network", best ? best->label : ""}, {"best_network_J", best ? best->J : NAN},
+                    {"realised", r.synthesis ? network::to_string(r.synthesis->network, true) : ""},
+                    {"realised_elements", r.synthesis ? r.synthesis->elements : 0},
+                    {"minimal_reactive", r.synthesis && r.synthesis->minimal_reactive}, {"realised_J", r.J_realised},
+                    {"evaluations", r.evaluations}});
+  }
+  if (dir.empty()) return;
+  std::filesystem::create_directories(dir);
+  io::write_text_file(dir + "/admittance.csv", csv);
+  io::write_json(dir + "/admittance.json", rows);
+  fmt::print("wrote admittance.csv admittance.json in {}\n", dir);
+}
+
+}  // namespace inerta::cli

@@ -1,0 +1,45 @@
+#pragma once
+// `inerta networks` (the enumeration, docs/networks.md) and the printing of an exhaustive
+// structure search (`layouts: all`) for both kinds of study. Thin layers over
+// network/enumeration.hpp and optim/structure_search.hpp.
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "inerta/optim/admittance_search.hpp"
+#include "inerta/optim/structure_search.hpp"
+
+namespace inerta::cli {
+
+CLI::App* add_networks_command(CLI::App& app);
+int run_networks();
+
+/// A progress printer for optim::optimise_all: one rewritten line on a terminal (networks done,
+/// elapsed, estimated remaining, best so far), else a line every ~5 % of the networks.
+optim::StructureProgressFn structure_progress(const std::string& unit);
+
+/// Prints the ranked table (the first `rows`) and the performance-vs-complexity summary.
+void print_structure(const std::vector<optim::StructureEntry>& entries, double default_J, const std::string& unit,
+                     std::size_t rows = 25);
+
+/// Writes structure.csv/json and pareto.csv in `dir` and draws pareto.png (scripts/plot-structure)
+/// unless !plots; prints what it wrote.
+void write_structure(const std::string& dir, const std::string& study, const std::string& objective,
+                     const std::string& unit, double default_J, const std::vector<optim::StructureEntry>& entries,
+                     bool plots);
+
+/// A design of a study for the admittance bound's warm start and comparison.
+struct Candidate {
+  std::string label;
+  network::Network net;  ///< bound
+  double cost = 0, J = 0;
+};
+
+/// For each degree: the best candidate with at most `degree` springs and inerters starts
+/// `bound(degree, warm)`; prints the bound, the gap of that candidate to it and the realisation,
+/// and writes admittance.csv/json in `dir` (if not empty).
+void run_admittance_bounds(const std::vector<int>& degrees, const std::vector<Candidate>& candidates, double default_J,
+                           const std::string& unit, const std::string& dir,
+                           const std::function<optim::AdmittanceResult(int, const network::Network&)>& bound);
+
+}  // namespace inerta::cli
