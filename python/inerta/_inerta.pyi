@@ -88,6 +88,7 @@ class Network:
         parallel = ...
         open = ...
         rigid = ...
+        admittance = ...
     def __init__(self, expression: str) -> None: ...
     @property
     def kind(self) -> Network.Kind: ...
@@ -99,6 +100,10 @@ class Network:
     def children(self) -> list[Network]: ...
     @property
     def column(self) -> int: ...
+    @property
+    def num(self) -> list[float]: ...
+    @property
+    def den(self) -> list[float]: ...
     def is_element(self) -> bool: ...
     def parameter_names(self) -> list[str]: ...
     def assign(self, params: Params) -> Network: ...
@@ -157,6 +162,60 @@ class Realisation:
     def steady_state(self, u: float) -> FloatArray: ...
 
 def realise(simplified: Network) -> Realisation: ...
+
+# ---- every network up to N elements, positive-real test, synthesis (docs/networks.md) ---------------
+class ElementCounts:
+    elements: int
+    springs: int
+    dampers: int
+    inerters: int
+
+def count_elements(network: Network) -> ElementCounts: ...
+def static_path(network: Network) -> bool: ...
+def canonical(network: Network) -> Network: ...
+def structure(network: Network) -> str: ...
+def renamed(network: Network) -> Network: ...
+
+class StaticLoad(enum.Enum):
+    any = ...
+    required = ...
+    excluded = ...
+
+class EnumerationOptions:
+    def __init__(self, max_elements: int = 4, springs: bool = True, dampers: bool = True, inerters: bool = True,
+                 max_springs: int = -1, max_dampers: int = -1, max_inerters: int = -1,
+                 static_load: StaticLoad = StaticLoad.any) -> None: ...
+    max_elements: int
+    springs: bool
+    dampers: bool
+    inerters: bool
+    max_springs: int
+    max_dampers: int
+    max_inerters: int
+    static_load: StaticLoad
+
+def enumerate_networks(options: EnumerationOptions = ...) -> list[str]: ...
+def admittance_leaf(num: Sequence[float], den: Sequence[float]) -> Network: ...
+
+class PrTest:
+    positive_real: bool
+    reason: str
+    re_min: float
+    omega_min: float
+
+def positive_real(num: Sequence[float], den: Sequence[float], rel_tol: float = 1e-9) -> PrTest: ...
+def biquadratic_positive_real(a0: float, a1: float, a2: float, d0: float, d1: float, d2: float) -> bool: ...
+
+class Synthesis:
+    network: Network
+    elements: int
+    reactive: int
+    degree: int
+    bott_duffin: bool
+    minimal_reactive: bool
+    method: str
+
+def synthesise(num: Sequence[float], den: Sequence[float]) -> Synthesis: ...
 
 # ---- models ------------------------------------------------------------------------------------------
 class JointType(enum.Enum):
@@ -1359,3 +1418,61 @@ class StudyFrf:
     magnitude: list[list[float]]
 
 def study_frf(study: ModelStudy, layout: str, params: dict[str, float], f_hz: ArrayLike) -> StudyFrf: ...
+
+# ---- exhaustive structure search and the admittance bound (docs/networks.md) -------------------------
+class StructureEntry:
+    expression: str
+    counts: ElementCounts
+    values: dict[str, float]
+    J: float
+    cost: float
+    feasible: bool
+    evaluations: int
+    reduced: str
+    reduced_structure: str
+    reduced_counts: ElementCounts
+    warm_from: str
+    seconds: float
+    def reduces(self) -> bool: ...
+
+def ranking(entries: Sequence[StructureEntry]) -> list[int]: ...
+
+class ParetoPoint:
+    elements: int
+    inerters: int
+    J: float
+    network: str
+    entry: int
+    pareto: bool
+
+def pareto_points(entries: Sequence[StructureEntry]) -> list[ParetoPoint]: ...
+def prune(expression: str, values: dict[str, float], cost: Callable[[dict[str, float]], float],
+          tolerance: float = 1e-4) -> dict[str, float]: ...
+@overload
+def optimise_all(study: Study, *, progress: Optional[Callable[[int, int, float, float, float], None]] = None
+                 ) -> Tuple[list[StructureEntry], list[LayoutResult]]: ...
+@overload
+def optimise_all(study: ModelStudy, *, progress: Optional[Callable[[int, int, float, float, float], None]] = None
+                 ) -> Tuple[list[StructureEntry], list[ModelLayoutResult]]: ...
+
+class AdmittanceResult:
+    degree: int
+    y: Rational
+    J: float
+    cost: float
+    evaluations: int
+    pr: PrTest
+    synthesis: Optional[Synthesis]
+    synthesis_error: str
+    J_realised: float
+    warm_from: str
+
+@overload
+def admittance_bound(study: Study, degree: int, warm: Network) -> AdmittanceResult: ...
+@overload
+def admittance_bound(study: ModelStudy, degree: int, warm: Network) -> AdmittanceResult: ...
+def reactive_elements(network: Network) -> int: ...
+def write_structure_results(dir: PathLike, study: str, objective: str, unit: str, default_J: float,
+                            entries: Sequence[StructureEntry]) -> list[str]: ...
+def structure_results_json(study: str, objective: str, unit: str, default_J: float,
+                           entries: Sequence[StructureEntry]) -> dict[str, Any]: ...

@@ -235,5 +235,6 @@ void bind_numerics(py::module_& m);
 void bind_signal(py::module_& m);
 void bind_fe(py::module_& m);
 void bind_linear(py::module_& m);
+void bind_structure(py::module_& m);
 
 }  // namespace inerta::python

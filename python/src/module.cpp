@@ -78,5 +78,6 @@ PYBIND11_MODULE(_inerta, m) {
   bind_linear(m);
   bind_analysis(m);
   bind_optim(m);
+  bind_structure(m);
   bind_identification(m);
 }

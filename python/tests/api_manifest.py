@@ -25,6 +25,33 @@ BOUND = {
     "network::resolve": "resolve",
     "network::simplify": "simplify",
     "network::to_string": "to_string",
+    "network::admittance_leaf": "admittance_leaf",
+    "network::ElementCounts": "ElementCounts",
+    "network::count_elements": "count_elements",
+    "network::static_path": "static_path",
+    "network::canonical": "canonical",
+    "network::structure": "structure",
+    "network::renamed": "renamed",
+    "network::StaticLoad": "StaticLoad",
+    "network::EnumerationOptions": "EnumerationOptions",
+    "network::enumerate": "enumerate_networks",  # not shadowing Python's enumerate
+    "network::PrTest": "PrTest",
+    "network::positive_real": "positive_real",
+    "network::biquadratic_positive_real": "biquadratic_positive_real",
+    "network::Synthesis": "Synthesis",
+    "network::synthesise": "synthesise",
+    # exhaustive structure search, admittance bound
+    "optim::StructureEntry": "StructureEntry",
+    "optim::ranking": "ranking",
+    "optim::ParetoPoint": "ParetoPoint",
+    "optim::pareto_points": "pareto_points",
+    "optim::prune": "prune",
+    "optim::optimise_all": "optimise_all",
+    "optim::AdmittanceResult": "AdmittanceResult",
+    "optim::admittance_bound": "admittance_bound",
+    "optim::reactive_elements": "reactive_elements",
+    "io::write_structure_results": "write_structure_results",
+    "io::structure_results_json": "structure_results_json",
     # numerics
     "numerics::CubicSpline": "CubicSpline",
     "numerics::Options": "SearchOptions",
@@ -267,6 +294,12 @@ _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the 
                "through outputs, constraints(), forces() and accelerations()")
 
 EXCLUDED = {
+    "optim::structure_search": "the generic driver takes a C++ objective called from worker threads; Python calls "
+                               "optimise_all on a study",
+    "optim::StructureOutcome": "what a C++ objective returns to structure_search (not bound)",
+    "optim::StructureProgress": "delivered to optimise_all's progress as (done, total, elapsed, remaining, best J)",
+    "optim::optimise_admittance": "takes C++ objectives called from worker threads; Python calls admittance_bound "
+                                  "on a study",
     "mbs::Workspace": "scratch buffers of one evaluation of eq. 4.12; the functions that need one "
                       "(accelerations, constraints, forces, evaluate_output) make it",
     "mbs::BodyFrame": _KINEMATICS,

@@ -109,6 +109,11 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [inerta.objective_map(ms, "k|c", mr.values, "k", "c", n=2), inerta.study_frf(ms, "k|c", mr.values, [5.0])]
     qs = inerta.load_model_study(pathlib.Path(model("quarter_car.yaml")).parent.parent / "studies" / "quarter_car.yaml")
     out += [qs.objective.limits[0]]
+    opts = inerta.EnumerationOptions(max_elements=2, inerters=False)
+    entries, _ = inerta.optimise_all(ms)  # the four fixed layouts of studies/tmd.yaml as a structure search
+    out += [opts, inerta.count_elements(inerta.parse("k|c")), inerta.positive_real([1.0], [1.0]),
+            inerta.synthesise([1.0, 1.0, 1.0], [4.0, 1.0, 1.0]), entries[0], inerta.pareto_points(entries)[0]]
+    out += [inerta.admittance_bound(ms, 1, inerta.resolve("k|c", mr.values))]
     return out
 
 

@@ -37,7 +37,7 @@ Network leaf(K kind, double v) {
   Network n;
   n.kind = kind;
   n.value = v;
-  n.name = kind == K::Spring ? "k" : kind == K::Damper ? "c" : "b";
+  n.name = std::string(kind == K::Spring ? "k" : kind == K::Damper ? "c" : "b");  // (GCC 12 -Wrestrict false positive on const char*)
   return n;
 }
 

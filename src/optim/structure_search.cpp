@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "inerta/error.hpp"
+#include "inerta/network/layouts.hpp"
 
 namespace inerta::optim {
 
@@ -113,13 +114,13 @@ network::Params prune(const std::string& expression, network::Params values, con
 namespace {
 void describe_reduced(StructureEntry& e) {
   if (e.values.size() < static_cast<std::size_t>(e.counts.elements)) {  // no design was found
-    e.reduced = e.reduced_structure = "-";
+    e.reduced = e.reduced_structure = std::string("-");
     e.reduced_counts = e.counts;
     return;
   }
   const Network b = network::simplify(network::assign(network::parse(e.expression), e.values));
   if (degenerate(b)) {
-    e.reduced = e.reduced_structure = b.kind == K::Open ? "open" : "rigid";
+    e.reduced = e.reduced_structure = std::string(b.kind == K::Open ? "open" : "rigid");
     e.reduced_counts = {};
     return;
   }
@@ -163,7 +164,7 @@ std::vector<StructureEntry> structure_search(const std::vector<std::string>& exp
       const StructureOutcome o =
           optimise(k, e.expression, warm ? std::vector<network::Params>{warm->values} : std::vector<network::Params>{});
       e.values = o.values, e.J = o.J, e.cost = o.cost, e.feasible = o.feasible, e.evaluations = o.evaluations;
-      e.warm_from = warm ? warm->from : "";
+      e.warm_from = warm ? warm->from : std::string();
       e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
       describe_reduced(e);
       std::lock_guard<std::mutex> lock(mutex);

@@ -9,9 +9,11 @@
 #include <cmath>
 #include <map>
 
+#include "inerta/error.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/model_study_file.hpp"
 #include "inerta/network/layouts.hpp"
+#include "inerta/optim/admittance_search.hpp"
 #include "support/run.hpp"
 
 using namespace inerta;
@@ -19,8 +21,9 @@ using namespace inerta;
 namespace {
 using cd = std::complex<double>;
 
-// J = max over 0.1 … 100 rad/s of |Y(jω) − Y_target(jω)| / |Y_target(jω)|: zero exactly for the
-// target's admittance. Pattern search on log values, as the studies do.
+// J = rms over 0.1 … 100 rad/s of |Y(jω) − Y_target(jω)| / |Y_target(jω)|: zero exactly for the
+// target's admittance, and smooth (a max would stall a compass search on a ridge). Pattern search
+// on log values, as the studies do.
 const network::Network target = network::assign(network::parse("k-(c|b)"), {{"k", 2.0e4}, {"c", 300}, {"b", 20}});
 
 double misfit(const network::Network& net) {
@@ -30,9 +33,9 @@ double misfit(const network::Network& net) {
   for (int i = 0; i <= 60; ++i) {
     const cd jw(0, 0.1 * std::pow(1000.0, i / 60.0));
     const cd y0 = network::admittance(target, jw);
-    J = std::max(J, std::abs(network::admittance(s, jw) - y0) / std::abs(y0));
+    J += std::norm((network::admittance(s, jw) - y0) / y0) / 61;
   }
-  return J;
+  return std::sqrt(J);
 }
 
 optim::StructureOutcome fit(const std::string& expression, const std::vector<network::Params>& warm) {
@@ -40,7 +43,7 @@ optim::StructureOutcome fit(const std::string& expression, const std::vector<net
   std::vector<numerics::Variable> vars;
   for (const auto& n : names) vars.push_back({n, 1e-2, 1e7, true, true});
   numerics::Options o;
-  o.starts = 2, o.min_step = 1e-4, o.grid_variables = 2;
+  o.starts = 2, o.min_step = 1e-4, o.grid_variables = 3;  // a global look at up to three elements
   for (const auto& w : warm) {
     std::vector<double> v;
     for (const auto& n : names) v.push_back(w.at(n));
@@ -76,9 +79,10 @@ TEST(StructureSearch, FindsATargetNetworkAndNeverRanksASupersetWorse) {
   for (std::size_t i = 0; i < entries.size(); ++i) by_structure[network::structure(network::parse(entries[i].expression))] = i;
   // The target's own structure fits exactly, with the target's values.
   const auto& t = entries[by_structure.at("k-(c|b)")];
-  EXPECT_LT(t.J, 1e-6);
-  EXPECT_NEAR(t.values.at("k"), 2.0e4, 2.0e4 * 1e-4);
-  EXPECT_NEAR(t.values.at("b"), 20, 20 * 1e-4);
+  EXPECT_LT(t.J, 1e-3);
+  EXPECT_NEAR(t.values.at("k"), 2.0e4, 2.0e4 * 1e-3);
+  EXPECT_NEAR(t.values.at("c"), 300, 300 * 1e-3);
+  EXPECT_NEAR(t.values.at("b"), 20, 20 * 1e-3);
   // Inclusion: opening or locking one element of a network gives a sub-network; the network's
   // optimum is at least as good (it was started from the best of them).
   int checked = 0;
@@ -100,10 +104,10 @@ TEST(StructureSearch, FindsATargetNetworkAndNeverRanksASupersetWorse) {
   EXPECT_GT(checked, 500);
   // Every network containing the target reaches it, and reports the reduction to three elements.
   const auto order = optim::ranking(entries);
-  EXPECT_LT(entries[order[0]].J, 1e-6);
+  EXPECT_LT(entries[order[0]].J, 1e-3);
   int reduce_to_target = 0;
   for (const auto& e : entries)
-    if (e.J < 1e-6 && e.counts.elements == 4) {
+    if (e.J < 1e-3 && e.counts.elements == 4) {
       EXPECT_TRUE(e.reduces()) << e.expression << " → " << e.reduced;
       reduce_to_target += e.reduced_structure == "k-(c|b)" ? 1 : 0;
     }
@@ -111,19 +115,22 @@ TEST(StructureSearch, FindsATargetNetworkAndNeverRanksASupersetWorse) {
   // The best point for (3 elements, 1 inerter) is the target, and it is Pareto-optimal; nothing with
   // fewer elements fits.
   for (const auto& p : optim::pareto_points(entries)) {
-    if (p.elements < 3) EXPECT_GT(p.J, 1e-3) << p.network;
+    if (p.elements < 3) {
+      EXPECT_GT(p.J, 1e-2) << p.network;
+    }
     if (p.elements == 3 && p.inerters == 1) {
-      EXPECT_LT(p.J, 1e-6);
+      EXPECT_LT(p.J, 1e-3);
       EXPECT_TRUE(p.pareto);
     }
   }
 }
 
 TEST(StructureSearch, RefusesARepeatedElementName) {
-  EXPECT_THROW(optim::structure_search({"k|k"}, [](std::size_t, const std::string&, const std::vector<network::Params>&) {
-                 return optim::StructureOutcome{};
-               }),
-               InvalidArgument);
+  const optim::StructureOptimiser none = [](std::size_t, const std::string&, const std::vector<network::Params>&) {
+    return optim::StructureOutcome{};
+  };
+  const std::vector<std::string> twice{"k|k"};
+  EXPECT_THROW(optim::structure_search(twice, none), InvalidArgument);
 }
 
 TEST(StructureSearch, TunedMassDamperAtLeastAsGoodAsTheBestFixedLayout) {
@@ -146,6 +153,20 @@ TEST(StructureSearch, TunedMassDamperAtLeastAsGoodAsTheBestFixedLayout) {
   // Den Hartog's absorber (k|c) is not the best: a three-element network does better.
   EXPECT_LT(best.J, optim::optimise_layout(s, "k|c").cost.J * 0.99);
   EXPECT_EQ(best.counts.elements, 3);
+
+  // The positive-real biquadratic (degree 2) is never worse than the best network with at most two
+  // springs and inerters; it is positive real by the certificate, and its realisation has the
+  // same objective.
+  const optim::StructureEntry* two = nullptr;
+  for (const auto& e : entries)
+    if (optim::reactive_elements(network::assign(network::parse(e.expression), e.values)) <= 2 && (!two || e.cost < two->cost)) two = &e;
+  ASSERT_NE(two, nullptr);
+  const auto bound = optim::admittance_bound(s, 2, network::assign(network::parse(two->expression), two->values));
+  EXPECT_LE(bound.J, two->J * (1 + 1e-9)) << two->expression;
+  EXPECT_TRUE(bound.pr.positive_real) << bound.pr.reason;
+  ASSERT_TRUE(bound.synthesis.has_value()) << bound.synthesis_error;
+  EXPECT_NEAR(bound.J_realised, bound.J, 1e-6 * bound.J);
+  EXPECT_LE(std::max(bound.y.num.size(), bound.y.den.size()), 3u);
 }
 
 TEST(StructureSearch, PruneRemovesElementsThatDoNotMatter) {
@@ -164,7 +185,18 @@ TEST(StructureSearch, PruneRemovesElementsThatDoNotMatter) {
   EXPECT_EQ(p.at("c"), 0.0);
   EXPECT_TRUE(std::isinf(p.at("b")));
   EXPECT_EQ(p.at("k"), 1000.0);
-  // An element that matters stays.
-  const auto q = optim::prune("(k|c)-b", {{"k", 1000}, {"c", 100}, {"b", 1e12}}, cost, 1e-4);
+  // An element that matters stays: fitting k|c, the damper stays and the inerter goes.
+  const network::Network kc = network::assign(network::parse("k|c"), {{"k", 1000}, {"c", 100}});
+  auto cost2 = [&](const network::Params& p) {
+    const network::Network n = network::simplify(network::assign(network::parse("(k|c)-b"), p));
+    double J = 0;
+    for (double w : {0.5, 5.0, 50.0}) {
+      const cd s(0, w);
+      J = std::max(J, std::abs(network::admittance(n, s) - network::admittance(kc, s)) / std::abs(network::admittance(kc, s)));
+    }
+    return J + 1e-3;
+  };
+  const auto q = optim::prune("(k|c)-b", {{"k", 1000}, {"c", 100}, {"b", 1e12}}, cost2, 1e-4);
   EXPECT_EQ(q.at("c"), 100.0);
+  EXPECT_TRUE(std::isinf(q.at("b")));
 }
