@@ -9,6 +9,7 @@
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/solve/integrator.hpp"
+#include "evaluable.hpp"
 #include "warm_starts.hpp"
 
 namespace inerta::optim {
@@ -76,6 +77,7 @@ void finish(const ModelStudy& study, ModelCost& c) {  // J, the limits and the r
 }  // namespace
 
 ModelCost evaluate(const ModelStudy& study, const network::Network& net) {
+  require_evaluable(net);
   const Objective& o = study.objective;
   const mbs::Model m = with_strut_network(study.model, study.strut, net);
   mbs::State x = mbs::assemble(m, 0.0);

@@ -11,6 +11,7 @@
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
+#include "evaluable.hpp"
 #include "warm_starts.hpp"
 
 namespace inerta::optim {
@@ -39,6 +40,7 @@ network::Network default_suspension(const Study& study) {
 }
 
 StudyCost evaluate(const Study& study, const network::Network& net) {
+  require_evaluable(net);
   StudyCost c;
   c.J = -1;
   for (std::size_t i = 0; i < study.catenaries.size(); ++i) {

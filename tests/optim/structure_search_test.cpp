@@ -200,3 +200,22 @@ TEST(StructureSearch, PruneRemovesElementsThatDoNotMatter) {
   EXPECT_EQ(q.at("c"), 100.0);
   EXPECT_TRUE(std::isinf(q.at("b")));
 }
+
+TEST(StructureSearch, AnIllConditionedNetworkIsRefusedNotEvaluated) {
+  // A damper of 1e9 N·s/m in series with a 1 kg inerter: a pole at 1e9 rad/s, whose realisation's
+  // direct terms (d0 = −c²/b) would swamp the result; the limit c → ∞ (the inerter alone) is
+  // evaluated instead, and a moderate damper still is.
+  const optim::ModelStudy s = io::load_model_study(inerta::testing::write_study(
+      "tmd-ill.yaml", "model: " + inerta::testing::model_path("tmd.yaml") +
+                          "\nstrut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8, points: 50}}\n"
+                          "layouts: [\"k|(c-b)\"]\n"));
+  try {
+    optim::evaluate(s, network::resolve("k|(c-b)", {{"k", 4500}, {"c", 1e9}, {"b", 1}}));
+    ADD_FAILURE() << "evaluated";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("pole at 1e+09 rad/s"), std::string::npos) << e.what();
+  }
+  const double rigid = optim::evaluate(s, network::resolve("k|(c-b)", {{"k", 4500}, {"c", INFINITY}, {"b", 1}})).J;
+  const double stiff = optim::evaluate(s, network::resolve("k|(c-b)", {{"k", 4500}, {"c", 1e5}, {"b", 1}})).J;
+  EXPECT_NEAR(stiff, rigid, 1e-3 * rigid);
+}
