@@ -49,7 +49,7 @@ int reactive_elements(const Network& bound) {
   if (s.kind == Network::Kind::Open || s.kind == Network::Kind::Rigid) return 0;
   if (s.kind == Network::Kind::Admittance)
     return static_cast<int>(std::max(s.num.size(), s.den.size())) - 1;
-  const auto c = network::count_elements(s);
+  const auto c = network::count_elements(network::canonical(s));  // b1-b2 in series is one inerter
   return c.springs + c.inerters;
 }
 

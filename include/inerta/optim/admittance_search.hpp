@@ -51,8 +51,8 @@ AdmittanceResult admittance_bound(const Study& study, int degree, const network:
 AdmittanceResult admittance_bound(const ModelStudy& study, int degree, const network::Network& warm,
                                   const numerics::Progress& progress = {});
 
-/// McMillan degree of a network's admittance bound: springs + inerters of the simplified network
-/// (an upper bound of the degree, equal for the networks Inerta enumerates up to cancellations).
+/// Springs + inerters of the simplified network in canonical form (same-type neighbours merged): an
+/// upper bound of the McMillan degree of its admittance, the degree of an Admittance leaf itself.
 int reactive_elements(const network::Network& bound);
 
 }  // namespace inerta::optim
