@@ -98,13 +98,18 @@ Network canonical(const Network& net) {
 std::string structure(const Network& net) {
   check_simplified(net);
   if (net.is_element()) return std::string(1, type_letter(net.kind));
-  std::vector<std::pair<std::pair<int, std::string>, std::string>> parts;
   const Network c = canonical(net);
   if (c.is_element()) return std::string(1, type_letter(c.kind));
   std::string s;
   for (const auto& m : c.children) {
-    const std::string part = m.is_element() ? std::string(1, type_letter(m.kind)) : "(" + structure(m) + ")";
-    s += (s.empty() ? "" : (c.kind == K::Series ? "-" : "|")) + part;
+    if (!s.empty()) s += c.kind == K::Series ? '-' : '|';
+    if (m.is_element()) {
+      s += type_letter(m.kind);
+    } else {  // appended piecewise: "(" + string trips GCC 12's -Wrestrict false positive
+      s += '(';
+      s += structure(m);
+      s += ')';
+    }
   }
   return s;
 }
