@@ -70,7 +70,7 @@ int run_networks() {
   try {
     nets = network::enumerate(o);
   } catch (const network::NetworkError& e) {
-    throw CLI::ValidationError("networks", e.what());
+    throw CLI::ValidationError(e.what());  // already "networks: ..."
   }
   std::map<int, int> per;
   std::string text;
