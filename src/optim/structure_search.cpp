@@ -214,6 +214,20 @@ std::vector<ParetoPoint> pareto_points(const std::vector<StructureEntry>& entrie
   return out;
 }
 
+namespace {
+// prune() of an optimum with the study's cost of a bound network (a rigid network is no design).
+template <class CostOfNetwork>
+network::Params prune_optimum(const std::string& expression, const network::Params& values, CostOfNetwork&& cost) {
+  return prune(
+      expression, values,
+      [&](const network::Params& p) {
+        const Network net = network::resolve(expression, p);
+        return network::simplify(net).kind == K::Rigid ? static_cast<double>(INFINITY) : cost(net);
+      },
+      prune_tolerance);
+}
+}  // namespace
+
 std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<LayoutResult>& results,
                                          const StructureProgressFn& progress) {
   Study study = study_in;
@@ -225,13 +239,7 @@ std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<Layo
         LayoutResult& r = results[i];
         try {
           r = optimise_layout(study, expression, {}, warm);
-          const auto pruned = prune(
-              expression, r.values,
-              [&](const network::Params& p) {
-                const Network net = network::resolve(expression, p);
-                return network::simplify(net).kind == K::Rigid ? static_cast<double>(INFINITY) : evaluate(study, net).J;
-              },
-              prune_tolerance);
+          const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).J; });
           if (pruned != r.values) r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
         } catch (const NumericalError&) {  // the best point's final evaluation failed: no design
           r = LayoutResult{expression, expression, {}, {}, 0};
@@ -256,13 +264,8 @@ std::vector<StructureEntry> optimise_all(const ModelStudy& study_in, std::vector
         ModelLayoutResult& r = results[i];
         try {
           r = optimise_layout(study, expression, {}, warm);
-          const auto pruned = prune(
-              expression, r.values,
-              [&](const network::Params& p) {
-                const Network net = network::resolve(expression, p);
-                return network::simplify(net).kind == K::Rigid ? static_cast<double>(INFINITY) : evaluate(study, net).penalised;
-              },
-              prune_tolerance);
+          const auto pruned =
+              prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).penalised; });
           if (pruned != r.values) {
             r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
             r.at_bounds.clear();
