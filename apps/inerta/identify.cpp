@@ -2,6 +2,8 @@
 // docs/cli.md#identify, docs/identification.md). The algorithms are in analysis/identification.
 #include "identify.hpp"
 
+#include "checks.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -18,6 +20,7 @@
 #include "inerta/analysis/identification.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/csv_table.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/io/model_file.hpp"
 
 namespace inerta::cli {
@@ -49,16 +52,7 @@ std::pair<double, double> band_of(const std::string& s, const char* option) {
   return {lo, hi};
 }
 
-class Output {
- public:
-  explicit Output(const std::string& path) : file_(std::fopen(path.c_str(), "w"), &std::fclose) {
-    if (!file_) throw std::runtime_error(fmt::format("cannot write '{}'", path));
-  }
-  std::FILE* get() const { return file_.get(); }
-
- private:
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
-};
+using Output = io::OutputFile;  // written safely (io/files.hpp)
 
 // Frequencies (column f_hz, > 0) of an FRF CSV.
 std::vector<double> frequencies(const io::CsvTable& t) {
@@ -120,17 +114,14 @@ int head_suspension() {
     fmt::print(o.get(), "f_hz,k2,c2,in_band\n");
     for (const auto& p : r.per_frequency)
       fmt::print(o.get(), "{:.10g},{:.10g},{:.10g},{}\n", p.f, p.k2, p.c2, p.f >= lo && p.f <= hi ? 1 : 0);
+    o.commit();
     fmt::print("wrote {} (eq. 4.19 per frequency)\n", args.out);
   }
   return 0;
 }
 
 int frf_fit() {
-  std::ifstream in(args.model);
-  if (!in) throw ModelError(fmt::format("{}: cannot open the model file", args.model));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = io::read_input_text(args.model, "model file");
   // Parameters "NAME.KEY" (bounds: ÷10 … ×10 the file's value) or "NAME.KEY=LO:HI".
   std::vector<numerics::Variable> vars;
   for (const auto& spec : args.fit) {
@@ -204,6 +195,7 @@ int frf_fit() {
                    meas.H[i][k].real(), meas.H[i][k].imag());
       fmt::print(o.get(), "\n");
     }
+    o.commit();
     fmt::print("wrote {} (fitted and measured FRFs)\n", args.out);
   }
   return 0;
@@ -265,6 +257,7 @@ int actuator_dynamic() {
       fmt::print(o.get(), "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", p.f, p.amplitude, p.Y_E.real(),
                  p.Y_E.imag(), y.real(), y.imag());
     }
+    o.commit();
     fmt::print("wrote {} (estimated and fitted admittance)\n", args.out);
   }
   return 0;
@@ -278,7 +271,7 @@ CLI::App* add_identify_commands(CLI::App& app) {
 
   head_cmd = idn->add_subcommand("head-suspension", "Head k2, c2 from the head and upper-arm FRFs (eqs. 4.19, 4.20)");
   head_cmd->add_option("csv", args.csv, "FRF CSV: f_hz, <head>_re/_im and <arm>_re/_im (m/s²/N)")->required();
-  head_cmd->add_option("--head-mass", args.head_mass, "Head mass m_H, kg")->required()->check(CLI::PositiveNumber);
+  head_cmd->add_option("--head-mass", args.head_mass, "Head mass m_H, kg")->required()->check(positive("kg"));
   head_cmd->add_option("--head", args.head, "Output name of the head FRF in the CSV")->capture_default_str();
   head_cmd->add_option("--arm", args.arm, "Output name of the upper-arm FRF in the CSV")->capture_default_str();
   head_cmd->add_option("--band", args.band, "Least-squares band LO:HI in Hz (default 4:20)");
@@ -295,11 +288,11 @@ CLI::App* add_identify_commands(CLI::App& app) {
   fit_cmd->add_option("--set", args.sets, "Fixed model value NAME.KEY=VALUE (repeatable)");
   fit_cmd->add_option("--starts", args.starts, "Random starts of the pattern search")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  fit_cmd->add_option("--seed", args.seed, "Random seed")->capture_default_str();
+      ->check(count_in(1, 10000));
+  fit_cmd->add_option("--seed", args.seed, "Random seed")->capture_default_str()->check(count_in(0, 4294967295L));
   fit_cmd->add_option("--min-step", args.min_step, "Final mesh size, decades")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(number_in(1e-9, 1, "1e-9 … 1 decades"));
   fit_cmd->add_option("--out", args.out, "CSV of the fitted and measured FRFs");
 
   static_cmd =
@@ -309,18 +302,23 @@ CLI::App* add_identify_commands(CLI::App& app) {
   dynamic_cmd =
       idn->add_subcommand("actuator-dynamic", "Actuator k1 from sinusoidal tests (correlation method, eq. 5.25)");
   dynamic_cmd->add_option("csv", args.csv, "CSV: t (s), displacement (m), force (N)[, f_hz]")->required();
-  dynamic_cmd->add_option("--c1", args.c1, "Damping c1 in series with k1, N·s/m (from actuator-static)");
+  dynamic_cmd->add_option("--c1", args.c1, "Damping c1 in series with k1, N·s/m (from actuator-static)")
+      ->check(positive("N·s/m"));
   dynamic_cmd->add_flag("--fit-c1", args.fit_c1, "Fit c1 as well");
   dynamic_cmd->add_option("--piston-mass", args.piston_mass, "Piston mass m_p, kg (thesis: 3.45)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 1e6, ">= 0 kg"));
   dynamic_cmd->add_option("--friction", args.friction, "Coulomb friction F_r, N (from actuator-static)")
-      ->capture_default_str();
-  dynamic_cmd->add_option("--freq", args.freq, "Excitation frequency, Hz, when the CSV has no f_hz column");
+      ->capture_default_str()
+      ->check(number_in(0, 1e9, ">= 0 N"));
+  dynamic_cmd->add_option("--freq", args.freq, "Excitation frequency, Hz, when the CSV has no f_hz column")
+      ->check(positive("Hz"));
   dynamic_cmd->add_option("--out", args.out, "CSV of the estimated and fitted admittance");
   return idn;
 }
 
 int run_identify() {
+  io::check_output_path(args.out, {args.csv, args.model});  // before any computation
   if (head_cmd->parsed()) return head_suspension();
   if (fit_cmd->parsed()) return frf_fit();
   if (static_cmd->parsed()) return actuator_static();

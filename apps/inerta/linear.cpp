@@ -1,5 +1,6 @@
 #include "linear.hpp"
 
+#include "checks.hpp"
 #include "networks.hpp"
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 
 #include "inerta/analysis/state_space.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/io/json.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/model_study_file.hpp"
@@ -26,15 +28,7 @@ namespace inerta::cli {
 
 namespace {
 
-struct File {
-  explicit File(const std::string& path) {
-    if (path.empty()) return;
-    f.reset(std::fopen(path.c_str(), "w"));
-    if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", path));
-  }
-  std::FILE* get() const { return f ? f.get() : stdout; }
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f{nullptr, &std::fclose};
-};
+using File = io::OutputFile;  // written safely (io/files.hpp)
 
 std::vector<std::string> split(const std::string& s) {
   std::vector<std::string> out;
@@ -50,12 +44,12 @@ mbs::Model load(const std::string& path, const std::vector<std::string>& sets) {
 
 int run_frf_any(const std::string& model_path, const std::vector<std::string>& sets, const std::string& input,
                 const std::vector<std::string>& outputs, const std::vector<double>& f, const std::string& out) {
+  File file(out, {model_path});  // checked before the computation
   const mbs::Model model = load(model_path, sets);
   const auto wall0 = std::chrono::steady_clock::now();
   const analysis::StateSpace ss = analysis::state_space(model, {input}, outputs);
   const auto H = analysis::frequency_response(ss, f);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  File file(out);
   fmt::print(file.get(), "f_hz");
   for (const auto& o : outputs) fmt::print(file.get(), ",{0}_mag,{0}_phase_deg,{0}_re,{0}_im", o);
   fmt::print(file.get(), "\n");
@@ -67,6 +61,7 @@ int run_frf_any(const std::string& model_path, const std::vector<std::string>& s
     }
     fmt::print(file.get(), "\n");
   }
+  file.commit();
   std::FILE* info = out.empty() ? stderr : stdout;
   fmt::print(info, "FRF (linear, about the static equilibrium) of {}: input '{}' ({}), {} frequencies, {} state(s), wall {:.3f} s\n",
              model.name, input, ss.input_units[0], f.size(), ss.A.rows(), wall);
@@ -128,6 +123,7 @@ std::string export_state_space(const std::string& model_path, const std::vector<
       for (Eigen::Index c = 0; c < M.cols(); ++c) fmt::print(f.get(), "{}{:.17g}", c ? "," : "", M(r, c));
       fmt::print(f.get(), "\n");
     }
+    f.commit();
   };
   csv("A", ss.A, ss.states);
   csv("B", ss.B, ss.inputs);
@@ -155,11 +151,11 @@ CLI::App* add_rms_command(CLI::App& app) {
   rms_cmd->add_option("model", a.model, "Model file (YAML)")->required();
   rms_cmd->add_option("--outputs", a.outputs, "Outputs, comma-separated")->required();
   rms_cmd->add_option("--road", a.road_class, "ISO 8608 road class A…H (with --speed and --inputs)");
-  rms_cmd->add_option("--gd0", a.gd0, "Road: G_d(n0) in m³ instead of a class (n0 = 0.1 cycles/m)");
-  rms_cmd->add_option("--speed", a.speed, "Road: speed, m/s");
+  rms_cmd->add_option("--gd0", a.gd0, "Road: G_d(n0) in m³ instead of a class (n0 = 0.1 cycles/m)")->check(positive("m³"));
+  rms_cmd->add_option("--speed", a.speed, "Road: speed, m/s")->check(positive("m/s"));
   rms_cmd->add_option("--inputs", a.inputs, "Road: the driving joints that see the road, comma-separated");
   rms_cmd->add_option("--delays", a.delays, "Road: delay of each input, s, comma-separated (e.g. 0,0.1)");
-  rms_cmd->add_option("--pade", a.pade, "Road: Padé order of a delay")->capture_default_str();
+  rms_cmd->add_option("--pade", a.pade, "Road: Padé order of a delay")->capture_default_str()->check(count_in(1, 20));
   rms_cmd->add_option("--white-noise", a.noise, "INPUT=W: white noise of intensity W (E[u(t)u(s)] = W δ(t−s)); repeatable");
   rms_cmd->add_option("--set", a.sets, "Override a model value NAME.KEY=VALUE (repeatable)");
   rms_cmd->add_option("--out", a.out, "CSV of the rms values");
@@ -168,6 +164,7 @@ CLI::App* add_rms_command(CLI::App& app) {
 
 int run_rms() {
   const RmsArgs& a = rms_args;
+  io::check_output_path(a.out, {a.model});
   const bool road = !a.road_class.empty() || a.gd0 > 0;
   if (road == !a.noise.empty())
     throw CLI::ValidationError("rms", "give either a road (--road CLASS or --gd0, --speed, --inputs) or --white-noise INPUT=W");
@@ -223,6 +220,7 @@ int run_rms() {
     File f(a.out);
     fmt::print(f.get(), "output,rms\n");
     for (std::size_t i = 0; i < outputs.size(); ++i) fmt::print(f.get(), "{},{:.10g}\n", outputs[i], r.rms[static_cast<Eigen::Index>(i)]);
+    f.commit();
     fmt::print("wrote {}\n", a.out);
   }
   return 0;
@@ -345,6 +343,7 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
     };
     line("default", network::to_string(baseline, true), def, 1, {});
     for (const auto& r : results) line(r.layout, r.expression, r.cost, r.evaluations, r.values);
+    f.commit();
   }
   {
     io::Json j;
@@ -380,6 +379,7 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
       for (std::size_t i = 0; i < fd.outputs.size(); ++i) fmt::print(file.get(), ",{:.10g},{:.10g}", fd.magnitude[i][k], fb.magnitude[i][k]);
       fmt::print(file.get(), "\n");
     }
+    file.commit();
     written.push_back("frf.csv");
   }
   {
@@ -398,6 +398,7 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
         for (double v : map.J[i]) fmt::print(file.get(), ",{:.8g}", v);
         fmt::print(file.get(), "\n");
       }
+      file.commit();
       written.push_back("map.csv");
     }
   }

@@ -16,6 +16,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "checks.hpp"
 #include "identify.hpp"
 #include "linear.hpp"
 #include "networks.hpp"
@@ -37,7 +38,7 @@
 #include "inerta/io/study_file.hpp"
 #include "inerta/io/study_report.hpp"
 #include "inerta/io/study_results.hpp"
-#include "inerta/io/text_file.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/mbs/linearisation.hpp"
@@ -183,19 +184,8 @@ int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
   return check_model_file(path, sets);
 }
 
-// A CSV destination: the file given with --out (created or replaced), or standard output.
-class OutputFile {
- public:
-  explicit OutputFile(const std::string& path) {
-    if (path.empty()) return;
-    file_.reset(std::fopen(path.c_str(), "w"));
-    if (!file_) throw std::runtime_error(fmt::format("cannot write '{}'", path));
-  }
-  std::FILE* get() const { return file_ ? file_.get() : stdout; }
-
- private:
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_{nullptr, &std::fclose};
-};
+// A CSV destination: the file given with --out (written safely, io/files.hpp), or standard output.
+using io::OutputFile;
 
 // CSV numbers: 10 significant digits, shortest general form.
 void append_number(std::string& s, double v) {
@@ -368,6 +358,7 @@ void write_line_files(std::FILE* info, const std::string& out, const analysis::C
     OutputFile f(stem + ".supports.csv");
     std::vector<const analysis::TimeHistory*> hs{&r.supports};
     write_csv(f.get(), hs, {""});
+    f.commit();
   }
   OutputFile f(stem + ".psd.csv");
   std::string line = "f";
@@ -385,6 +376,7 @@ void write_line_files(std::FILE* info, const std::string& out, const analysis::C
     line += '\n';
     std::fputs(line.c_str(), f.get());
   }
+  f.commit();
   fmt::print(info, "wrote {0}.supports.csv (support uplift, m) and {0}.psd.csv (contact-force PSD, N²/Hz)\n", stem);
 }
 
@@ -395,6 +387,7 @@ int cmd_simulate(const SimulateArgs& a) {
   opt.atol = a.atol;
   opt.max_step = a.max_step;
   std::FILE* info = a.out.empty() ? stderr : stdout;  // keep a CSV on stdout clean
+  OutputFile file(a.out, {a.model, a.cat.catenary});  // checked before the run; complete only once committed
   const bool show_progress = isatty(STDERR_FILENO) && a.out.size() > 0;
   auto progress = [&](double t, double t_end) {
     if (show_progress) fmt::print(stderr, "\r  t = {:.4g} / {:.4g} s ({:3.0f} %)", t, t_end, 100 * t / t_end);
@@ -426,12 +419,12 @@ int cmd_simulate(const SimulateArgs& a) {
     const double v = to_ms(a.speed, a.cat.unit);
     const analysis::CoupledSimulation r = analysis::simulate_coupled(train, *cat.catenary, v, co, progress);
     clear_progress();
-    OutputFile file(a.out);
     std::vector<const analysis::TimeHistory*> hs;
     std::vector<std::string> prefixes;
     for (std::size_t k = 0; k < r.histories.size(); ++k)
       hs.push_back(&r.histories[k]), prefixes.push_back(train.size() > 1 ? fmt::format("p{}.", k + 1) : "");
     write_csv(file.get(), hs, prefixes);
+    file.commit();
     run_line(panto.model.name, r.t_end, r.stats, panto.model.options.centripetal);
     fmt::print(info, "catenary: {}; {} contact, v = {:.4g} km/h\n", cat.catenary->describe(),
                catenary::kind_name(cat.contact.kind), v * 3.6);
@@ -478,8 +471,8 @@ int cmd_simulate(const SimulateArgs& a) {
       fmt::print(info, ", largest move {:.4g} on {}", r.equilibrium->max_move, model.coord_name(r.equilibrium->largest));
     fmt::print(info, "\n");
   }
-  OutputFile file(a.out);
   write_csv(file.get(), {&r.history}, {""});
+  file.commit();
   run_line(model.name, r.t_end, r.stats, model.options.centripetal);
   print_steady(info, a.steady_from, r.steady);
   if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
@@ -487,6 +480,11 @@ int cmd_simulate(const SimulateArgs& a) {
 }
 
 }  // namespace
+
+// Largest number of points of a range option (--freq, --speeds, --fp).
+constexpr double max_range_points = 1e6;
+// Exit code of a sweep with an unstable periodic solution at some speed (docs/cli.md).
+constexpr int exit_unstable = 4;
 
 // "F0:DF:F1" → F0, F0 + DF, ..., F1 (inclusive within 1e-9 DF).
 std::vector<double> frequency_range(const std::string& spec, const char* option = "--freq") {
@@ -496,9 +494,17 @@ std::vector<double> frequency_range(const std::string& spec, const char* option 
   if (!(in >> f0 >> c1 >> df >> c2 >> f1) || c1 != ':' || c2 != ':' || !(in >> std::ws).eof() || !(f0 >= 0) ||
       !(df > 0) || !(f1 >= f0))
     throw CLI::ValidationError(option, "expected A:STEP:B with 0 <= A <= B and STEP > 0, got '" + spec + "'");
+  // At most max_range_points points (docs/cli.md), counted in floating point before any cast (issue 15).
+  const double n = std::floor((f1 - f0) / df + 1e-9);
+  if (!std::isfinite(f1) || !(n < max_range_points))
+    throw CLI::ValidationError(option, fmt::format("'{}' has {:.3g} points; at most {} are accepted (a larger STEP "
+                                                   "or a shorter range)",
+                                                   spec, n + 1, max_range_points));
   std::vector<double> f;
-  const long n = std::lround(std::floor((f1 - f0) / df + 1e-9));
-  for (long k = 0; k <= n; ++k) f.push_back(f0 + static_cast<double>(k) * df);
+  for (long k = 0; k <= static_cast<long>(n); ++k) f.push_back(f0 + static_cast<double>(k) * df);
+  for (std::size_t k = 1; k < f.size(); ++k)
+    if (!(f[k] > f[k - 1]))
+      throw CLI::ValidationError(option, fmt::format("'{}': STEP {:g} is below the resolution of the values", spec, df));
   return f;
 }
 
@@ -508,6 +514,7 @@ struct AdmittanceArgs {
 };
 
 int cmd_admittance(const AdmittanceArgs& a) {
+  io::check_output_path(a.out);
   network::Params params = parse_params(a.params);
   network::Network net;
   try {
@@ -552,6 +559,7 @@ int cmd_admittance(const AdmittanceArgs& a) {
     fmt::print(out, "{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", fk, std::abs(y), std::arg(y) * 180 / std::numbers::pi,
                y.real(), y.imag());
   }
+  file.commit();
   if (!a.out.empty()) fmt::print(info, "wrote {} ({} frequencies)\n", a.out, f.size());
   return 0;
 }
@@ -565,6 +573,7 @@ struct SweepArgs {
 };
 
 int cmd_sweep(const SweepArgs& a) {
+  OutputFile file(a.out, {a.model, a.cat.catenary});  // checked before the sweep
   auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
   for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
@@ -593,13 +602,15 @@ int cmd_sweep(const SweepArgs& a) {
     });
   if (tty) fmt::print("\r{:70}\r", "");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  OutputFile file(a.out);
   std::FILE* out = file.get();
   const bool line = !results.empty() && !results.front().filtered.empty();  // a finite line: EN 50317 columns
-  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}\n",
-             line ? ",f_mean,f_std,f_max,f_min,f_stat_max,f_stat_min,uplift_max_m" : "");
-  std::size_t worst = 0;
+  const bool periodic = a.method == "periodic";
+  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}{}\n",
+             line ? ",f_mean,f_std,f_max,f_min,f_stat_max,f_stat_min,uplift_max_m" : "",
+             periodic ? ",floquet_max,stable" : ",converged");
+  std::size_t worst = results.size();
   int spans_max = 0;
+  std::vector<std::string> unstable, unsettled;
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& s = results[i].stats;
     fmt::print(out, "{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g}", v[i] * 3.6, v[i], s.mean, s.std,
@@ -610,10 +621,18 @@ int cmd_sweep(const SweepArgs& a) {
       fmt::print(out, ",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", f.mean, f.std, f.max, f.min, f.stat_max,
                  f.stat_min, up.empty() ? 0.0 : *std::max_element(up.begin(), up.end()));
     }
+    if (periodic)
+      fmt::print(out, ",{:.6g},{:d}", results[i].floquet, results[i].stable() ? 1 : 0);
+    else
+      fmt::print(out, ",{:d}", results[i].converged ? 1 : 0);
     fmt::print(out, "\n");
-    if (s.std > results[worst].stats.std) worst = i;
+    const std::string speed = fmt::format("{:g}", a.cat.unit == "kmh" ? v[i] * 3.6 : v[i]);
+    if (!results[i].stable()) unstable.push_back(fmt::format("{} (|μ| = {:.4g})", speed, results[i].floquet));
+    if (!results[i].converged) unsettled.push_back(speed);
+    if (results[i].stable() && (worst == results.size() || s.std > results[worst].stats.std)) worst = i;
     spans_max = std::max(spans_max, results[i].spans);
   }
+  file.commit();
   if (!a.out.empty()) fmt::print("wrote {}\n", a.out);
   if (a.method == "periodic")
     fmt::print("wall {:.3f} s; periodic steady state by harmonic balance ({} harmonics of the pumping frequency)\n",
@@ -625,8 +644,23 @@ int cmd_sweep(const SweepArgs& a) {
   else
     fmt::print("wall {:.2f} s; statistics over the last 2 spans once σ changed < 0.5 % span to span (up to {} spans)\n",
                wall, spans_max);
-  fmt::print("sigma_max = {:.3f} N at {:.4g} km/h ({:.4g} m/s); mean contact force there {:.2f} N\n",
-             results[worst].stats.std, v[worst] * 3.6, v[worst], results[worst].stats.mean);
+  const char* unit = a.cat.unit == "kmh" ? "km/h" : "m/s";
+  if (!unsettled.empty())
+    fmt::print(stderr,
+               "warning: σ did not settle within {} spans at {} {} (converged = 0): those statistics are of the last "
+               "{} spans of a run still changing\n",
+               o.max_spans, fmt::join(unsettled, ", "), unit, o.window_spans);
+  if (worst < results.size())
+    fmt::print("sigma_max = {:.3f} N at {:.4g} km/h ({:.4g} m/s); mean contact force there {:.2f} N{}\n",
+               results[worst].stats.std, v[worst] * 3.6, v[worst], results[worst].stats.mean,
+               unstable.empty() ? "" : " (over the stable speeds)");
+  if (!unstable.empty()) {
+    fmt::print(stderr,
+               "unstable: the periodic solution is unstable at {} {} (largest Floquet multiplier ≥ 1: parametric "
+               "resonance, the response grows; stable = 0, statistics NaN); run those speeds with --method time\n",
+               fmt::join(unstable, ", "), unit);
+    return exit_unstable;
+  }
   return 0;
 }
 
@@ -638,6 +672,9 @@ struct FitArgs {
 
 // The lumped catenary of eq. 7.1 from a finite-element one (catenary::fit_lumped).
 int cmd_catenary_fit(const FitArgs& a) {
+  io::check_output_path(a.out, {a.catenary});
+  io::check_output_path(a.table, {a.catenary, a.out});
+  if (a.table == a.out) throw InvalidArgument(fmt::format("--table and --out are both '{}'; give two file names", a.out));
   const catenary::FeCatenaryData d = io::read_fe_catenary_data(a.catenary, a.sets);
   const io::CatenaryFile file = io::read_catenary_file(a.catenary, a.sets);
   const catenary::FeLine line(d);
@@ -676,6 +713,10 @@ struct ModesArgs {
 
 // Modes of the linearised model about its static equilibrium (spec/02 §2.5, spec/06 §6.3).
 int cmd_modes(const ModesArgs& a) {
+  if (!a.out.empty() && !a.export_json.empty() && a.out == a.export_json)
+    throw InvalidArgument(fmt::format("--out and --export are both '{}'; give two file names", a.out));
+  io::check_output_path(a.export_json, {a.model, a.cat.catenary});
+  OutputFile file(a.out, {a.model, a.cat.catenary});
   analysis::ModalAnalysis ma;
   const bool plain = a.cat.catenary.empty() && !io::load_model_file(a.model, a.cat.sets).has_rig();
   if (!a.cat.catenary.empty()) {
@@ -720,7 +761,6 @@ int cmd_modes(const ModesArgs& a) {
       fmt::print("  {:>3} {:>12.6g} Hz  {}\n", i + 1, und[i].frequency_hz, und[i].description);
   }
   if (!a.out.empty()) {
-    OutputFile file(a.out);
     fmt::print(file.get(), "mode,f_hz,f_damped_hz,zeta,re_lambda,im_lambda");
     for (int k = 0; k < model.n_coords(); ++k) fmt::print(file.get(), ",{}", model.coord_name(k));
     fmt::print(file.get(), "\n");
@@ -730,6 +770,7 @@ int cmd_modes(const ModesArgs& a) {
       for (int k = 0; k < ms[i].shape.size(); ++k) fmt::print(file.get(), ",{:.6g}", ms[i].shape[k]);
       fmt::print(file.get(), "\n");
     }
+    file.commit();
     fmt::print("wrote {}\n", a.out);
   }
   return 0;
@@ -745,6 +786,7 @@ struct FrfArgs {
 // FRF from any input to any outputs of the linearised model (--input), or the test-rig FRF
 // (spec/04 §4.2, eq. 6.25): acceleration over contact force.
 int cmd_frf(const FrfArgs& a) {
+  io::check_output_path(a.out, {a.model});
   if (!a.input.empty()) {
     if (a.method != "linear") throw CLI::ValidationError("--method", "with --input the FRF is the linear one");
     std::vector<std::string> outputs;
@@ -778,7 +820,7 @@ int cmd_frf(const FrfArgs& a) {
     r = analysis::frf_stepped_sine(rig, outputs, f, o);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  OutputFile file(a.out);
+  OutputFile file(a.out, {a.model});
   fmt::print(file.get(), "f_hz");
   for (const auto& o : outputs) fmt::print(file.get(), ",{}_mag,{}_phase_deg", o, o);
   fmt::print(file.get(), "\n");
@@ -788,6 +830,7 @@ int cmd_frf(const FrfArgs& a) {
       fmt::print(file.get(), ",{:.10g},{:.10g}", std::abs(r.H[i][k]), std::arg(r.H[i][k]) * 180 / std::numbers::pi);
     fmt::print(file.get(), "\n");
   }
+  file.commit();
   std::FILE* info = a.out.empty() ? stderr : stdout;
   fmt::print(info, "FRF ({}) of {}: {} frequencies, {} output(s) per N of contact force (m/s²/N), wall {:.2f} s\n",
              a.method, model.name, f.size(), outputs.size(), wall);
@@ -808,6 +851,7 @@ struct CatenaryResponseArgs {
 };
 
 int cmd_catenary_response(const CatenaryResponseArgs& a) {
+  io::check_output_path(a.out, {a.catenary});
   io::CatenaryFile c = io::load_catenary(a.catenary, a.sets);
   const std::vector<double> fp = frequency_range(a.fp, "--fp");
   for (double f : fp)
@@ -817,7 +861,7 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
     throw ModelError(fmt::format("{}: catenary-response analyses the lumped catenary (eq. 7.1); this file is a {}",
                                  a.catenary, c.catenary->describe()));
   auto r = analysis::catenary_response(*lumped, a.force, fp);
-  OutputFile file(a.out);
+  OutputFile file(a.out, {a.catenary});
   fmt::print(file.get(), "fp_hz,v_ms,v_kmh,acc_amplitude,disp_amplitude,mean_uplift,stable\n");
   std::size_t kmax = 0;
   for (std::size_t k = 0; k < r.size(); ++k) {
@@ -825,6 +869,7 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
                r[k].speed * 3.6, r[k].acc_amplitude, r[k].disp_amplitude, r[k].mean_uplift, r[k].stable() ? 1 : 0);
     if (r[k].stable() && (!r[kmax].stable() || r[k].acc_amplitude > r[kmax].acc_amplitude)) kmax = k;
   }
+  file.commit();
   std::vector<double> unstable;
   for (const auto& x : r)
     if (!x.stable()) unstable.push_back(x.fp);
@@ -845,7 +890,7 @@ int cmd_catenary_response(const CatenaryResponseArgs& a) {
 struct OptimiseArgs {
   std::string study, out;
   int map = 15;
-  bool no_plots = false;
+  bool no_plots = false, force = false;
 };
 
 // Draws the PNGs of an `optimise --out DIR` with scripts/plot-study (python3 + matplotlib); without
@@ -873,6 +918,7 @@ void draw_plots(const std::string& dir) {
 
 // Structure-based design (spec/07): optimise every layout of the study, print and write the table.
 int cmd_optimise(const OptimiseArgs& a) {
+  if (!a.out.empty()) io::prepare_output_folder(a.out, io::study_output_names(), a.force);  // before any computation
   if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
   optim::Study study = io::load_study(a.study);
   const bool tty = isatty(STDOUT_FILENO);
@@ -887,6 +933,10 @@ int cmd_optimise(const OptimiseArgs& a) {
   const auto wall0 = std::chrono::steady_clock::now();
   const network::Network baseline = optim::default_suspension(study);
   const optim::StudyCost def = optim::evaluate(study, baseline);
+  if (def.unstable_speed > 0)
+    throw NumericalError(fmt::format("{}: the default suspension's periodic solution is unstable at {:.4g} km/h "
+                                     "(Floquet multiplier ≥ 1): the study has no baseline",
+                                     study.source, def.unstable_speed * 3.6));
   std::vector<optim::LayoutResult> results;
   std::vector<optim::StructureEntry> entries;
   if (study.all) {
@@ -903,7 +953,9 @@ int cmd_optimise(const OptimiseArgs& a) {
       }));
       if (tty) fmt::print("\r{:80}\r", "");
       const auto& r = results.back();
-      fmt::print("  {:<12} J = {:.4f} N after {} evaluations\n", layout, r.cost.J, r.evaluations);
+      fmt::print("  {:<12} J = {:.4f} N after {} evaluations{}{}\n", layout, r.cost.J, r.evaluations,
+                 r.budget_exhausted ? " (budget exhausted: max_evaluations reached before min_step)" : "",
+                 r.unstable ? fmt::format("; {} unstable designs refused", r.unstable) : "");
     }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -947,10 +999,18 @@ int cmd_optimise(const OptimiseArgs& a) {
   } else {
     fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
                "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
-    for (const auto& r : results)
-      fmt::print("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}\n", r.layout, r.expression,
-                 value(r.values, "b"), value(r.values, "c"), value(r.values, "k"), r.cost.J,
-                 100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6, r.cost.mean);
+    bool marked = false;
+    for (const auto& r : results) {
+      auto v = [&](const char* k) {  // '*': ended on a search limit
+        const bool at = std::find(r.at_bounds.begin(), r.at_bounds.end(), k) != r.at_bounds.end();
+        marked = marked || at;
+        return value(r.values, k) + (at ? "*" : "");
+      };
+      fmt::print("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}{}\n", r.layout,
+                 r.expression, v("b"), v("c"), v("k"), r.cost.J, 100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6,
+                 r.cost.mean, r.budget_exhausted ? "  budget exhausted" : "");
+    }
+    if (marked) fmt::print("  *: on a search limit (lo, hi, open or rigid)\n");
   }
   fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
              network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
@@ -1024,6 +1084,7 @@ int cmd_optimise(const OptimiseArgs& a) {
 }
 
 int main(int argc, char** argv) {
+  io::remove_partial_outputs_on_signal();  // Ctrl-C leaves no half-written file (io/files.hpp)
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
 
@@ -1033,31 +1094,29 @@ int main(int argc, char** argv) {
   std::vector<std::string> check_sets;
   check->add_option("--set", check_sets, "Override a value NAME.KEY=VALUE of the file (repeatable)");
 
-  // --t-end and --sample default to the model's options; a given value must be positive.
-  auto positive = [](const std::string& s) {
-    double v = 0;
-    return CLI::detail::lexical_cast(s, v) && v > 0 ? std::string() : "must be a positive number of seconds, got " + s;
-  };
+  using inerta::cli::count_in, inerta::cli::number_in, inerta::cli::positive;
 
   SimulateArgs sa;
   auto* sim = app.add_subcommand("simulate", "Time simulation; writes a CSV of the model's outputs");
   sim->add_option("model", sa.model, "Model file (YAML)")->required();
-  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)")->check(positive);
-  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)")->check(positive);
+  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)")->check(number_in(1e-12, 1e7, "> 0 s, at most 1e7 s"));
+  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)")->check(positive("s"));
   sim->add_option("--out", sa.out, "CSV file to write (default: standard output)");
   sim->add_flag("--no-centripetal", sa.no_centripetal, "Switch off the inerter centripetal correction (eq. 3.8)");
-  sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str();
-  sim->add_option("--atol", sa.atol, "Absolute tolerance (m, rad, m/s, rad/s)")->capture_default_str();
+  sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str()->check(number_in(1e-14, 1, "1e-14 … 1"));
+  sim->add_option("--atol", sa.atol, "Absolute tolerance (m, rad, m/s, rad/s)")->capture_default_str()->check(positive(""));
   sim->add_option("--integrator", sa.integrator, "rk (explicit Dormand-Prince) or bdf (CVODE BDF, stiff)")
       ->check(CLI::IsMember({"rk", "bdf"}))
       ->capture_default_str();
-  sim->add_option("--max-step", sa.max_step, "Largest integrator step, s (0 = unlimited)");
+  sim->add_option("--max-step", sa.max_step, "Largest integrator step, s (0 = unlimited)")->check(number_in(0, 1e7, ">= 0 s"));
   sim->add_flag("--from-equilibrium", sa.from_equilibrium, "Start from the static equilibrium under all loads");
-  sim->add_option("--steady-from", sa.steady_from, "Print min/max/peak-to-peak/mean of every output for t >= T");
+  sim->add_option("--steady-from", sa.steady_from, "Print min/max/peak-to-peak/mean of every output for t >= T")
+      ->check(number_in(0, 1e7, ">= 0 s"));
   add_catenary_options(sim, sa.cat, false);
-  sim->add_option("--speed", sa.speed, "Train speed (with --catenary), in --unit");
+  sim->add_option("--speed", sa.speed, "Train speed (with --catenary), in --unit")->check(number_in(0, 1e4, "0 … 1e4"));
   sim->add_option("--spans", sa.spans, "Spans to simulate under a catenary (t_end = spans · L / v)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(count_in(1, 10000));
   sim->add_option("--positions", sa.positions,
                   "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200");
 
@@ -1078,14 +1137,15 @@ int main(int argc, char** argv) {
   swp->add_option("--integrator", wa.integrator, "rk or bdf")
       ->check(CLI::IsMember({"rk", "bdf"}))
       ->capture_default_str();
-  swp->add_option("--rtol", wa.rtol, "Relative tolerance")->capture_default_str();
-  swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str();
+  swp->add_option("--rtol", wa.rtol, "Relative tolerance")->capture_default_str()->check(number_in(1e-14, 1, "1e-14 … 1"));
+  swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str()->check(positive(""));
   swp->add_flag("--no-centripetal", wa.no_centripetal, "Switch off the inerter centripetal correction");
   swp->add_option("--method", wa.method, "time (simulation, the reference) or periodic (harmonic balance, fast)")
       ->check(CLI::IsMember({"time", "periodic"}))
       ->capture_default_str();
   swp->add_option("--harmonics", wa.harmonics, "Periodic method: harmonics of the pumping frequency")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(count_in(1, analysis::max_harmonics));
 
   ModesArgs ma;
   auto* mds =
@@ -1112,16 +1172,16 @@ int main(int argc, char** argv) {
   frf->add_option("--method", fa.method, "linear or stepped-sine")
       ->check(CLI::IsMember({"linear", "stepped-sine"}))
       ->capture_default_str();
-  frf->add_option("--vc", fa.vc, "Stepped sine: mean velocity amplitude V_c, m/s")->capture_default_str();
-  frf->add_option("--cycles", fa.cycles, "Stepped sine: cycles per frequency")->capture_default_str();
-  frf->add_option("--analysed", fa.analysed, "Stepped sine: last cycles analysed")->capture_default_str();
+  frf->add_option("--vc", fa.vc, "Stepped sine: mean velocity amplitude V_c, m/s")->capture_default_str()->check(positive("m/s"));
+  frf->add_option("--cycles", fa.cycles, "Stepped sine: cycles per frequency")->capture_default_str()->check(count_in(1, 100000));
+  frf->add_option("--analysed", fa.analysed, "Stepped sine: last cycles analysed")->capture_default_str()->check(count_in(1, 100000));
   frf->add_option("--out", fa.out, "CSV file (default: standard output)");
 
   CatenaryResponseArgs ca;
   auto* crs = app.add_subcommand("catenary-response",
                                  "Lumped catenary alone under a constant upward force: acceleration amplitude vs f_p");
   crs->add_option("catenary", ca.catenary, "Catenary file (YAML)")->required();
-  crs->add_option("--force", ca.force, "Constant upward force, N")->capture_default_str();
+  crs->add_option("--force", ca.force, "Constant upward force, N")->capture_default_str()->check(number_in(-1e9, 1e9, "a force in N"));
   crs->add_option("--fp", ca.fp, "Pumping frequencies F0:DF:F1 in Hz (f_p = v / L)")->required();
   crs->add_option("--set", ca.sets, "Override a catenary value (repeatable)");
   crs->add_option("--out", ca.out, "CSV file (default: standard output)");
@@ -1132,7 +1192,7 @@ int main(int argc, char** argv) {
       "fit", "Fit the lumped catenary of eq. 7.1 to a finite-element catenary; write a lumped catenary file");
   fit->add_option("catenary", fit_args.catenary, "Finite-element catenary file (YAML)")->required();
   fit->add_option("--out", fit_args.out, "Lumped catenary file to write (YAML)")->required();
-  fit->add_option("--span", fit_args.span, "Span to fit (1-based; default: the middle span)");
+  fit->add_option("--span", fit_args.span, "Span to fit (1-based; default: the middle span)")->check(count_in(0, 100000));
   fit->add_option("--table", fit_args.table, "Also write the fit along the span (CSV: x, elasticity FE/fit, mass, damping)");
   fit->add_option("--set", fit_args.sets, "Override a catenary value (repeatable), e.g. messenger.tension=17000");
   cat_cmd->require_subcommand(1);
@@ -1146,8 +1206,10 @@ int main(int argc, char** argv) {
   opt->add_option("study", oa.study, "Study file (YAML)")->required();
   opt->add_option("--out", oa.out,
                   "Directory for results.csv/json, the figures' data (CSV) and their PNGs (scripts/plot-study)");
-  opt->add_option("--map", oa.map, "J2 map over (b, k): N×N points (0: none)")->capture_default_str();
+  opt->add_option("--map", oa.map, "J2 map over (b, k): N×N points (0: none)")->capture_default_str()->check(count_in(0, 200));
   opt->add_flag("--no-plots", oa.no_plots, "Write the figures' CSV files but do not draw the PNGs");
+  opt->add_flag("--force", oa.force,
+                "Use an --out folder that is not empty: the files a study writes there are removed first");
 
   try {
     app.parse(argc, argv);

@@ -12,7 +12,7 @@
 
 #include "inerta/io/json.hpp"
 #include "inerta/io/structure_results.hpp"
-#include "inerta/io/text_file.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/network/enumeration.hpp"
 
 namespace inerta::cli {

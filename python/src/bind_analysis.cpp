@@ -61,10 +61,10 @@ struct SweepResult {
   std::vector<analysis::SpeedResult> r;
   double wall_s = 0;
   std::string method;
-  std::size_t worst() const {
-    std::size_t w = 0;
+  std::size_t worst() const {  // over the stable speeds (an unstable one has NaN statistics)
+    std::size_t w = r.size();
     for (std::size_t i = 0; i < r.size(); ++i)
-      if (r[i].stats.std > r[w].stats.std) w = i;
+      if (r[i].stable() && (w == r.size() || r[i].stats.std > r[w].stats.std)) w = i;
     return w;
   }
 };
@@ -370,6 +370,11 @@ void bind_analysis(py::module_& m) {
       .def_readonly("contacts", &analysis::SpeedResult::contacts, "of every pantograph")
       .def_readonly("spans", &analysis::SpeedResult::spans, "spans simulated")
       .def_readonly("sigma_change", &analysis::SpeedResult::sigma_change, "last span-to-span relative change of σ")
+      .def_readonly("converged", &analysis::SpeedResult::converged,
+                    "time method: σ settled before the span limit (False: still changing)")
+      .def_readonly("floquet", &analysis::SpeedResult::floquet,
+                    "periodic method: the largest Floquet multiplier |μ| (>= 1: unstable, statistics NaN)")
+      .def_property_readonly("stable", &analysis::SpeedResult::stable, "floquet < 1 (always True for the time method)")
       .def_property_readonly("support_x", [](const analysis::SpeedResult& s) { return copy(s.support_x); },
                              "a finite line: supports in the analysis section, m")
       .def_property_readonly("support_uplift", [](const analysis::SpeedResult& s) { return copy(s.support_uplift); },
@@ -406,8 +411,15 @@ void bind_analysis(py::module_& m) {
       .def_property_readonly("loss_pct", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stats.loss_pct; }); })
       .def_property_readonly("spans", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.spans; }); })
       .def_property_readonly("sigma_change", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.sigma_change; }); })
+      .def_property_readonly("converged", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.converged ? 1.0 : 0.0; }); },
+                             "1 where σ settled (time method)")
+      .def_property_readonly("floquet", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.floquet; }); },
+                             "largest Floquet multiplier per speed (periodic method; 0 for the time method)")
+      .def_property_readonly("stable", [](const SweepResult& s) { return column(s.r, [](auto& x) { return x.stable() ? 1.0 : 0.0; }); },
+                             "1 where the periodic solution is stable")
       .def_property_readonly("sigma_max", [](const SweepResult& s) {
         if (s.r.empty()) throw py::value_error("empty sweep");
+        if (s.worst() == s.r.size()) throw py::value_error("no stable speed: every periodic solution is unstable");
         const auto& w = s.r[s.worst()];
         return py::make_tuple(w.stats.std, w.speed, w.stats.mean);
       }, "(σ_max in N, its speed in m/s, the mean contact force there in N)")

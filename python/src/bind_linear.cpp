@@ -133,7 +133,8 @@ void bind_linear(py::module_& m) {
       .def_readonly("values", &optim::ModelLayoutResult::values)
       .def_readonly("at_bounds", &optim::ModelLayoutResult::at_bounds)
       .def_readonly("cost", &optim::ModelLayoutResult::cost)
-      .def_readonly("evaluations", &optim::ModelLayoutResult::evaluations);
+      .def_readonly("evaluations", &optim::ModelLayoutResult::evaluations)
+      .def_readonly("budget_exhausted", &optim::ModelLayoutResult::budget_exhausted, "the search stopped at max_evaluations");
   m.def("default_network", &optim::default_network, py::arg("study"), "The study strut's own network.");
   m.def("evaluate_model", [](const ModelStudy& s, const std::string& layout, const network::Params& p) {
     py::gil_scoped_release release;

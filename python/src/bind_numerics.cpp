@@ -2,8 +2,11 @@
 // options, and the cubic spline.
 #include <fmt/format.h>
 
+#include <pybind11/functional.h>
+
 #include "common.hpp"
 #include "inerta/numerics/cubic_spline.hpp"
+#include "inerta/numerics/floquet.hpp"
 #include "inerta/numerics/pattern_search.hpp"
 
 namespace inerta::python {
@@ -60,7 +63,17 @@ void bind_numerics(py::module_& m) {
       .def_readonly("u", &numerics::Result::u, "search coordinates, decades")
       .def_readonly("cost", &numerics::Result::cost)
       .def_readonly("evaluations", &numerics::Result::evaluations)
-      .def_readonly("best_start", &numerics::Result::best_start);
+      .def_readonly("best_start", &numerics::Result::best_start)
+      .def_readonly("exhausted", &numerics::Result::exhausted,
+                    "a start stopped at max_evaluations before its mesh reached min_step");
+  py::class_<numerics::FloquetResult>(m, "FloquetResult", "Floquet multipliers of a linear time-periodic system.")
+      .def_readonly("multipliers", &numerics::FloquetResult::multipliers, "eigenvalues of the monodromy matrix, largest first")
+      .def_readonly("largest", &numerics::FloquetResult::largest, "max |μ|")
+      .def_property_readonly("stable", &numerics::FloquetResult::stable, "largest < 1");
+  m.def("monodromy", &numerics::monodromy, py::arg("A"), py::arg("b"), py::arg("r"), py::arg("T"), py::arg("steps") = 256,
+        "Φ(T) of dX/dt = (A + b r(t)) X over one period T (r(t): a row of A's size; Strang splitting, second order).");
+  m.def("floquet", &numerics::floquet, py::arg("A"), py::arg("b"), py::arg("r"), py::arg("T"), py::arg("steps") = 256,
+        "Floquet multipliers of dX/dt = (A + b r(t)) X: the eigenvalues of monodromy(A, b, r, T, steps).");
   m.def("decode", &numerics::decode, py::arg("variable"), py::arg("u"), "The value of a variable at coordinate u (decades).");
   m.def("describe", &numerics::describe, py::arg("value"), "'open', 'rigid' or the number.");
   m.def("pattern_search", [](const std::vector<numerics::Variable>& vars, const py::object& cost,

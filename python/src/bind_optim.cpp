@@ -131,6 +131,8 @@ void bind_optim(py::module_& m) {
       .def_readonly("speed", &optim::StudyCost::speed, "m/s of the worst σ")
       .def_readonly("mean", &optim::StudyCost::mean, "mean contact force there, N")
       .def_readonly("catenary", &optim::StudyCost::catenary, "index of the worst catenary")
+      .def_readonly("unstable_speed", &optim::StudyCost::unstable_speed,
+                    "> 0: the periodic solution is unstable at this speed, m/s (J = inf, infeasible)")
       .def("__repr__", [](const optim::StudyCost& c) {
         return fmt::format("StudyCost(J={:.4f} N at {:.4g} km/h, catenary {})", c.J, c.speed * 3.6, c.catenary);
       });
@@ -140,6 +142,9 @@ void bind_optim(py::module_& m) {
       .def_readonly("values", &optim::LayoutResult::values, "all element values, SI (0 open, inf rigid)")
       .def_readonly("cost", &optim::LayoutResult::cost)
       .def_readonly("evaluations", &optim::LayoutResult::evaluations)
+      .def_readonly("unstable", &optim::LayoutResult::unstable, "designs the search refused as unstable")
+      .def_readonly("budget_exhausted", &optim::LayoutResult::budget_exhausted, "the search stopped at max_evaluations")
+      .def_readonly("at_bounds", &optim::LayoutResult::at_bounds, "free values that ended on the search's limits")
       .def("network", [](const optim::LayoutResult& r) { return network::resolve(r.layout, r.values); },
            "the bound network of the optimum")
       .def("__repr__", [](const optim::LayoutResult& r) {

@@ -114,6 +114,7 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [opts, inerta.count_elements(inerta.parse("k|c")), inerta.positive_real([1.0], [1.0]),
             inerta.synthesise([1.0, 1.0, 1.0], [4.0, 1.0, 1.0]), entries[0], inerta.pareto_points(entries)[0]]
     out += [inerta.admittance_bound(ms, 1, inerta.resolve("k|c", mr.values))]
+    out += [inerta.floquet([[0.0, 1.0], [-1.0, -0.1]], [0.0, 1.0], lambda t: [0.0, 0.0], 1.0)]
     return out
 
 

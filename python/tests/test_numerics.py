@@ -48,3 +48,17 @@ def test_cubic_spline():
     assert s.value(0.5) == pytest.approx(s(0.5))
     with pytest.raises(ValueError):
         inerta.CubicSpline([0, 1], [0, 1], "clamped")
+
+
+def test_floquet_of_mathieus_equation():
+    """x'' + (δ + ε cos t) x = 0: unstable in the tongue around δ = 1/4, det Φ = 1."""
+    A = np.array([[0.0, 1.0], [-0.25, 0.0]])
+    b = np.array([0.0, 1.0])
+    r = lambda t: np.array([-0.1 * math.cos(t), 0.0])
+    f = inerta.floquet(A, b, r, 2 * math.pi)
+    assert not f.stable and f.largest > 1
+    phi = inerta.monodromy(A, b, r, 2 * math.pi)
+    assert np.linalg.det(phi) == pytest.approx(1.0, abs=1e-10)
+    A[0, 0], A[1, 0] = 0.0, -0.5
+    A[1, 1] = -0.02
+    assert inerta.floquet(A, b, r, 2 * math.pi).stable

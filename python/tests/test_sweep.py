@@ -158,3 +158,21 @@ def test_ctrl_c_cancels_a_sweep(hsx, lumped, round_time):
     assert time.perf_counter() - t0 < 0.3 + 2 * round_time  # the whole sweep takes about 12 rounds
     # the module still works afterwards
     assert len(inerta.sweep(hsx, lumped, [50.0])) == 1
+
+
+def test_sweep_periodic_flags_unstable_speeds(hsx):
+    """Issue 15: kc1 = 6500 N/m at 380–400 km/h is a parametric resonance (Floquet multiplier > 1)."""
+    cat = inerta.load_catenary(model("catenary.yaml"), ["catenary.kc1=6500"])
+    r = inerta.sweep_periodic(hsx, cat, inerta.kmh([380, 390, 400]))
+    assert list(r.stable) == [0, 0, 0]
+    assert min(r.floquet) > 1
+    assert np.isnan(r.std).all() and not r[1].stable
+    with pytest.raises(ValueError, match="no stable speed"):
+        r.sigma_max
+    s = inerta.sweep_periodic(hsx, inerta.load_catenary(model("catenary.yaml")), inerta.kmh([100, 200]))
+    assert list(s.stable) == [1, 1] and max(s.floquet) < 1
+
+
+def test_time_sweep_says_whether_it_settled(hsx, lumped):
+    r = inerta.sweep(hsx, lumped, inerta.kmh([150]))
+    assert r.converged[0] == 1 and r[0].converged and r[0].stable

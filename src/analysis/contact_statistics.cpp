@@ -115,6 +115,8 @@ SpeedResult run_speed(catenary::Coupled& sys, const RunOptions& o) {
       if (r.spans >= o.min_spans && r.sigma_change < o.tolerance) break;
     }
   }
+  // Not settled within max_spans (issue 15): flagged, not reported like a converged speed.
+  r.converged = o.fixed_spans || (r.spans >= o.min_spans && r.spans > o.settled_spans && r.sigma_change < o.tolerance);
   // Window: the last window_spans spans.
   for (const auto& F : all) {
     const long per = static_cast<long>(F.size()) / r.spans;

@@ -185,7 +185,12 @@ double admittance_cost(double k1, double c1, const std::vector<AdmittancePoint>&
 ActuatorDynamicFit fit_actuator_dynamic(const std::vector<DynamicTest>& tests, double c1, double piston_mass,
                                         double friction, bool fit_c1) {
   if (tests.empty()) throw ModelError("actuator dynamic fit: no test");
-  if (!fit_c1 && !(c1 > 0)) throw ModelError(fmt::format("actuator dynamic fit: c1 must be > 0 N·s/m, got {:g}", c1));
+  if (!fit_c1 && !(c1 > 0 && std::isfinite(c1)))
+    throw ModelError(fmt::format("actuator dynamic fit: c1 must be a finite number > 0 N·s/m, got {:g}", c1));
+  if (!(piston_mass >= 0 && std::isfinite(piston_mass)))
+    throw ModelError(fmt::format("actuator dynamic fit: piston mass must be a finite number >= 0 kg, got {:g}", piston_mass));
+  if (!(friction >= 0 && std::isfinite(friction)))
+    throw ModelError(fmt::format("actuator dynamic fit: friction must be a finite number >= 0 N, got {:g}", friction));
   ActuatorDynamicFit fit;
   for (const auto& T : tests) {
     const std::size_t n = T.t.size();

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <numbers>
 
 #include "inerta/catenary/lumped.hpp"
@@ -14,13 +15,22 @@
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/mbs/linearisation.hpp"
 #include "inerta/numerics/finite_difference.hpp"
+#include "inerta/numerics/floquet.hpp"
 
 namespace inerta::analysis {
 
 using cd = std::complex<double>;
 
+// Splitting steps per period of the Floquet check: second order in the step (tests/numerics/floquet_test.cpp);
+// the catenary's harmonics up to 3 per span get ≥ 85 steps per cycle.
+constexpr int floquet_steps = 256;
+
 std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds, int H) {
+  if (H < 1 || H > max_harmonics)
+    throw InvalidArgument(fmt::format("the periodic method needs 1 to {} harmonics, got {}", max_harmonics, H));
+  for (double v : speeds)
+    if (!(v > 0) || !std::isfinite(v)) throw InvalidArgument(fmt::format("speeds must be finite and > 0 m/s, got {}", v));
   if (pantograph.aero.active()) {  // the aerodynamic uplift depends on the speed: one linearisation per speed
     std::vector<SpeedResult> out(speeds.size());
     tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t s) {
@@ -108,6 +118,16 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
                      coeff(cat.c, h - j) * gd[static_cast<std::size_t>(b)];
       }
     }
+    // Stability of the periodic solution (issue 15): the homogeneous part Ẋ = (A − B(Δk(t) P + Δc(t) Pd)) X.
+    const numerics::FloquetResult fl = numerics::floquet(
+        L.A, B,
+        [&](double t) {
+          double dk = 0, dc = 0;
+          for (std::size_t i = 1; i <= 3; ++i)
+            dk += cat.k[i] * std::cos(static_cast<double>(i) * W * t), dc += cat.c[i] * std::cos(static_cast<double>(i) * W * t);
+          return Eigen::RowVectorXd(-(dk * P + dc * Pd));
+        },
+        2 * std::numbers::pi / W, floquet_steps);
     const Eigen::VectorXcd f = Sys.partialPivLu().solve(rhs);
     std::vector<cd> Fh(static_cast<std::size_t>(nh));
     for (int a = 0; a < nh; ++a)
@@ -126,6 +146,12 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
     }
     r.stats = statistics(F);
     r.F = F;
+    r.floquet = fl.largest;
+    if (!r.stable()) {  // the periodic solution exists but is not reached: no statistics
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      r.stats.mean = r.stats.std = r.stats.max = r.stats.min = r.stats.stat_max = r.stats.stat_min = nan;
+      r.stats.loss_pct = nan;
+    }
     out[s] = std::move(r);
   });
   return out;

@@ -28,6 +28,14 @@ bool needs_acc(const mbs::Model& m) {
   return std::any_of(m.outputs.begin(), m.outputs.end(), [](const mbs::Output& o) { return mbs::needs_accelerations(o); });
 }
 
+// At most max_samples output rows (issue 15): a sampling interval too fine for t_end is refused.
+void check_samples(double t_end, double sample) {
+  if (!(t_end / sample <= static_cast<double>(max_samples)))
+    throw InvalidArgument(fmt::format("simulate: t_end = {:g} s sampled every {:g} s gives {:.3g} rows; at most {} are "
+                                      "written (a larger sampling interval or a shorter run)",
+                                      t_end, sample, t_end / sample, max_samples));
+}
+
 }  // namespace
 
 Simulation simulate(const mbs::Model& model, const SimulateOptions& o, const TimeProgress& progress) {
@@ -36,6 +44,7 @@ Simulation simulate(const mbs::Model& model, const SimulateOptions& o, const Tim
   r.sample = o.sample > 0 ? o.sample : model.options.sample;
   if (!(r.t_end > 0) || !(r.sample > 0) || !std::isfinite(r.t_end) || !std::isfinite(r.sample))
     throw InvalidArgument("simulate: t_end and the sampling interval must be positive numbers of seconds");
+  check_samples(r.t_end, r.sample);
   mbs::State x = mbs::assemble(model, 0.0, &r.assembly);
   if (o.from_equilibrium) {
     r.equilibrium.emplace();
@@ -86,6 +95,9 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
     throw InvalidArgument(fmt::format("simulate: t_end = {:g} s runs the leading pantograph off the line (at most {:g} s)",
                                       r.t_end, sys->end_time()));
   r.sample = o.sample > 0 ? o.sample : T / 400;
+  if (!std::isfinite(r.t_end) || !std::isfinite(r.sample))
+    throw InvalidArgument("simulate: t_end and the sampling interval must be finite numbers of seconds");
+  check_samples(r.t_end, r.sample);
   r.window_from = std::max(0.0, r.t_end - o.window_spans * T);
   if (line) r.section = sys->section();
   r.support_x = sys->support_x();

@@ -71,6 +71,11 @@ void read_lumped(const std::string& path, const YAML::Node& cat, Parsed& c) {
       yaml_fail(path, it->first, k, "unknown key in catenary; expected span, kc, mc, cc");
     }
   }
+  for (const char* k : {"span", "kc", "mc", "cc"})  // no silent defaults (issue 15)
+    if (!cat[k].IsDefined())
+      yaml_fail(path, cat, k,
+                std::string("missing in catenary; the lumped catenary needs span (m), kc (N/m), mc (kg) and cc (N·s/m)") +
+                    ", each as four coefficients [x0, x1, x2, x3] (span: one number)");
 }
 
 void read_profile(const std::string& path, const YAML::Node& pr, Parsed& c) {

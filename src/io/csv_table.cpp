@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "inerta/error.hpp"
+#include "inerta/io/files.hpp"
 
 namespace inerta::io {
 
@@ -34,7 +36,8 @@ std::vector<std::string> split(const std::string& line) {
 CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
   CsvTable t;
   t.source_ = source;
-  std::istringstream in(text);
+  // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first column's name.
+  std::istringstream in(text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text);
   int lineno = 0;
   for (std::string line; std::getline(in, line);) {
     ++lineno;
@@ -66,11 +69,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& source) {
 }
 
 CsvTable CsvTable::read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ModelError(fmt::format("{}: cannot open the CSV file", path));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse(ss.str(), path);
+  return parse(read_input_text(path, "CSV file"), path);
 }
 
 bool CsvTable::has(const std::string& column) const {
@@ -92,7 +91,9 @@ std::vector<double> CsvTable::column(const std::string& name) const {
   for (std::size_t r = 0; r < cells_.size(); ++r) {
     const std::string& s = cells_[r][c];
     const char* end = s.data() + s.size();
-    const char* begin = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
+    // A leading '+' is allowed, but only before a digit or '.': "+-1" is not a number (issue 15).
+    const bool plus = s.size() > 1 && s[0] == '+' && (std::isdigit(static_cast<unsigned char>(s[1])) || s[1] == '.');
+    const char* begin = s.data() + (plus ? 1 : 0);
     auto res = std::from_chars(begin, end, v[r]);
     if (s.empty() || res.ec != std::errc() || res.ptr != end || !std::isfinite(v[r]))
       throw ModelError(fmt::format("{}:{}: column '{}': '{}' is not a finite number", source_, lines_[r], name, s));

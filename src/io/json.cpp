@@ -1,6 +1,6 @@
 #include "inerta/io/json.hpp"
 
-#include "inerta/io/text_file.hpp"
+#include "inerta/io/files.hpp"
 
 namespace inerta::io {
 

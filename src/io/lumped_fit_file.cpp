@@ -3,26 +3,22 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <numbers>
 
 #include "inerta/error.hpp"
+#include "inerta/io/files.hpp"
 
 namespace inerta::io {
 
 namespace {
-std::ofstream open(const std::string& path) {
-  std::ofstream f(path);
-  if (!f) throw ModelError(fmt::format("cannot write '{}'", path));
-  return f;
-}
 std::string list(const std::array<double, 4>& a) { return fmt::format("[{:.6g}, {:.6g}, {:.6g}, {:.6g}]", a[0], a[1], a[2], a[3]); }
 }  // namespace
 
 void write_lumped_catenary(const std::string& path, const catenary::LumpedFit& fit, const catenary::Contact& contact,
                            const std::string& source) {
   const catenary::LumpedCatenary& c = fit.lumped;
-  std::ofstream f = open(path);
+  std::ostringstream f;
   f << fmt::format(
       "# Lumped catenary (spec/05 §5.1, eq. 7.1) fitted to the finite-element catenary {} by `inerta catenary fit`\n"
       "# (catenary/fe_catenary.hpp, fit_lumped): span {} of the line; k_c(x) = 1/e(x) from its static point elasticity,\n"
@@ -38,16 +34,16 @@ void write_lumped_catenary(const std::string& path, const catenary::LumpedFit& f
   f << "  cc: " << list(c.c) << "   # N·s/m\n";
   f << fmt::format("contact:               # as in the finite-element file\n  type: {}\n  stiffness: {:.6g}\n  damping: {:.6g}\n",
                    catenary::kind_name(contact.kind), contact.stiffness, contact.damping);
-  if (!f) throw ModelError(fmt::format("cannot write '{}'", path));
+  write_text_file(path, f.str());
 }
 
 void write_fit_table(const std::string& path, const catenary::LumpedFit& fit) {
-  std::ofstream f = open(path);
+  std::ostringstream f;
   f << "x,elasticity_fe,elasticity_fit,mass,damping\n";
   for (std::size_t i = 0; i < fit.x.size(); ++i)
     f << fmt::format("{:.6g},{:.8g},{:.8g},{:.6g},{:.6g}\n", fit.x[i], fit.elasticity[i], fit.fitted_elasticity[i],
                      fit.mass[i], fit.damping[i]);
-  if (!f) throw ModelError(fmt::format("cannot write '{}'", path));
+  write_text_file(path, f.str());
 }
 
 }  // namespace inerta::io

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "inerta/error.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "lumped_pantograph_file.hpp"
 #include "model_loader.hpp"
@@ -133,13 +134,7 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
   return {std::move(ld.model), panto.first, panto.second, {}};
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw ModelError(fmt::format("{}: cannot open the model file", path));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string read_text(const std::string& path) { return read_input_text(path, "model file"); }
 
 }  // namespace
 

@@ -37,7 +37,10 @@ void Loader::options(const YAML::Node& n) {
   model.options.sample = rd.number_or(n, "sample", model.options.sample);
   if (!(model.options.t_end > 0)) rd.fail(n["t_end"], "t_end", "must be > 0 (s)");
   if (!(model.options.sample > 0)) rd.fail(n["sample"], "sample", "must be > 0 (s)");
-  model.options.max_violation = rd.number_or(n, "max_violation", model.options.max_violation);
+  if (const YAML::Node mv = n["max_violation"]; mv.IsDefined() && mv.IsScalar() && (mv.Scalar() == ".inf" || mv.Scalar() == "inf"))
+    model.options.max_violation = INFINITY;  // the check off
+  else
+    model.options.max_violation = rd.number_or(n, "max_violation", model.options.max_violation);
   if (!(model.options.max_violation > 0))
     rd.fail(n["max_violation"], "max_violation",
             "must be > 0 (m or rad; .inf switches the check off): the largest constraint violation |C| a run may reach");

@@ -8,6 +8,7 @@
 #include <functional>
 #include <sstream>
 
+#include "inerta/io/files.hpp"
 #include "inerta/io/model_file.hpp"
 #include "lumped_pantograph_file.hpp"
 #include "model_loader.hpp"
@@ -178,10 +179,9 @@ std::pair<std::vector<std::string>, std::vector<std::string>> split_overrides(co
   std::pair<std::vector<std::string>, std::vector<std::string>> out;
   if (overrides.empty()) return out;
   YAML::Node root;
+  const std::string text = read_input_text(path, "model file");
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ModelError(fmt::format("{}: cannot open the model file", path));
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
   }

@@ -70,11 +70,13 @@ YAML::Node Reader::need(const YAML::Node& map, const char* key, const std::strin
 
 double Reader::number(const YAML::Node& n, const std::string& key) const {
   if (!n.IsScalar()) fail(n, key, "expected a number");
+  double v = 0;
   try {
-    return n.as<double>();
+    v = n.as<double>();
   } catch (const YAML::Exception&) {
     fail(n, key, fmt::format("expected a number, got '{}'", n.Scalar()));
   }
+  return v;
 }
 double Reader::number(const YAML::Node& map, const char* key, const std::string& what) const {
   return number(need(map, key, what), key);

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "inerta/io/text_file.hpp"
+#include "inerta/io/files.hpp"
 
 namespace inerta::io {
 

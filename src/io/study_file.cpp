@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "inerta/analysis/periodic.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
@@ -16,6 +17,8 @@
 namespace inerta::io {
 
 namespace {
+constexpr double max_study_speeds = 10000;
+
 optim::Study read_study(const std::string& path) {
   const YAML::Node loaded = yaml_load_file(path, "study file");
   const YAML::Node& root = loaded;
@@ -66,12 +69,17 @@ optim::Study read_study(const std::string& path) {
   }
   const YAML::Node sp = root["speeds"];
   if (!sp.IsMap()) yaml_fail(path, sp.IsDefined() ? sp : root, "speeds", "expected {from, to, step, unit: kmh|ms}");
+  for (auto it = sp.begin(); it != sp.end(); ++it)
+    if (const std::string k = it->first.Scalar(); k != "from" && k != "to" && k != "step" && k != "unit")
+      yaml_fail(path, it->first, k, "unknown key in speeds; expected from, to, step, unit");
   const double from = yaml_number(path, sp["from"], "from"), to = yaml_number(path, sp["to"], "to"),
                step = yaml_number(path, sp["step"], "step");
   const std::string unit = sp["unit"].IsDefined() ? sp["unit"].as<std::string>() : "ms";
   if (unit != "kmh" && unit != "ms") yaml_fail(path, sp["unit"], "unit", "expected kmh or ms");
   if (!(from > 0) || !(to >= from) || !(step > 0))
     yaml_fail(path, sp, "speeds", "expected 0 < from <= to and step > 0");
+  if (!((to - from) / step < max_study_speeds))
+    yaml_fail(path, sp, "speeds", fmt::format("more than {} speeds; a larger step", max_study_speeds));
   for (long k = 0; from + k * step <= to + 1e-9 * step; ++k)
     s.speeds.push_back((from + k * step) / (unit == "kmh" ? 3.6 : 1.0));
   const YAML::Node ls = root["layouts"];
@@ -97,26 +105,26 @@ optim::Study read_study(const std::string& path) {
       const std::string k = it->first.as<std::string>();
       const YAML::Node v = it->second;
       if (k == "starts")
-        s.search.starts = static_cast<int>(yaml_number(path, v, k));
+        s.search.starts = static_cast<int>(yaml_integer(path, v, k, 1, 10000));
       else if (k == "seed")
-        s.search.seed = static_cast<unsigned>(yaml_number(path, v, k));
+        s.search.seed = static_cast<unsigned>(yaml_integer(path, v, k, 0, 4294967295L));
       else if (k == "lo")
         s.lo = yaml_number(path, v, k);
       else if (k == "hi")
         s.hi = yaml_number(path, v, k);
       else if (k == "min_step")
-        s.search.min_step = yaml_number(path, v, k);
+        s.search.min_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
       else if (k == "max_evaluations")
-        s.search.max_evaluations = static_cast<int>(yaml_number(path, v, k));
+        s.search.max_evaluations = static_cast<int>(yaml_integer(path, v, k, 1, 100000000));
       else
         yaml_fail(path, it->first, k,
                       "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
     }
-    if (!(s.lo > 0) || !(s.hi > s.lo)) yaml_fail(path, se, "search", "expected 0 < lo < hi");
-    if (s.search.starts < 1) yaml_fail(path, se["starts"], "starts", "must be >= 1");
+    if (!(s.lo > 0) || !(s.hi > s.lo)) yaml_fail(path, se, "search", "expected 0 < lo < hi (SI units)");
+    if (s.search.initial_step < s.search.min_step) s.search.initial_step = s.search.min_step;
   }
   if (root["harmonics"].IsDefined())
-    s.harmonics = static_cast<int>(yaml_number(path, root["harmonics"], "harmonics"));
+    s.harmonics = static_cast<int>(yaml_integer(path, root["harmonics"], "harmonics", 1, analysis::max_harmonics));
   try {
     s.operating_length = optim::operating_lengths(s);
   } catch (const ModelError& e) {

@@ -1,5 +1,7 @@
 #include "inerta/io/study_report.hpp"
 
+#include "inerta/io/files.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -36,12 +38,12 @@ Json params(const network::Params& p) {
   return j;
 }
 
+// A CSV of the report, written safely (io/files.hpp): complete only after commit().
 struct File {
-  explicit File(const std::filesystem::path& p) : path(p.string()), f(std::fopen(path.c_str(), "w"), &std::fclose) {
-    if (!f) throw std::runtime_error(fmt::format("cannot write '{}'", path));
-  }
+  explicit File(const std::filesystem::path& p) : path(p.string()), f(path) {}
   std::string path;
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f;
+  OutputFile f;
+  void commit() { f.commit(); }
 };
 
 void write_curves(std::FILE* out, const std::string& prefix, const std::vector<optim::SpeedCurve>& curves) {
@@ -62,6 +64,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
     fmt::print(csv.f.get(), "design,catenary,v_kmh,sigma_N,mean_N\n");
     write_curves(csv.f.get(), "default", r.sigma_default);
     write_curves(csv.f.get(), "best", r.sigma_best);
+    csv.commit();
     written.push_back(csv.path);
   }
   {
@@ -71,6 +74,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
       for (std::size_t k = 0; k < frf->f.size(); ++k)
         fmt::print(csv.f.get(), "{},{:.10g},{:.10g},{:.10g}\n", name, frf->f[k], std::abs(frf->H[0][k]),
                    std::arg(frf->H[0][k]) * 180 / std::numbers::pi);
+    csv.commit();
     written.push_back(csv.path);
   }
   {
@@ -80,6 +84,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
       for (const auto& h : *hs)
         for (std::size_t k = 0; k < h.t.size(); ++k)
           fmt::print(csv.f.get(), "{},{},{:.10g},{:.10g}\n", name, field(h.catenary), h.t[k], h.F[k]);
+    csv.commit();
     written.push_back(csv.path);
   }
   if (r.map) {
@@ -88,6 +93,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
     for (std::size_t i = 0; i < r.map->xs.size(); ++i)
       for (std::size_t j = 0; j < r.map->ys.size(); ++j)
         fmt::print(csv.f.get(), "{:.10g},{:.10g},{:.10g}\n", r.map->xs[i], r.map->ys[j], r.map->at(i, j));
+    csv.commit();
     written.push_back(csv.path);
   }
   {
@@ -97,6 +103,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
       write_curves(csv.f.get(), field(c.design.label) + ",on", c.on);
       if (c.off_simulated) write_curves(csv.f.get(), field(c.design.label) + ",off", c.off);
     }
+    csv.commit();
     written.push_back(csv.path);
   }
   {

@@ -1,5 +1,9 @@
 #include "inerta/mbs/struts.hpp"
 
+#include <fmt/format.h>
+
+#include "inerta/error.hpp"
+
 #include "inerta/mbs/model.hpp"
 #include "inerta/mbs/state.hpp"
 
@@ -20,11 +24,28 @@ StrutKinematics Strut::kinematics(const Model& model, const State& x) const {
   return strut_kinematics(model.frame(x, body_i_), u_i(), model.frame(x, body_j_), u_j());
 }
 StrutKinematics Strut::kinematics(const Workspace& ws) const {
-  if (spatial_) return strut_kinematics(ws.sframe(body_i_), u_i_, ws.sframe(body_j_), u_j_);
-  return strut_kinematics(ws.frame(body_i_), u_i(), ws.frame(body_j_), u_j());
+  StrutKinematics s = spatial_ ? strut_kinematics(ws.sframe(body_i_), u_i_, ws.sframe(body_j_), u_j_)
+                               : strut_kinematics(ws.frame(body_i_), u_i(), ws.frame(body_j_), u_j());
+  // Through zero length the axis ê = r/l flips and the force with it (issue 15): stop instead.
+  if (!(s.l >= min_strut_length))
+    throw NumericalError(fmt::format("strut '{}' passes through zero length (l = {:.3g} m < {:g} m): its axis and force "
+                                     "would flip; check its markers, free length and the loads that compress it",
+                                     name(), s.l, min_strut_length));
+  return s;
 }
 
 double Strut::length(const Model& model, const State& x) const { return kinematics(model, x).l; }
+
+bool Strut::strut_vector(const Model& model, const State& x, Eigen::Vector3d& r) const {
+  if (spatial_) {
+    const SpatialFrame fi = model.sframe(x, body_i_), fj = model.sframe(x, body_j_);
+    r = fj.R + fj.A * u_j_ - fi.R - fi.A * u_i_;
+  } else {
+    const Vec2 d = point_kinematics(model.frame(x, body_j_), u_j()).r - point_kinematics(model.frame(x, body_i_), u_i()).r;
+    r << d, 0.0;
+  }
+  return true;
+}
 
 void Strut::add_tension(double F, const StrutKinematics& s, Workspace& ws) const {
   ws.add_Q(body_i_, body_j_, -F * s.J);

@@ -14,6 +14,10 @@ class Parser {
   explicit Parser(const std::string& text) : s_(text) {}
 
   Network parse_all() {
+    if (s_.size() > max_expression_length)
+      throw NetworkError(fmt::format("the expression has {} characters; at most {} are accepted", s_.size(),
+                                     max_expression_length),
+                         1);
     skip();
     if (pos_ >= s_.size()) throw NetworkError("empty network expression; expected e.g. b-(k|c)", 1);
     Network n = expr();
@@ -26,6 +30,7 @@ class Parser {
  private:
   const std::string& s_;
   std::size_t pos_ = 0;
+  int depth_ = 0;
 
   int col() const { return static_cast<int>(pos_) + 1; }
   void skip() {
@@ -60,8 +65,11 @@ class Parser {
     if (pos_ >= s_.size()) throw NetworkError(fmt::format("expression ends at column {}; expected an element or '('", col()), col());
     if (s_[pos_] == '(') {
       int open = col();
+      if (++depth_ > max_nesting)  // bounded recursion (issue 15)
+        throw NetworkError(fmt::format("parentheses nested more than {} deep at column {}", max_nesting, open), open);
       ++pos_;
       Network n = expr();
+      --depth_;
       skip();
       if (pos_ >= s_.size() || s_[pos_] != ')')
         throw NetworkError(fmt::format("missing ')' for the '(' at column {}", open), pos_ < s_.size() ? col() : open);

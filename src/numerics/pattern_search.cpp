@@ -34,7 +34,12 @@ std::string describe(double value) {
 Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& o, const Progress& progress) {
   const std::size_t n = vars.size();
   for (const auto& v : vars)
-    if (!(v.lo > 0) || !(v.hi > v.lo)) throw std::invalid_argument("variable '" + v.name + "': need 0 < lo < hi");
+    if (!(v.lo > 0) || !(v.hi > v.lo) || !std::isfinite(v.hi))
+      throw std::invalid_argument("variable '" + v.name + "': need finite 0 < lo < hi");
+  // Bounded work (issue 15): a positive finite mesh and budget.
+  if (!(o.min_step > 0) || !(o.initial_step >= o.min_step) || !std::isfinite(o.initial_step))
+    throw std::invalid_argument("pattern search: need 0 < min_step <= initial_step (decades), finite");
+  if (o.max_evaluations < 1) throw std::invalid_argument("pattern search: max_evaluations must be >= 1");
   std::mt19937 rng(o.seed);
   Result best;
   best.cost = INFINITY;
@@ -117,7 +122,10 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
     };
     double fu = evaluate_all({u})[0];
     double step = o.initial_step;
-    while (step >= o.min_step && evals < o.max_evaluations) {
+    // Polls are counted too: a run of cached (repeated) points cannot loop without end.
+    long polls = 0;
+    const long max_polls = 100L * o.max_evaluations;
+    while (step >= o.min_step && evals < o.max_evaluations && polls++ < max_polls) {
       std::vector<std::vector<double>> poll;
       for (std::size_t i = 0; i < n; ++i)
         for (double s : {+1.0, -1.0}) {
@@ -138,6 +146,7 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
       if (progress) progress(start, total + evals, std::min(best.cost, fu));
     }
     total += evals;
+    if (step >= o.min_step) best.exhausted = true;  // stopped by the budget, not by the mesh
     if (fu < best.cost || best.values.empty()) {  // the first start stands even if nothing was finite
       best.cost = fu, best.u = u, best.values = values_of(u), best.best_start = start;
     }

@@ -165,6 +165,7 @@ ModelLayoutResult optimise_layout(const ModelStudy& study, const std::string& la
     const numerics::Result s = numerics::pattern_search(vars, cost, search, progress);
     best = s.values;
     r.evaluations = s.evaluations;
+    r.budget_exhausted = s.exhausted;
   }
   r.values = fixed;
   for (const auto& [k, v] : params_of(best)) r.values[k] = v;

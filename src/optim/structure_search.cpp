@@ -242,10 +242,12 @@ std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<Layo
           const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).J; });
           if (pruned != r.values) r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
         } catch (const NumericalError&) {  // the best point's final evaluation failed: no design
-          r = LayoutResult{expression, expression, {}, {}, 0};
+          r = LayoutResult{};
+          r.layout = r.expression = expression;
           r.cost.J = INFINITY;
         } catch (const ModelError&) {  // every point failed and the best is a rigid suspension
-          r = LayoutResult{expression, expression, {}, {}, 0};
+          r = LayoutResult{};
+          r.layout = r.expression = expression;
           r.cost.J = INFINITY;
         }
         return StructureOutcome{r.values, r.cost.J, r.cost.J, std::isfinite(r.cost.J), r.evaluations};

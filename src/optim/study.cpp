@@ -47,9 +47,14 @@ StudyCost evaluate(const Study& study, const network::Network& net) {
     pantograph::Pantograph p = study.pantograph;
     p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
     auto r = analysis::sweep_periodic(p, *study.catenaries[i], study.contact, study.speeds, study.harmonics);
-    for (const auto& x : r)
+    for (const auto& x : r) {
+      if (!x.stable()) {  // no steady state: infeasible (issue 15)
+        c.J = INFINITY, c.speed = x.speed, c.mean = NAN, c.catenary = static_cast<int>(i), c.unstable_speed = x.speed;
+        return c;
+      }
       if (x.stats.std > c.J)
         c.J = x.stats.std, c.speed = x.speed, c.mean = x.stats.mean, c.catenary = static_cast<int>(i);
+    }
   }
   return c;
 }
@@ -90,12 +95,15 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     for (std::size_t i = 0; i < vars.size(); ++i) p[vars[i].name] = values[i];
     return p;
   };
+  std::atomic<int> unstable{0};
   auto J = [&](const std::vector<double>& values) {
     const network::Network net = network::resolve(layout, params_of(values));
     // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
     if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
     try {
-      return evaluate(study, net).J;
+      const StudyCost c = evaluate(study, net);
+      if (c.unstable_speed > 0) ++unstable;
+      return c.J;
     } catch (const NumericalError&) {
       return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
     }
@@ -109,9 +117,15 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     numerics::Result s = numerics::pattern_search(vars, J, search, progress);
     best = s.values;
     r.evaluations = s.evaluations;
+    r.budget_exhausted = s.exhausted;
   }
+  r.unstable = unstable;
   r.values = fixed;
   for (const auto& [k, v] : params_of(best)) r.values[k] = v;
+  for (std::size_t i = 0; i < vars.size(); ++i)
+    if (const double v = best[i]; v == 0 || std::isinf(v) || std::abs(v - study.lo) <= 1e-9 * study.lo ||
+                                  std::abs(v - study.hi) <= 1e-9 * study.hi)
+      r.at_bounds.push_back(vars[i].name);
   r.cost = evaluate(study, network::resolve(layout, params_of(best)));
   return r;
 }

@@ -7,12 +7,15 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <memory>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "inerta/error.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -55,6 +58,11 @@ int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     Eigen::Map<Eigen::VectorXd>(yd + p->n, p->n) = p->ws.qdd;
     Eigen::Map<Eigen::VectorXd>(yd + 2 * p->n, p->nz) = p->ws.zd;
     return 0;
+  } catch (const NumericalError& e) {  // with the simulated time, when the message has none
+    const std::string m = e.what();
+    p->error = m.starts_with("t = ") ? std::current_exception()
+                                     : std::make_exception_ptr(NumericalError(fmt::format("t = {:.6g} s: {}", t, m)));
+    return -1;
   } catch (...) {
     p->error = std::current_exception();
     return -1;  // unrecoverable
@@ -84,6 +92,50 @@ struct Sundials {
     if (ctx) SUNContext_Free(&ctx);
   }
 };
+
+// Struts passing through zero length between two steps (issue 15): the terminal vector r reverses
+// (r_before · r_after < 0), which a strut's own length check at the evaluated points can miss.
+class StrutWatch {
+ public:
+  StrutWatch(const mbs::Model& model, const mbs::State& x, double t) : model_(model), t_(t) {
+    Eigen::Vector3d r;
+    for (const auto& f : model.forces)
+      if (f->strut_vector(model, x, r)) struts_.push_back({f.get(), r});
+  }
+  void check(const mbs::State& x, double t) {
+    Eigen::Vector3d r;
+    for (auto& [f, prev] : struts_) {
+      f->strut_vector(model_, x, r);
+      // Reversed, and the chord from r_before to r_after passes close to 0 (a rotation by less than
+      // ~174° between two steps does not count).
+      const Eigen::Vector3d d = r - prev;
+      const double s = d.squaredNorm() > 0 ? std::clamp(-prev.dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      if (prev.dot(r) < 0 && (prev + s * d).norm() < 0.05 * std::max(prev.norm(), r.norm()))
+        throw NumericalError(fmt::format(
+            "strut '{}' passed through zero length between t = {:.6g} s and t = {:.6g} s (its terminals crossed: "
+            "l = {:.3g} m before, {:.3g} m after), which would flip its axis and force; check its markers, free length "
+            "and the loads that compress it",
+            f->name(), t_, t, prev.norm(), r.norm()));
+      prev = r;
+    }
+    t_ = t;
+  }
+  bool empty() const { return struts_.empty(); }
+
+ private:
+  const mbs::Model& model_;
+  std::vector<std::pair<const mbs::ForceElement*, Eigen::Vector3d>> struts_;
+  double t_;
+};
+
+// The explicit method's steps collapsing: a stiff model (IntegratorOptions::stiff_step).
+void check_stiff(const IntegratorOptions& opt, long steps, double t0, double t) {
+  if (opt.stiff_step > 0 && steps >= opt.stiff_after && (t - t0) / static_cast<double>(steps) < opt.stiff_step)
+    throw NumericalError(fmt::format(
+        "integrator (rk) at t = {:.6g} s: {} steps of {:.3g} s on average, below {:g} s: the model is stiff (a very "
+        "large stiffness, damping or inerter value, or Baumgarte alpha/beta); use --integrator bdf",
+        t, steps, (t - t0) / static_cast<double>(steps), opt.stiff_step));
+}
 
 void check(int flag, const char* what) {
   if (flag < 0) throw std::runtime_error(fmt::format("SUNDIALS: {} failed (flag {})", what, flag));
@@ -199,6 +251,7 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
     observer(t, x, ws);
   };
 
+  StrutWatch watch(model, x, t0);
   drift(t0, y);
   sample(t0, y);
   // One step at a time up to t_end; samples are interpolated inside each step (no step is forced).
@@ -225,6 +278,8 @@ RunStats integrate(const mbs::Model& model, mbs::State& x, double t0, double t_e
       throw NumericalError(fmt::format("integrator ({}) failed at t = {:.6g} s (flag {}): {}", method_name(opt.method),
                                        t, flag, p.solver_message));
     }
+    if (opt.method == Method::Rk) check_stiff(opt, steps, t0, t);
+    if (!watch.empty()) load_state(y, n, nz, x), watch.check(x, t);
     drift(t, y);
     for (; k <= n_samples; ++k) {
       double tout = t0 + static_cast<double>(k) * dt_sample;
@@ -252,13 +307,19 @@ struct Stepper::Impl {
   double t;
   Method method;
   long max_steps;
-  Impl(const mbs::Model& model, const mbs::State& x0, double t0, const IntegratorOptions& opt)
+  IntegratorOptions opt;
+  double t0;
+  StrutWatch watch;
+  Impl(const mbs::Model& model, const mbs::State& x0, double t0_, const IntegratorOptions& opt_)
       : p{model, x0, mbs::Workspace(model), model.n_coords(), model.n_states(), nullptr, {}},
-        s(opt.method),
+        s(opt_.method),
         x(x0),
-        t(t0),
-        method(opt.method),
-        max_steps(opt.max_steps) {
+        t(t0_),
+        method(opt_.method),
+        max_steps(opt_.max_steps),
+        opt(opt_),
+        t0(t0_),
+        watch(model, x0, t0_) {
     check_arguments(model, x0, opt);
     setup(s, p, x0, t0, opt);
   }
@@ -288,6 +349,12 @@ void Stepper::advance(double t_end) {
     throw NumericalError(fmt::format("integrator ({}) failed at t = {:.6g} s (flag {}): {}", method_name(m.method), t,
                                      flag, m.p.solver_message));
   load_state(N_VGetArrayPointer(m.s.y), m.p.n, m.p.nz, m.x);
+  if (m.method == Method::Rk) {
+    long steps = 0;
+    ERKStepGetNumSteps(m.s.mem, &steps);
+    check_stiff(m.opt, steps, m.t0, t_end);
+  }
+  m.watch.check(m.x, t_end);
   m.t = t_end;
   if (m.p.model.n_constraints() > 0) {  // the bound of integrate(), at the end of each advance
     mbs::evaluate_constraints(m.p.model, t_end, m.x, m.p.ws);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
@@ -44,4 +45,53 @@ TEST(Periodic, NoHarmonicsNoFluctuation) {
   auto r = analysis::sweep_periodic(io::load_pantograph(inerta::testing::model_path("hsx.yaml")), *c.catenary, c.contact,
                                     {100 / 3.6, 250 / 3.6});
   for (const auto& x : r) EXPECT_LT(x.stats.std, 1e-9);
+}
+
+// Issue 15: the periodic solution's stability (Floquet multipliers of the linearised LTP system).
+TEST(Periodic, StableSpeedsHaveMultipliersInsideTheUnitCircle) {
+  io::CatenaryFile c = io::load_catenary(inerta::testing::model_path("catenary.yaml"));
+  auto r = analysis::sweep_periodic(io::load_pantograph(inerta::testing::model_path("hsx.yaml")), *c.catenary, c.contact,
+                                    {70 / 3.6, 175 / 3.6, 280 / 3.6});
+  for (const auto& x : r) {
+    EXPECT_TRUE(x.stable()) << x.speed;
+    EXPECT_GT(x.floquet, 0.0);
+    EXPECT_LT(x.floquet, 1.0);
+    EXPECT_TRUE(std::isfinite(x.stats.std));
+  }
+}
+
+TEST(Periodic, ParametricResonanceIsReportedUnstable) {
+  // The issue's reproduction: kc1 = 6500 N/m at 380–400 km/h, where the time domain grows.
+  io::CatenaryFile c = io::load_catenary(inerta::testing::model_path("catenary.yaml"), {"catenary.kc1=6500"});
+  const pantograph::Pantograph hsx = io::load_pantograph(inerta::testing::model_path("hsx.yaml"));
+  auto r = analysis::sweep_periodic(hsx, *c.catenary, c.contact, {380 / 3.6, 390 / 3.6, 400 / 3.6});
+  for (const auto& x : r) {
+    SCOPED_TRACE("v = " + std::to_string(x.speed * 3.6) + " km/h");
+    EXPECT_FALSE(x.stable());
+    EXPECT_GT(x.floquet, 1.0);
+    EXPECT_TRUE(std::isnan(x.stats.std));
+  }
+}
+
+TEST(Periodic, UnstableSpeedGrowsInTheTimeDomain) {
+  // The independent check: the time-domain reference at 390 km/h with a penalty contact (which may
+  // lose contact instead of failing): σ keeps growing span over span or contact is lost, where
+  // the stable 200 km/h settles.
+  io::CatenaryFile c =
+      io::load_catenary(inerta::testing::model_path("catenary.yaml"), {"catenary.kc1=6500", "contact.type=penalty"});
+  const pantograph::Pantograph hsx = io::load_pantograph(inerta::testing::model_path("hsx.yaml"));
+  analysis::RunOptions o;
+  o.fixed_spans = true;
+  o.min_spans = 12;
+  o.window_spans = 2;
+  analysis::SpeedResult r;
+  try {
+    r = analysis::sweep(hsx, *c.catenary, c.contact, {390 / 3.6}, o).front();
+  } catch (const NumericalError& e) {  // the growth drives a strut of the pantograph through zero length
+    SUCCEED() << e.what();
+    return;
+  }
+  const double s_first = analysis::statistics(std::vector<double>(r.F.begin(), r.F.begin() + 2 * 400)).std;
+  EXPECT_TRUE(r.stats.loss_pct > 1.0 || r.stats.std > 3 * s_first) << "loss " << r.stats.loss_pct << " %, σ "
+                                                                       << r.stats.std << " vs " << s_first;
 }

@@ -138,3 +138,28 @@ TEST(PatternSearch, NoFiniteCostAnywhereStillReturnsAPoint) {
       EXPECT_EQ(r.cost, INFINITY);
   }
 }
+
+// Issue 15: bounded work and a point always returned.
+TEST(PatternSearch, RefusesAnUnboundedSearch) {
+  auto f = [](const std::vector<double>& x) { return x[0]; };
+  Options o;
+  o.min_step = 0;  // would halve forever
+  EXPECT_THROW(pattern_search({{"k", 1, 10}}, f, o), std::invalid_argument);
+  o.min_step = -1;
+  EXPECT_THROW(pattern_search({{"k", 1, 10}}, f, o), std::invalid_argument);
+  o = Options{};
+  o.max_evaluations = 0;
+  EXPECT_THROW(pattern_search({{"k", 1, 10}}, f, o), std::invalid_argument);
+  EXPECT_THROW(pattern_search({{"k", 1, INFINITY}}, f), std::invalid_argument);
+  EXPECT_THROW(pattern_search({{"k", NAN, 10}}, f), std::invalid_argument);
+}
+
+TEST(PatternSearch, ReportsAnExhaustedBudget) {
+  auto bowl = [](const std::vector<double>& x) { return std::pow(std::log10(x[0] / 3), 2); };
+  Options o;
+  o.starts = 1;
+  o.max_evaluations = 3;
+  EXPECT_TRUE(pattern_search({{"k", 1e-3, 1e3, false, false}}, bowl, o).exhausted);
+  o.max_evaluations = 5000;
+  EXPECT_FALSE(pattern_search({{"k", 1e-3, 1e3, false, false}}, bowl, o).exhausted);
+}

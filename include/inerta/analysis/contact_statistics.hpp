@@ -36,6 +36,13 @@ struct SpeedResult {
   std::vector<ContactStatistics> contacts;  ///< of every contact, in the order of the pantographs
   int spans = 0;                            ///< spans simulated
   double sigma_change = 0;                  ///< last span-to-span relative change of σ (largest over the contacts)
+  /// Time method: σ settled (sigma_change < tolerance) before the span limit; a finite line is always
+  /// converged (one pass). Periodic method: always true.
+  bool converged = true;
+  /// Periodic method: the largest Floquet multiplier |μ| of the linearised time-periodic system
+  /// (numerics/floquet.hpp); ≥ 1 means the periodic solution is unstable and `stats` are NaN. 0: not computed.
+  double floquet = 0;
+  bool stable() const { return floquet < 1.0; }
   std::vector<double> t, F;                 ///< contact-force history of the first contact (all spans)
   /// A finite line: its supports in the analysis section (m along the line) and the largest uplift
   /// of each over the run, m.

@@ -12,11 +12,16 @@
 
 namespace inerta::analysis {
 
+/// Largest number of harmonics H accepted (InvalidArgument above, or below 1).
+inline constexpr int max_harmonics = 256;
+
 /// Contact statistics of the periodic steady state at each speed (m/s), H harmonics of the pumping
 /// frequency. The catenary must have a point model (Catenary::point_model: the lumped catenary),
 /// without mass harmonics m_c1..m_c3 (ModelError otherwise). The linearisation is done once; speeds
 /// are independent solves. A pantograph with an aerodynamic uplift (Pantograph::aero) is
-/// linearised at each speed with that speed's uplift (pantograph::at_speed).
+/// linearised at each speed with that speed's uplift (pantograph::at_speed). Each speed's periodic
+/// solution is checked for stability (Floquet multipliers, SpeedResult::floquet); an unstable one has
+/// NaN statistics.
 std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds,
                                         int harmonics = 8);

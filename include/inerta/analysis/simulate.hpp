@@ -15,6 +15,9 @@
 
 namespace inerta::analysis {
 
+/// Largest number of output samples of a run (t_end / sample); InvalidArgument above it.
+inline constexpr long max_samples = 10'000'000;
+
 /// Sampled outputs: t and one column per output, in the order of the model's outputs.
 struct TimeHistory {
   std::vector<std::string> names;

@@ -4,9 +4,12 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <string>
+#include <unordered_set>
 
 #include "inerta/error.hpp"
+#include "inerta/io/files.hpp"
 
 namespace inerta::io {
 
@@ -17,23 +20,62 @@ namespace inerta::io {
   throw ModelError(fmt::format("{}: '{}': {}", where, key, what));
 }
 
+/// ModelError "file:line: 'key': duplicate key; give each key once" for the first mapping (at any depth)
+/// that holds a key twice (yaml-cpp keeps one of them silently).
+inline void check_unique_keys(const std::string& file, const YAML::Node& n, int depth = 0) {
+  if (depth > 200) yaml_fail(file, n, "", "nested more than 200 levels deep");
+  if (n.IsMap()) {
+    std::unordered_set<std::string> seen;
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      const std::string k = it->first.IsScalar() ? it->first.Scalar() : std::string();
+      if (!k.empty() && !seen.insert(k).second) yaml_fail(file, it->first, k, "duplicate key; give each key once");
+      check_unique_keys(file, it->second, depth + 1);
+    }
+  } else if (n.IsSequence()) {
+    for (const auto& x : n) check_unique_keys(file, x, depth + 1);
+  }
+}
+
 /// Reads a YAML file: ModelError "file: cannot open the <what>" or "file:line: YAML syntax error: …".
 inline YAML::Node yaml_load_file(const std::string& path, const std::string& what) {
+  const std::string text = read_input_text(path, what);
   try {
-    return YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw ModelError(fmt::format("{}: cannot open the {}", path, what));
+    YAML::Node root = YAML::Load(text);
+    check_unique_keys(path, root);
+    return root;
   } catch (const YAML::ParserException& e) {
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
   }
 }
 
+/// A finite number (.nan and .inf are refused; a missing key is "missing; expected a number").
 inline double yaml_number(const std::string& file, const YAML::Node& n, const std::string& key) {
+  if (!n.IsDefined() || n.IsNull()) yaml_fail(file, n, key, "missing; expected a number");
+  double v = 0;
   try {
-    return n.as<double>();
+    v = n.as<double>();
   } catch (const YAML::Exception&) {
-    yaml_fail(file, n, key, "expected a number");
+    yaml_fail(file, n, key, fmt::format("'{}' is not a number", n.IsScalar() ? n.Scalar() : std::string("a list or map")));
   }
+  if (!std::isfinite(v)) yaml_fail(file, n, key, fmt::format("{} is not a finite number", n.Scalar()));
+  return v;
+}
+
+/// A finite number in [lo, hi]; `range` says the expected range and unit, e.g. "> 0 (m)".
+inline double yaml_number_in(const std::string& file, const YAML::Node& n, const std::string& key, double lo, double hi,
+                             const std::string& range) {
+  const double v = yaml_number(file, n, key);
+  if (!(v >= lo && v <= hi)) yaml_fail(file, n, key, fmt::format("{}; expected {}", n.Scalar(), range));
+  return v;
+}
+
+/// A whole number in [lo, hi], range-checked before the cast (issue 15).
+inline long yaml_integer(const std::string& file, const YAML::Node& n, const std::string& key, long lo, long hi) {
+  const double v = yaml_number(file, n, key);
+  if (v != std::floor(v)) yaml_fail(file, n, key, fmt::format("{} is not a whole number", n.Scalar()));
+  if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)))
+    yaml_fail(file, n, key, fmt::format("{}; expected a whole number from {} to {}", n.Scalar(), lo, hi));
+  return static_cast<long>(v);
 }
 
 }  // namespace inerta::io

@@ -3,6 +3,7 @@
 // its generalised force into Workspace::Q and, for inerters, its mass term into Workspace::M
 // (eq. 3.33); it never overwrites them. Each element reports its stored energy and the power it
 // delivers, so that d/dt(T + Σ energy) = Σ power holds for any model without driven constraints.
+#include <Eigen/Core>
 #include <memory>
 #include <string>
 
@@ -52,6 +53,9 @@ class ForceElement {
   /// Null for every other element.
   virtual const network::Network* strut_network() const { return nullptr; }
   virtual std::shared_ptr<const ForceElement> with_network(const network::Network&) const { return nullptr; }
+  /// A strut: its terminal vector r = r_Pj − r_Pi (z = 0 in 2D) at x, so that the integrator can
+  /// stop a strut that passes through zero length between two steps (r reverses). False otherwise.
+  virtual bool strut_vector(const Model&, const State&, Eigen::Vector3d&) const { return false; }
 
  protected:
   int state_offset_ = 0;

@@ -9,6 +9,10 @@
 
 namespace inerta::mbs {
 
+/// Shortest strut length accepted during a run, m: a strut shorter than this has no defined axis and
+/// stops the run (NumericalError naming it; the integrator adds the time).
+inline constexpr double min_strut_length = 1e-6;
+
 /// A strut terminal's local coordinates: a 2-vector for a planar model, a 3-vector for a spatial one.
 struct StrutEnd {
   Vec3 u;
@@ -31,6 +35,7 @@ class Strut : public ForceElement {
   StrutKinematics kinematics(const Model& model, const State& x) const;
   StrutKinematics kinematics(const Workspace& ws) const;  ///< from the frames of ws.set_state
   double length(const Model&, const State& x) const override;
+  bool strut_vector(const Model& model, const State& x, Eigen::Vector3d& r) const override;
   int body_i() const { return body_i_; }
   int body_j() const { return body_j_; }
   Vec2 u_i() const { return u_i_.head<2>(); }

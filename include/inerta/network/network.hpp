@@ -33,7 +33,12 @@ struct Network {
 
 using Params = std::map<std::string, double>;
 
-/// Parses an expression such as "b-(k|c)". Throws NetworkError with the column of the error.
+/// Limits of parse (issue 15): characters of an expression and depth of nested parentheses.
+inline constexpr std::size_t max_expression_length = 10000;
+inline constexpr int max_nesting = 64;
+
+/// Parses an expression such as "b-(k|c)". Throws NetworkError with the column of the error (also
+/// beyond max_expression_length characters or max_nesting nested parentheses).
 Network parse(const std::string& text);
 /// Element names in order of appearance (each once).
 std::vector<std::string> parameter_names(const Network& net);

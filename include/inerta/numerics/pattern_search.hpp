@@ -50,13 +50,16 @@ struct Result {
   double cost = 0;             ///< +∞ (or NaN) if no point had a finite cost: values are the first start's
   int evaluations = 0;  ///< all starts
   int best_start = 0;
+  bool exhausted = false;  ///< some start stopped at max_evaluations before its mesh reached min_step
 };
 
 using Cost = std::function<double(const std::vector<double>& values)>;
 /// progress(start, evaluations so far, best cost so far)
 using Progress = std::function<void(int, int, double)>;
 
-/// Minimises cost(values). Throws std::invalid_argument unless 0 < lo < hi for every variable.
+/// Minimises cost(values). Throws std::invalid_argument unless 0 < lo < hi < ∞ for every variable,
+/// 0 < min_step <= initial_step and max_evaluations >= 1. Always returns a point (values has one entry
+/// per variable), with cost +∞ or NaN when no point had a finite cost.
 /// Deterministic for a given seed (ties broken by poll order).
 Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& options = {},
                       const Progress& progress = {});

@@ -93,6 +93,7 @@ struct ModelLayoutResult {
   std::vector<std::string> at_bounds;  ///< free values that ended on the search's limits (0 or ∞ side)
   ModelCost cost;
   int evaluations = 0;
+  bool budget_exhausted = false;  ///< the search stopped at max_evaluations (numerics::Result::exhausted)
 };
 
 /// Optimises one layout (no free values: evaluates it). progress(start, evaluations, best).

@@ -47,12 +47,16 @@ struct StudyCost {
   double speed = 0;  ///< speed of the worst σ, m/s
   double mean = 0;   ///< mean contact force there, N
   int catenary = 0;  ///< index of the worst catenary
+  /// > 0: the periodic solution is unstable at this speed, m/s (Floquet check, analysis/periodic.hpp):
+  /// the design is infeasible and J = +∞.
+  double unstable_speed = 0;
 };
 
 /// The pantograph's own suspension network (its actuator's), the baseline of the study.
 network::Network default_suspension(const Study& study);
 
 /// J2 of the pantograph with its suspension replaced by `net` (bound), by the periodic fast path.
+/// A design whose periodic solution is unstable at some speed costs J = +∞ (unstable_speed set).
 StudyCost evaluate(const Study& study, const network::Network& net);
 
 struct LayoutResult {
@@ -60,6 +64,9 @@ struct LayoutResult {
   network::Params values;  ///< all element values (fixed and optimised; 0 = open, inf = rigid)
   StudyCost cost;
   int evaluations = 0;
+  int unstable = 0;                     ///< designs the search refused as unstable (Floquet multiplier ≥ 1)
+  bool budget_exhausted = false;        ///< the search stopped at max_evaluations (numerics::Result::exhausted)
+  std::vector<std::string> at_bounds;   ///< free values that ended on the search's limits (lo, hi, 0 or ∞)
 };
 
 /// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner.

@@ -24,6 +24,10 @@ struct IntegratorOptions {
   double atol = 1e-8;
   double max_step = 0;  ///< 0 = unlimited
   long max_steps = 50'000'000;
+  /// Stiffness detection of the explicit method (issue 15): after `stiff_after` steps, a mean step
+  /// below `stiff_step` (s) stops the run with NumericalError advising bdf (0: off).
+  double stiff_step = 1e-6;
+  long stiff_after = 20000;
 };
 
 struct RunStats {
