@@ -1,0 +1,23 @@
+// Fuzz target: study files, as `inerta optimise` reads them: io::is_model_study, then
+// io::load_model_study (docs/studies.md) or io::load_study (pantograph J2 study). The input is
+// written to <scratch>/studies/fuzz-input.yaml, so the seeds' "../models/hsx.yaml" resolves to the
+// repository's models (fuzz_common.hpp). Nothing is optimised: only the loading (which for a model
+// study evaluates the baseline once).
+#include <exception>
+
+#include "fuzz_common.hpp"
+#include "inerta/io/model_study_file.hpp"
+#include "inerta/io/study_file.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const auto& scratch = inerta::fuzz::Scratch::get();
+  const std::string path = scratch.write("studies", inerta::fuzz::as_text(data, size));
+  try {
+    if (inerta::io::is_model_study(path))
+      (void)inerta::io::load_model_study(path);
+    else
+      (void)inerta::io::load_study(path);
+  } catch (const std::exception&) {
+  }
+  return 0;
+}
