@@ -327,12 +327,12 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
   {
     File f(out + "/results.csv");
     fmt::print(f.get(), "layout,expression,J,vs_default_pct,feasible,evaluations");
-    for (const auto& w : o.outputs) fmt::print(f.get(), ",{}", w.name);
-    for (const auto& lim : o.limits) fmt::print(f.get(), ",{}", lim.output);
-    for (const auto& e : elements) fmt::print(f.get(), ",{}", e);
+    for (const auto& w : o.outputs) fmt::print(f.get(), ",{}", io::csv_field(w.name));
+    for (const auto& lim : o.limits) fmt::print(f.get(), ",{}", io::csv_field(lim.output));
+    for (const auto& e : elements) fmt::print(f.get(), ",{}", io::csv_field(e));
     fmt::print(f.get(), "\n");
     auto line = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, int evals, const network::Params& p) {
-      fmt::print(f.get(), "{},\"{}\",{:.10g},{:.6g},{},{}", layout, expr, c.J, 100 * (c.J - def.J) / def.J, c.feasible ? 1 : 0, evals);
+      fmt::print(f.get(), "{},{},{:.10g},{:.6g},{},{}", io::csv_field(layout), io::csv_field(expr), c.J, 100 * (c.J - def.J) / def.J, c.feasible ? 1 : 0, evals);
       for (double v : c.values) fmt::print(f.get(), ",{:.10g}", v);
       for (double v : c.limit_values) fmt::print(f.get(), ",{:.10g}", v);
       for (const auto& e : elements) {

@@ -117,15 +117,22 @@ void print_structure(const std::vector<optim::StructureEntry>& entries, double d
              "optimum (reduced network, SI values)");
   for (std::size_t r = 0; r < std::min(rows, order.size()); ++r) {
     const auto& e = entries[order[r]];
-    fmt::print("  {:>4}  {:<24} {:>12.6g} {:>9.2f}%  {:<8}  {}{}\n", r + 1, e.expression, e.J, 100 * (e.J - default_J) / default_J,
+    fmt::print("  {:>4}  {:<24} {:>12.6g} {:>9.2f}%  {:<8}  {}{}{}\n", r + 1, e.expression, e.J, 100 * (e.J - default_J) / default_J,
                e.reduces() ? fmt::format("{}→{}", e.counts.elements, e.reduced_counts.elements) : fmt::format("{}", e.counts.elements),
-               e.reduced, e.feasible ? "" : "  INFEASIBLE");
+               e.reduced, e.feasible ? "" : "  INFEASIBLE",
+               e.unstable ? fmt::format("  ({} unstable designs refused)", e.unstable) : std::string());
   }
   if (rows > 0 && order.size() > rows) fmt::print("  … {} more networks in structure.csv (with --out)\n", order.size() - rows);
   int reduced = 0;
   for (const auto& e : entries) reduced += e.reduces() ? 1 : 0;
   fmt::print("{} of {} networks reduce at their optimum to a smaller network (an element open or rigid, or merged)\n", reduced,
              entries.size());
+  int unstable_networks = 0, unstable_designs = 0;
+  for (const auto& e : entries) unstable_networks += e.unstable ? 1 : 0, unstable_designs += e.unstable;
+  if (unstable_designs)
+    fmt::print("{} networks met designs whose periodic solution is unstable (Floquet multiplier ≥ 1): {} designs refused "
+               "(J = ∞; the `unstable` column of structure.csv)\n",
+               unstable_networks, unstable_designs);
   fmt::print("\nbest by complexity (reduced networks; * = Pareto-optimal: nothing simpler does better):\n");
   fmt::print("  {:>8} {:>8} {:>12} {:>10}  {}\n", "elements", "inerters", J, "vs default", "network");
   for (const auto& p : optim::pareto_points(entries))

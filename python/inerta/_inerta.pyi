@@ -1458,6 +1458,7 @@ class StructureEntry:
     cost: float
     feasible: bool
     evaluations: int
+    unstable: int
     reduced: str
     reduced_structure: str
     reduced_counts: ElementCounts

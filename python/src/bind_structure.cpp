@@ -95,6 +95,7 @@ void bind_structure(py::module_& m) {
       .def_readonly("cost", &optim::StructureEntry::cost, "what the search minimised")
       .def_readonly("feasible", &optim::StructureEntry::feasible)
       .def_readonly("evaluations", &optim::StructureEntry::evaluations)
+      .def_readonly("unstable", &optim::StructureEntry::unstable, "designs refused as unstable (J2 studies, Floquet)")
       .def_readonly("reduced", &optim::StructureEntry::reduced, "the optimum without its open/rigid elements, with values")
       .def_readonly("reduced_structure", &optim::StructureEntry::reduced_structure)
       .def_readonly("reduced_counts", &optim::StructureEntry::reduced_counts)

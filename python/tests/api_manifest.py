@@ -352,6 +352,7 @@ EXCLUDED = {
     "io::json_text": "see io::json_rows",
     "io::write_json": "see io::json_rows; Python has json.dump",
     "io::write_text_file": "file writing helper of the C++ writers",
+    "io::csv_field": "CSV quoting helper of the C++ writers; Python has the csv module",
     "io::OutputFile": "safe-output plumbing of the C++ writers and the CLI (temporary file + rename); Python has open()",
     "io::check_output_path": "see io::OutputFile",
     "io::read_input_text": "see io::OutputFile; the loaders that use it are bound",

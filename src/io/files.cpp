@@ -139,6 +139,13 @@ void OutputFile::commit() {
   committed_ = true;
 }
 
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   OutputFile f(path);
   if (std::fwrite(text.data(), 1, text.size(), f.get()) != text.size())

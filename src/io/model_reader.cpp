@@ -102,13 +102,20 @@ std::string Reader::text(const YAML::Node& map, const char* key, const std::stri
   return text(need(map, key, what), key);
 }
 
+// A vector's items: positions, velocities, axes, directions, inertias, gravity, table points. None of
+// them may be infinite or NaN (a network value may be .inf, a rigid element: not read here).
+double Reader::finite_item(const YAML::Node& n, const std::string& key) const {
+  const double v = number(n, key);
+  if (!std::isfinite(v)) fail(n, key, fmt::format("expected finite numbers, got '{}'", n.Scalar()));
+  return v;
+}
 mbs::Vec2 Reader::vec2(const YAML::Node& n, const std::string& key) const {
   if (!n.IsSequence() || n.size() != 2) fail(n, key, "expected a list of two numbers [x, y]");
-  return {number(n[0], key), number(n[1], key)};
+  return {finite_item(n[0], key), finite_item(n[1], key)};
 }
 mbs::Vec3 Reader::vec3(const YAML::Node& n, const std::string& key) const {
   if (!n.IsSequence() || n.size() != 3) fail(n, key, "expected a list of three numbers [x, y, z] (a 3D model)");
-  return {number(n[0], key), number(n[1], key), number(n[2], key)};
+  return {finite_item(n[0], key), finite_item(n[1], key), finite_item(n[2], key)};
 }
 mbs::Vec3 Reader::unit3(const YAML::Node& n, const std::string& key) const {
   mbs::Vec3 v = vec3(n, key);
@@ -133,14 +140,14 @@ double Reader::angle(const YAML::Node& map, const std::string& key, double fallb
   if (r.IsDefined() && d.IsDefined())
     fail(d, key + "_deg", fmt::format("give either {} (rad) or {}_deg, not both", key, key));
   if (r.IsDefined()) {
-    const double a = number(r, key);
+    const double a = finite_item(r, key);
     if (std::abs(a) > 2 * std::numbers::pi)
       warning(r, key,
               fmt::format("{:g} rad is more than 2π in magnitude; {} is in radians (for degrees write {}_deg: {:g})", a,
                           key, key, a));
     return a;
   }
-  if (d.IsDefined()) return number(d, key + "_deg") * std::numbers::pi / 180.0;
+  if (d.IsDefined()) return finite_item(d, key + "_deg") * std::numbers::pi / 180.0;
   return fallback;
 }
 

@@ -64,6 +64,7 @@ class Reader {
   bool boolean(const YAML::Node& n, const std::string& key) const;
   std::string text(const YAML::Node& n, const std::string& key) const;
   std::string text(const YAML::Node& map, const char* key, const std::string& what) const;
+  /// A list of finite numbers (ModelError at the item's line for .nan or .inf).
   mbs::Vec2 vec2(const YAML::Node& n, const std::string& key) const;
   mbs::Vec3 vec3(const YAML::Node& n, const std::string& key) const;
   mbs::Vec3 unit3(const YAML::Node& n, const std::string& key) const;  ///< non-zero, normalised
@@ -75,6 +76,7 @@ class Reader {
 
  private:
   std::string file_;
+  double finite_item(const YAML::Node& n, const std::string& key) const;
   std::vector<std::string>* notes_ = nullptr;
 };
 

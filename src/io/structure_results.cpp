@@ -17,13 +17,6 @@ std::string values_text(const network::Params& p) {
   return s;
 }
 double pct(double J, double def) { return 100 * (J - def) / def; }
-// A CSV field: quoted if it holds a comma or a quote.
-std::string field(const std::string& s) {
-  if (s.find_first_of(",\"") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 }  // namespace
 
 Json structure_results_json(const std::string& study, const std::string& objective, const std::string& unit,
@@ -47,6 +40,7 @@ Json structure_results_json(const std::string& study, const std::string& objecti
                     {"reduced_inerters", e.reduced_counts.inerters},
                     {"values", values},
                     {"evaluations", e.evaluations},
+                    {"unstable", e.unstable},
                     {"seconds", e.seconds},
                     {"warm_from", e.warm_from}});
   }
@@ -63,21 +57,22 @@ std::vector<std::string> write_structure_results(const std::string& dir, const s
                     pareto_path = (fs::path(dir) / "pareto.csv").string();
   std::string csv =
       "rank,network,elements,springs,dampers,inerters,J,vs_default_pct,feasible,reduced,reduced_elements,"
-      "reduced_inerters,values,evaluations,seconds,warm_from\n";
+      "reduced_inerters,values,evaluations,seconds,warm_from,unstable\n";
   int rank = 0;
   for (std::size_t i : optim::ranking(entries)) {
     const auto& e = entries[i];
-    csv += fmt::format("{},{},{},{},{},{},{:.10g},{:.4g},{},{},{},{},{},{},{:.3f},{}\n", ++rank, field(e.expression),
+    csv += fmt::format("{},{},{},{},{},{},{:.10g},{:.4g},{},{},{},{},{},{},{:.3f},{},{}\n", ++rank, csv_field(e.expression),
                        e.counts.elements, e.counts.springs, e.counts.dampers, e.counts.inerters, e.J, pct(e.J, default_J),
-                       e.feasible ? 1 : 0, field(e.reduced), e.reduced_counts.elements, e.reduced_counts.inerters,
-                       field(values_text(e.values)), e.evaluations, e.seconds, field(e.warm_from));
+                       e.feasible ? 1 : 0, csv_field(e.reduced), e.reduced_counts.elements, e.reduced_counts.inerters,
+                       csv_field(values_text(e.values)), e.evaluations, e.seconds, csv_field(e.warm_from),
+                       e.unstable);
   }
   write_text_file(csv_path, csv);
   write_json(json_path, structure_results_json(study, objective, unit, default_J, entries));
   std::string p = "elements,inerters,J,vs_default_pct,pareto,network\n";
   for (const auto& q : optim::pareto_points(entries))
     p += fmt::format("{},{},{:.10g},{:.4g},{},{}\n", q.elements, q.inerters, q.J, pct(q.J, default_J), q.pareto ? 1 : 0,
-                     field(q.network));
+                     csv_field(q.network));
   write_text_file(pareto_path, p);
   return {csv_path, json_path, pareto_path};
 }

@@ -17,14 +17,6 @@ namespace inerta::io {
 
 namespace {
 
-// A CSV field: quoted if it holds a comma or a quote.
-std::string field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
 // A number in report.json: NaN as null, ±∞ as "inf" / "-inf".
 Json number(double v) {
   if (std::isnan(v)) return nullptr;
@@ -49,7 +41,7 @@ struct File {
 void write_curves(std::FILE* out, const std::string& prefix, const std::vector<optim::SpeedCurve>& curves) {
   for (const auto& c : curves)
     for (std::size_t k = 0; k < c.speed.size(); ++k)
-      fmt::print(out, "{},{},{:.10g},{:.10g},{:.10g}\n", prefix, field(c.catenary), c.speed[k] * 3.6, c.sigma[k],
+      fmt::print(out, "{},{},{:.10g},{:.10g},{:.10g}\n", prefix, csv_field(c.catenary), c.speed[k] * 3.6, c.sigma[k],
                  c.mean[k]);
 }
 
@@ -83,7 +75,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
     for (const auto& [name, hs] : {std::pair{"default", &r.history_default}, std::pair{"best", &r.history_best}})
       for (const auto& h : *hs)
         for (std::size_t k = 0; k < h.t.size(); ++k)
-          fmt::print(csv.f.get(), "{},{},{:.10g},{:.10g}\n", name, field(h.catenary), h.t[k], h.F[k]);
+          fmt::print(csv.f.get(), "{},{},{:.10g},{:.10g}\n", name, csv_field(h.catenary), h.t[k], h.F[k]);
     csv.commit();
     written.push_back(csv.path);
   }
@@ -100,8 +92,8 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
     File csv(fs::path(dir) / "centripetal.csv");
     fmt::print(csv.f.get(), "design,centripetal,catenary,v_kmh,sigma_N,mean_N\n");
     for (const auto& c : r.centripetal) {
-      write_curves(csv.f.get(), field(c.design.label) + ",on", c.on);
-      if (c.off_simulated) write_curves(csv.f.get(), field(c.design.label) + ",off", c.off);
+      write_curves(csv.f.get(), csv_field(c.design.label) + ",on", c.on);
+      if (c.off_simulated) write_curves(csv.f.get(), csv_field(c.design.label) + ",off", c.off);
     }
     csv.commit();
     written.push_back(csv.path);

@@ -61,8 +61,9 @@ std::vector<std::string> write_study_results(const std::string& dir, const std::
                     json_path = (fs::path(dir) / "results.json").string();
   std::string csv = "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations\n";
   for (const auto& r : results)
-    csv += fmt::format("{},{},{},{},{},{:.6g},{:.4g},{:.6g},{:.6g},{}\n", r.layout, r.expression,
-                       value_text(r.values, "b"), value_text(r.values, "c"), value_text(r.values, "k"), r.cost.J,
+    csv += fmt::format("{},{},{},{},{},{:.6g},{:.4g},{:.6g},{:.6g},{}\n", csv_field(r.layout),
+                       csv_field(r.expression), csv_field(value_text(r.values, "b")), csv_field(value_text(r.values, "c")),
+                       csv_field(value_text(r.values, "k")), r.cost.J,
                        reduction_pct(r.cost, default_cost), r.cost.speed * 3.6, r.cost.mean, r.evaluations);
   write_text_file(csv_path, csv);
   write_json(json_path, study_results_json(study, default_cost, results));

@@ -164,6 +164,7 @@ std::vector<StructureEntry> structure_search(const std::vector<std::string>& exp
       const StructureOutcome o =
           optimise(k, e.expression, warm ? std::vector<network::Params>{warm->values} : std::vector<network::Params>{});
       e.values = o.values, e.J = o.J, e.cost = o.cost, e.feasible = o.feasible, e.evaluations = o.evaluations;
+      e.unstable = o.unstable;
       e.warm_from = warm ? warm->from : std::string();
       e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
       describe_reduced(e);
@@ -250,7 +251,7 @@ std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<Layo
           r.layout = r.expression = expression;
           r.cost.J = INFINITY;
         }
-        return StructureOutcome{r.values, r.cost.J, r.cost.J, std::isfinite(r.cost.J), r.evaluations};
+        return StructureOutcome{r.values, r.cost.J, r.cost.J, std::isfinite(r.cost.J), r.evaluations, r.unstable};
       },
       progress);
 }

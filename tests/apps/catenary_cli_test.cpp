@@ -19,11 +19,7 @@ std::vector<std::string> lines_of(const std::string& text) {
   for (std::string l; std::getline(ss, l);) lines.push_back(l);
   return lines;
 }
-class CatenaryCli : public inerta::testing::CliTest {
- protected:
-  inerta::testing::Result run(const std::string& args) const { return run_inerta(args); }
-  std::filesystem::path path(const std::string& name) const { return dir_ / name; }
-};
+class CatenaryCli : public inerta::testing::CliTest {};
 }  // namespace
 
 TEST_F(CatenaryCli, HsxUnderTheWireProfileWritesTheContactForceAndItsStatistics) {

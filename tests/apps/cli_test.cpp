@@ -42,12 +42,7 @@ std::vector<double> fields_of(const std::string& line) {
   return v;
 }
 
-class Cli : public inerta::testing::CliTest {
- protected:
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
-  Result run(const std::string& args) const { return run_inerta(args); }
-};
+class Cli : public inerta::testing::CliTest {};
 
 TEST_F(Cli, CheckTwobarReportsTwoDegreesOfFreedom) {
   Result r = run("check " + quote(model_path("twobar.yaml")));

@@ -35,10 +35,6 @@ double value_after(const std::string& text, const std::string& key) {
 class Identify : public inerta::testing::CliTest {
  protected:
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
   Result run(const std::string& args) const { return run_inerta("identify " + args); }
   // Head and upper-arm FRFs of the 2-DOF model, 0.5–20 Hz, with `noise` relative complex noise.
   std::string head_csv(const inerta::testing::HeadArm& p, double noise, unsigned seed) const {

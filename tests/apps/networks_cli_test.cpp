@@ -62,7 +62,7 @@ TEST_F(NetworksCli, AStudyOverAllNetworksWritesTheRankingAndTheParetoFront) {
   const std::string csv = read_file(out / "structure.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "rank,network,elements,springs,dampers,inerters,J,vs_default_pct,feasible,reduced,reduced_elements,reduced_inerters,"
-            "values,evaluations,seconds,warm_from");
+            "values,evaluations,seconds,warm_from,unstable");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 10) << csv;
   // Ranked: J never decreases down the file.
   const auto j = nlohmann::json::parse(read_file(out / "structure.json"));

@@ -46,15 +46,7 @@ double first_frequency(const std::string& out) {
   return NAN;
 }
 
-class Overrides : public inerta::testing::CliTest {
- protected:
-  Result run(const std::string& args) const { return run_inerta(args); }
-  std::string write(const std::string& name, const std::string& text) const {
-    const auto p = dir_ / name;
-    std::ofstream(p) << text;
-    return p.string();
-  }
-};
+class Overrides : public inerta::testing::CliTest {};
 
 TEST_F(Overrides, SimulateWithoutACatenaryUsesTheOverride) {
   // The override equals editing the file.

@@ -177,8 +177,8 @@ TEST(FeCatenaryFile, EveryErrorNamesTheFileLineAndKey) {
   expect(kLine + "mesh: {elements: 3}\n", ":14: 'elements': unknown key in mesh; expected one of: element_length");
   expect(kLine + "damping: {mass: 0.1}\n", ":14: 'mass': unknown key in damping; expected one of: rayleigh_mass, rayleigh_stiffness");
   // duplicate keys, at the top level and in a section
-  expect(kLine + "supports: {stiffness: 1}\n", ":14: 'supports': duplicate key");
-  expect(replace(kLine, "  EI: 195\n", "  EI: 195\n  EI: 196\n"), ":8: 'EI': duplicate key");
+  expect(kLine + "supports: {stiffness: 1}\n", ":14: 'supports': duplicate key at the top level");
+  expect(replace(kLine, "  EI: 195\n", "  EI: 195\n  EI: 196\n"), ":8: 'EI': duplicate key in contact_wire");
   // missing sections and keys
   expect(replace(kLine, "registration: {stiffness: 2500}\n", ""), ":1: 'registration': missing in a finite-element catenary file");
   expect(replace(kLine, "  tension: 22000\n", ""), ":5: 'tension': missing in contact_wire; expected a number (N)");

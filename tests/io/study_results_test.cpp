@@ -23,7 +23,7 @@ TEST(StudyResults, JsonAndCsvForAwkwardNames) {
   results[0].values = {{"b", 0.0}, {"c", INFINITY}, {"k", 7130.123456789012}};
   results[0].cost = {10.000000000000002, 180 / 3.6, 120.5, 0};
   results[0].evaluations = 321;
-  results[1].layout = "k|c \xc3\xa9";
+  results[1].layout = "k|c, \xc3\xa9";
   results[1].expression = "k|c";
   results[1].values = {{"c", 1.0 / 3.0}, {"k", 5e4}};
   results[1].cost = {13.5, 250 / 3.6, 119.25, 0};
@@ -70,7 +70,7 @@ TEST(StudyResults, JsonAndCsvForAwkwardNames) {
 
   EXPECT_EQ(inerta::testing::read_file(files[0]),
             "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations\n"
-            "S2-\"1\"\\,b-(k|c),open,rigid,7130,10,-19,180,120.5,321\n"
-            "k|c \xc3\xa9,k|c,-,0.3333,5e+04,13.5,9.35,250,119.25,1\n");
+            "\"S2-\"\"1\"\"\\\",b-(k|c),open,rigid,7130,10,-19,180,120.5,321\n"  // quoted, quotes doubled (RFC 4180)
+            "\"k|c, \xc3\xa9\",k|c,-,0.3333,5e+04,13.5,9.35,250,119.25,1\n");
   std::filesystem::remove_all(dir.parent_path());
 }

@@ -1,9 +1,11 @@
 // Study files and layout optimisation (spec/07) on a reduced HSX study (one catenary, 5 speeds).
 #include "inerta/io/study_file.hpp"
 #include "inerta/optim/study.hpp"
+#include "inerta/optim/structure_search.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -76,4 +78,35 @@ TEST(Study, WrongNodeTypesAreModelErrorsWithTheLine) {
   } catch (const ModelError& e) {
     EXPECT_NE(std::string(e.what()).find("bad_study4.yaml:7: "), std::string::npos) << e.what();
   }
+}
+
+TEST(Study, UnstableDesignsAreInfeasibleAndCounted) {
+  // Issue 15: with kc1 = 6500 N/m the default HSX's periodic solution is unstable at 380–400 km/h
+  // (parametric resonance; its growth in the time domain: tests/analysis/periodic_test.cpp). Such a
+  // design costs J = ∞ with the speed named; a search counts the designs it refused, and whatever it
+  // returns as finite is stable at every speed.
+  std::string text = kStudy;
+  text.replace(text.find("[[catenary.kc0=7000]]"), 21, "[[catenary.kc1=6500]]");
+  text.replace(text.find("{from: 100, to: 300, step: 50, unit: kmh}"), 41, "{from: 380, to: 400, step: 10, unit: kmh}");
+  text.replace(text.find("layouts: [S2-default, k-c]"), 26, "layouts: [S2-1]");
+  text += "harmonics: 4\n";
+  optim::Study s = io::load_study(write_study("unstable_study.yaml", text));
+  const optim::StudyCost def = optim::evaluate(s, optim::default_suspension(s));
+  EXPECT_TRUE(std::isinf(def.J));
+  EXPECT_NEAR(def.unstable_speed * 3.6, 380, 1e-9);  // the first speed unstable
+  s.search.max_evaluations = 60;
+  const optim::LayoutResult r = optim::optimise_layout(s, "S2-1");
+  EXPECT_GT(r.unstable, 0) << "the search met no unstable design";
+  if (std::isfinite(r.cost.J)) {
+    const optim::StudyCost again = optim::evaluate(s, network::resolve("S2-1", r.values));
+    EXPECT_EQ(again.unstable_speed, 0);
+    EXPECT_EQ(again.J, r.cost.J);
+  }
+  // The structure search carries the count per network (structure.csv's `unstable` column).
+  s.layouts = {"k"};
+  std::vector<optim::LayoutResult> all;
+  const auto entries = optim::optimise_all(s, all);
+  ASSERT_EQ(entries.size(), 1u);
+  EXPECT_GT(entries[0].unstable, 0);
+  EXPECT_EQ(entries[0].unstable, all[0].unstable);
 }

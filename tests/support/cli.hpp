@@ -63,6 +63,15 @@ class CliTest : public ::testing::Test {
     return r;
   }
 
+  Result run(const std::string& args) const { return run_inerta(args); }
+  fs::path path(const std::string& name) const { return dir_ / name; }
+  /// Writes `text` to dir_/name; returns the path.
+  std::string write(const std::string& name, const std::string& text) const {
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
+
   fs::path dir_;
 };
 

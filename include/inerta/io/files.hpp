@@ -46,6 +46,10 @@ class OutputFile {
   bool committed_ = false;
 };
 
+/// A CSV field (RFC 4180): `s` itself, or quoted with its quotes doubled if it holds a comma, a quote
+/// or a line break (network expressions and layout names may hold commas in their values).
+std::string csv_field(const std::string& s);
+
 /// Writes `text` to `path` through an OutputFile (created or replaced when complete).
 void write_text_file(const std::string& path, const std::string& text);
 

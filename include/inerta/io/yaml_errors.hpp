@@ -20,19 +20,24 @@ namespace inerta::io {
   throw ModelError(fmt::format("{}: '{}': {}", where, key, what));
 }
 
-/// ModelError "file:line: 'key': duplicate key; give each key once" for the first mapping (at any depth)
-/// that holds a key twice (yaml-cpp keeps one of them silently).
-inline void check_unique_keys(const std::string& file, const YAML::Node& n, int depth = 0) {
-  if (depth > 200) yaml_fail(file, n, "", "nested more than 200 levels deep");
+/// ModelError "file:line: 'key': duplicate key in SECTION; give each key once" for the first mapping (at
+/// any depth) that holds a key twice (yaml-cpp keeps one of them silently). SECTION is the path of the
+/// mapping (`contact_wire`, `bodies[2].markers`); a top-level key says "at the top level".
+inline void check_unique_keys(const std::string& file, const YAML::Node& n, const std::string& section = "",
+                              int depth = 0) {
+  if (depth > 200) yaml_fail(file, n, section, "nested more than 200 levels deep");
   if (n.IsMap()) {
     std::unordered_set<std::string> seen;
     for (auto it = n.begin(); it != n.end(); ++it) {
       const std::string k = it->first.IsScalar() ? it->first.Scalar() : std::string();
-      if (!k.empty() && !seen.insert(k).second) yaml_fail(file, it->first, k, "duplicate key; give each key once");
-      check_unique_keys(file, it->second, depth + 1);
+      if (!k.empty() && !seen.insert(k).second)
+        yaml_fail(file, it->first, k,
+                  fmt::format("duplicate key {}; give each key once", section.empty() ? "at the top level" : "in " + section));
+      check_unique_keys(file, it->second, section.empty() ? k : section + "." + k, depth + 1);
     }
   } else if (n.IsSequence()) {
-    for (const auto& x : n) check_unique_keys(file, x, depth + 1);
+    std::size_t i = 0;
+    for (const auto& x : n) check_unique_keys(file, x, fmt::format("{}[{}]", section, i++), depth + 1);
   }
 }
 

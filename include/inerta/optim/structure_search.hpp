@@ -23,6 +23,7 @@ struct StructureEntry {
   double cost = std::numeric_limits<double>::infinity();  ///< what the search minimised (limits as penalties)
   bool feasible = true;
   int evaluations = 0;
+  int unstable = 0;  ///< designs refused as unstable during the search (J2 studies: Floquet multiplier ≥ 1)
   /// The optimum with its open and rigid elements removed and same-type neighbours merged, renamed,
   /// with values ("open"/"rigid" if the whole network is), and its elements.
   std::string reduced, reduced_structure;
@@ -38,6 +39,7 @@ struct StructureOutcome {
   double J = std::numeric_limits<double>::infinity(), cost = std::numeric_limits<double>::infinity();
   bool feasible = true;
   int evaluations = 0;
+  int unstable = 0;  ///< designs refused as unstable (LayoutResult::unstable)
 };
 /// Optimises the network `expression` with these further starts (complete value sets).
 using StructureOptimiser =
