@@ -277,13 +277,14 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
   for (const auto& lim : o.limits) fmt::print(" {:>12}", lim.output + "≤" + fmt::format("{:g}", lim.limit));
   fmt::print("  values (SI)\n");
   auto row = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, const std::string& values,
-                 const std::string& bounds) {
+                 const std::string& bounds, bool exhausted) {
     fmt::print("  {:<14} {:<14} {:>12.6g} {:>9.1f}%", layout, expr, c.J, 100 * (c.J - def.J) / def.J);
     for (double v : c.values) fmt::print(" {:>12.5g}", v);
     for (double v : c.limit_values) fmt::print(" {:>12.5g}", v);
-    fmt::print("  {}{}{}\n", values, bounds.empty() ? "" : "  at limits: " + bounds, c.feasible ? "" : "  INFEASIBLE");
+    fmt::print("  {}{}{}{}\n", values, bounds.empty() ? "" : "  at limits: " + bounds, c.feasible ? "" : "  INFEASIBLE",
+               exhausted ? "  budget exhausted (max_evaluations reached before min_step)" : "");
   };
-  row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "");
+  row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "", false);
   std::size_t best = 0;
   const std::size_t shown = study.all ? 25 : results.size();
   for (std::size_t i = 0; i < results.size(); ++i) {
@@ -292,7 +293,7 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
     std::string values, bounds;
     for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
     for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
-    if (i < shown) row(r.layout, r.expression, r.cost, values, bounds);
+    if (i < shown) row(r.layout, r.expression, r.cost, values, bounds, r.budget_exhausted);
     const bool better = (r.cost.feasible && !results[best].cost.feasible) ||
                         (r.cost.feasible == results[best].cost.feasible && r.cost.J < results[best].cost.J);
     if (better) best = i;

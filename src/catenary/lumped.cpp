@@ -47,9 +47,8 @@ void LumpedCatenary::validate() const {
 }
 
 // The element ----------------------------------------------------------------------------------
-CatenaryElement::CatenaryElement(std::string name, int body, int wire_y, LumpedCatenary cat, double speed,
-                                 double y_unloaded)
-    : ForceElement(std::move(name)), body_(body), iy_(wire_y), cat_(cat), v_(speed), y0_(y_unloaded) {
+CatenaryElement::CatenaryElement(std::string name, int wire_y, LumpedCatenary cat, double speed, double y_unloaded)
+    : ForceElement(std::move(name)), iy_(wire_y), cat_(cat), v_(speed), y0_(y_unloaded) {
   cat_.validate();
   if (!(speed >= 0) || !std::isfinite(speed))
     throw InvalidArgument(fmt::format("catenary element: speed must be >= 0 m/s, got {}", speed));
@@ -109,7 +108,7 @@ int add_catenary(mbs::Model& model, const LumpedCatenary& cat, double speed, dou
   model.joints.push_back(slide);
   model.finalize();  // the wire's coordinate address
   model.forces.push_back(
-      std::make_shared<CatenaryElement>("catenary", b, model.q_adr(b) + 1, cat, speed, y_unloaded));
+      std::make_shared<CatenaryElement>("catenary", model.q_adr(b) + 1, cat, speed, y_unloaded));
   return b;
 }
 

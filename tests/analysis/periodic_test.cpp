@@ -75,23 +75,21 @@ TEST(Periodic, ParametricResonanceIsReportedUnstable) {
 
 TEST(Periodic, UnstableSpeedGrowsInTheTimeDomain) {
   // The independent check: the time-domain reference at 390 km/h with a penalty contact (which may
-  // lose contact instead of failing): σ keeps growing span over span or contact is lost, where
-  // the stable 200 km/h settles.
+  // lose contact instead of failing), 10 spans: the contact force's σ over the last two spans is
+  // several times that of the first two, and contact is lost (stable speeds settle to the periodic
+  // solution: the tests above).
+  // (Past ≈ 11 spans the growth drives strut k2 through zero length and the run stops: not reached.)
   io::CatenaryFile c =
       io::load_catenary(inerta::testing::model_path("catenary.yaml"), {"catenary.kc1=6500", "contact.type=penalty"});
   const pantograph::Pantograph hsx = io::load_pantograph(inerta::testing::model_path("hsx.yaml"));
   analysis::RunOptions o;
   o.fixed_spans = true;
-  o.min_spans = 12;
+  o.min_spans = 10;
   o.window_spans = 2;
-  analysis::SpeedResult r;
-  try {
-    r = analysis::sweep(hsx, *c.catenary, c.contact, {390 / 3.6}, o).front();
-  } catch (const NumericalError& e) {  // the growth drives a strut of the pantograph through zero length
-    SUCCEED() << e.what();
-    return;
-  }
-  const double s_first = analysis::statistics(std::vector<double>(r.F.begin(), r.F.begin() + 2 * 400)).std;
-  EXPECT_TRUE(r.stats.loss_pct > 1.0 || r.stats.std > 3 * s_first) << "loss " << r.stats.loss_pct << " %, σ "
-                                                                       << r.stats.std << " vs " << s_first;
+  const analysis::SpeedResult r = analysis::sweep(hsx, *c.catenary, c.contact, {390 / 3.6}, o).front();
+  ASSERT_EQ(r.spans, 10);
+  const std::size_t per_span = r.F.size() / 10;
+  const double s_first = analysis::statistics(std::vector<double>(r.F.begin(), r.F.begin() + 2 * per_span)).std;
+  EXPECT_GT(r.stats.std, 3 * s_first) << "σ " << r.stats.std << " vs " << s_first;
+  EXPECT_GT(r.stats.loss_pct, 10.0);
 }

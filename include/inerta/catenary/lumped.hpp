@@ -35,7 +35,7 @@ struct LumpedCatenary {
 class CatenaryElement : public mbs::ForceElement {
  public:
   /// Needs the wire body's coordinate address (q index of its vertical coordinate).
-  CatenaryElement(std::string name, int body, int wire_y, LumpedCatenary cat, double speed, double y_unloaded);
+  CatenaryElement(std::string name, int wire_y, LumpedCatenary cat, double speed, double y_unloaded);
   const LumpedCatenary& catenary() const { return cat_; }
   double speed() const { return v_; }
   double pumping_frequency() const { return v_ / cat_.span; }
@@ -47,7 +47,7 @@ class CatenaryElement : public mbs::ForceElement {
   double length(const mbs::Model&, const mbs::State& x) const override;  ///< uplift y − y_unloaded
 
  private:
-  int body_, iy_;
+  int iy_;
   LumpedCatenary cat_;
   double v_, y0_;
 };
