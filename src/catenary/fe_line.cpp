@@ -140,6 +140,9 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   for (const Dropper& dr : droppers_) cdofs.push_back(dr.dof_c);
   for (int n : mast_nodes) cdofs.push_back(dof(1, n, 0)), mdofs.push_back(dof(0, n, 0));
   auto influence = [&](const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>& llt, const std::vector<int>& dofs) {
+    // No constrained DOF (a line whose masts are all its fixed ends): no columns, and no solve (Eigen's
+    // permutation of an n × 0 right-hand side offsets a null pointer: UBSan, docs/fuzzing.md).
+    if (dofs.empty()) return Eigen::MatrixXd(n_dofs_, 0);
     Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n_dofs_, static_cast<Eigen::Index>(dofs.size()));
     for (std::size_t j = 0; j < dofs.size(); ++j) E(dofs[j], static_cast<Eigen::Index>(j)) = 1;
     return Eigen::MatrixXd(llt.solve(E));
