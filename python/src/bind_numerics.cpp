@@ -70,9 +70,10 @@ void bind_numerics(py::module_& m) {
       .def_readonly("multipliers", &numerics::FloquetResult::multipliers, "eigenvalues of the monodromy matrix, largest first")
       .def_readonly("largest", &numerics::FloquetResult::largest, "max |μ|")
       .def_property_readonly("stable", &numerics::FloquetResult::stable, "largest < 1");
-  m.def("monodromy", &numerics::monodromy, py::arg("A"), py::arg("b"), py::arg("r"), py::arg("T"), py::arg("steps") = 256,
+  using RowFn = std::function<Eigen::RowVectorXd(double)>;
+  m.def("monodromy", static_cast<Eigen::MatrixXd (*)(const Eigen::MatrixXd&, const Eigen::VectorXd&, const RowFn&, double, int)>(&numerics::monodromy), py::arg("A"), py::arg("b"), py::arg("r"), py::arg("T"), py::arg("steps") = 256,
         "Φ(T) of dX/dt = (A + b r(t)) X over one period T (r(t): a row of A's size; Strang splitting, second order).");
-  m.def("floquet", &numerics::floquet, py::arg("A"), py::arg("b"), py::arg("r"), py::arg("T"), py::arg("steps") = 256,
+  m.def("floquet", static_cast<numerics::FloquetResult (*)(const Eigen::MatrixXd&, const Eigen::VectorXd&, const RowFn&, double, int)>(&numerics::floquet), py::arg("A"), py::arg("b"), py::arg("r"), py::arg("T"), py::arg("steps") = 256,
         "Floquet multipliers of dX/dt = (A + b r(t)) X: the eigenvalues of monodromy(A, b, r, T, steps).");
   m.def("decode", &numerics::decode, py::arg("variable"), py::arg("u"), "The value of a variable at coordinate u (decades).");
   m.def("describe", &numerics::describe, py::arg("value"), "'open', 'rigid' or the number.");

@@ -354,6 +354,7 @@ EXCLUDED = {
     "io::write_text_file": "file writing helper of the C++ writers",
     "io::csv_field": "CSV quoting helper of the C++ writers; Python has the csv module",
     "io::OutputFile": "safe-output plumbing of the C++ writers and the CLI (temporary file + rename); Python has open()",
+    "numerics::FloquetBasis": "a speed sweep's reuse of one eigendecomposition (analysis/periodic.cpp); Python has floquet(A, b, r, T)",
     "io::check_output_path": "see io::OutputFile",
     "io::read_input_text": "see io::OutputFile; the loaders that use it are bound",
     "io::study_output_names": "the CLI's `optimise --out` folder handling",

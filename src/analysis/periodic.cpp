@@ -96,6 +96,10 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
   // force), the harmonics f_h of the wire force solve a (2H+1)² system:
   //   f_h + Σ_j (Δk_{h−j} g_j + Δc_{h−j} gd_j) f_j = −y_s Δk_h,   F_h = gF_h f_h (+ F_s at h = 0).
   const int nh = 2 * H + 1;
+  // The Floquet check's A is the same at every speed: decomposed once; r(t) = −(Δk(t) P + Δc(t) Pd).
+  const numerics::FloquetBasis basis(L.A);
+  Eigen::MatrixXd PPd(2, S);
+  PPd << P, Pd;
   std::vector<SpeedResult> out(speeds.size());
   tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t s) {
     const double W = 2 * std::numbers::pi * speeds[s] / cat.span;
@@ -120,12 +124,12 @@ std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph
     }
     // Stability of the periodic solution (issue 15): the homogeneous part Ẋ = (A − B(Δk(t) P + Δc(t) Pd)) X.
     const numerics::FloquetResult fl = numerics::floquet(
-        L.A, B,
+        basis, B, PPd,
         [&](double t) {
           double dk = 0, dc = 0;
           for (std::size_t i = 1; i <= 3; ++i)
             dk += cat.k[i] * std::cos(static_cast<double>(i) * W * t), dc += cat.c[i] * std::cos(static_cast<double>(i) * W * t);
-          return Eigen::RowVectorXd(-(dk * P + dc * Pd));
+          return Eigen::VectorXd(Eigen::Vector2d(-dk, -dc));
         },
         2 * std::numbers::pi / W, floquet_steps);
     const Eigen::VectorXcd f = Sys.partialPivLu().solve(rhs);

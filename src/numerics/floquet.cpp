@@ -29,47 +29,54 @@ S phi(S s) {
   return std::abs(s) < 1e-8 ? S(1) + S(0.5) * s : (std::exp(s) - S(1)) / s;
 }
 
-Eigen::RowVectorXd row_at(const std::function<Eigen::RowVectorXd(double)>& r, double t, Eigen::Index n) {
-  Eigen::RowVectorXd rk = r(t);
-  if (rk.size() != n) throw InvalidArgument(fmt::format("floquet: r(t) has {} columns, expected {}", rk.size(), n));
-  return rk;
-}
-
 }  // namespace
 
-Eigen::MatrixXd monodromy(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                          const std::function<Eigen::RowVectorXd(double)>& r, double T, int steps) {
+FloquetBasis::FloquetBasis(const Eigen::MatrixXd& A) : A_(A) {
+  if (A.cols() != A.rows()) throw InvalidArgument(fmt::format("floquet: A is {}×{}, expected a square matrix", A.rows(), A.cols()));
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(A);
+  if (es.info() != Eigen::Success || A.rows() == 0) return;
+  const Eigen::MatrixXcd V = es.eigenvectors();
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXcd>(V).singularValues();
+  if (!(sv(sv.size() - 1) > 1e-8 * sv(0))) return;  // defective or ill-conditioned: the dense form
+  diagonal_ = true;
+  lambda_ = es.eigenvalues();
+  V_ = V;
+  V_inv_ = V.partialPivLu().inverse();
+}
+
+Eigen::MatrixXd monodromy(const FloquetBasis& basis, const Eigen::VectorXd& b, const Eigen::MatrixXd& R,
+                          const std::function<Eigen::VectorXd(double)>& c, double T, int steps) {
+  const Eigen::MatrixXd& A = basis.A_;
   check_arguments(A, b, T, steps);
   const Eigen::Index n = A.rows();
+  if (R.cols() != n) throw InvalidArgument(fmt::format("floquet: R has {} columns, expected {}", R.cols(), n));
+  auto coefficients = [&](double t) {
+    Eigen::VectorXd ck = c(t);
+    if (ck.size() != R.rows())
+      throw InvalidArgument(fmt::format("floquet: c(t) has {} entries, expected {} (the rows of R)", ck.size(), R.rows()));
+    return ck;
+  };
   const double h = T / steps;
-  // In the eigenbasis A = V Λ V⁻¹ every e^{hA/2} is diagonal and a step costs O(n²) instead of O(n³);
-  // a defective or ill-conditioned V falls back to the dense form.
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(A);
-  if (es.info() == Eigen::Success) {
+  if (basis.diagonal_) {  // every e^{hA/2} diagonal
     using cd = std::complex<double>;
-    const Eigen::MatrixXcd V = es.eigenvectors();
-    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(V);
-    const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(V);
-    const Eigen::VectorXd sv = svd.singularValues();
-    if (sv(sv.size() - 1) > 1e-8 * sv(0)) {
-      const Eigen::VectorXcd half = (0.5 * h * es.eigenvalues()).array().exp(), full = half.array().square();
-      const Eigen::VectorXcd bt = lu.solve(b.cast<cd>());  // V⁻¹ b
-      Eigen::MatrixXcd P = half.asDiagonal();              // Ṽ⁻¹ Φ V, built from the left
-      for (int k = 0; k < steps; ++k) {
-        const Eigen::RowVectorXcd rt = row_at(r, (k + 0.5) * h, n).cast<cd>() * V;  // r V
-        const cd s = h * (rt * bt).value();  // h r b
-        P.noalias() += (h * phi(s) * bt) * (rt * P);
-        P = (k + 1 < steps ? full : half).asDiagonal() * P;
-      }
-      const Eigen::MatrixXd Phi = (V * P * lu.inverse()).real();
-      if (!Phi.allFinite()) throw NumericalError("floquet: the monodromy matrix is not finite");
-      return Phi;
+    const Eigen::VectorXcd half = (0.5 * h * basis.lambda_).array().exp(), full = half.array().square();
+    const Eigen::VectorXcd bt = basis.V_inv_ * b.cast<cd>();  // V⁻¹ b
+    const Eigen::MatrixXcd RV = R.cast<cd>() * basis.V_;      // R V
+    Eigen::MatrixXcd P = half.asDiagonal();                   // V⁻¹ Φ V, built from the left
+    for (int k = 0; k < steps; ++k) {
+      const Eigen::RowVectorXcd rt = coefficients((k + 0.5) * h).cast<cd>().transpose() * RV;  // r V
+      const cd s = h * (rt * bt).value();                                                      // h r b
+      P.noalias() += (h * phi(s) * bt) * (rt * P);
+      P = (k + 1 < steps ? full : half).asDiagonal() * P;
     }
+    const Eigen::MatrixXd Phi = (basis.V_ * P * basis.V_inv_).real();
+    if (!Phi.allFinite()) throw NumericalError("floquet: the monodromy matrix is not finite");
+    return Phi;
   }
   const Eigen::MatrixXd half = (0.5 * h * A).exp(), full = half * half;
   Eigen::MatrixXd Phi = half;
   for (int k = 0; k < steps; ++k) {
-    const Eigen::RowVectorXd rk = row_at(r, (k + 0.5) * h, n);
+    const Eigen::RowVectorXd rk = coefficients((k + 0.5) * h).transpose() * R;
     Phi.noalias() += (h * phi(h * rk.dot(b)) * b) * (rk * Phi);  // e^{h b r} Φ, rank one
     Phi = (k + 1 < steps ? full : half) * Phi;
   }
@@ -77,15 +84,40 @@ Eigen::MatrixXd monodromy(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
   return Phi;
 }
 
-FloquetResult floquet(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
-                      const std::function<Eigen::RowVectorXd(double)>& r, double T, int steps) {
-  const Eigen::MatrixXd Phi = monodromy(A, b, r, T, steps);
+Eigen::MatrixXd monodromy(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                          const std::function<Eigen::RowVectorXd(double)>& r, double T, int steps) {
+  check_arguments(A, b, T, steps);
+  // r(t) itself as the coefficients of the identity's rows.
+  const Eigen::Index n = A.rows();
+  return monodromy(FloquetBasis(A), b, Eigen::MatrixXd::Identity(n, n),
+                   [&](double t) -> Eigen::VectorXd {
+                     Eigen::RowVectorXd rk = r(t);
+                     if (rk.size() != n)
+                       throw InvalidArgument(fmt::format("floquet: r(t) has {} columns, expected {}", rk.size(), n));
+                     return rk.transpose();
+                   },
+                   T, steps);
+}
+
+namespace {
+FloquetResult multipliers(const Eigen::MatrixXd& Phi) {
   Eigen::VectorXcd mu = Phi.eigenvalues();
   std::sort(mu.data(), mu.data() + mu.size(), [](auto x, auto y) { return std::abs(x) > std::abs(y); });
   FloquetResult f;
   f.multipliers = mu;
   f.largest = mu.size() ? std::abs(mu[0]) : 0.0;
   return f;
+}
+}  // namespace
+
+FloquetResult floquet(const FloquetBasis& A, const Eigen::VectorXd& b, const Eigen::MatrixXd& R,
+                      const std::function<Eigen::VectorXd(double)>& c, double T, int steps) {
+  return multipliers(monodromy(A, b, R, c, T, steps));
+}
+
+FloquetResult floquet(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
+                      const std::function<Eigen::RowVectorXd(double)>& r, double T, int steps) {
+  return multipliers(monodromy(A, b, r, T, steps));
 }
 
 }  // namespace inerta::numerics

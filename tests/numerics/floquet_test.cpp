@@ -117,3 +117,29 @@ TEST(Floquet, BadArgumentsAreRefused) {
 }
 
 }  // namespace
+
+TEST(Floquet, SharedBasisWithFixedRowsAgreesWithRungeKutta) {
+  // The sweep form: A decomposed once (FloquetBasis) and r(t) = c(t)ᵀ R over fixed rows, reused for
+  // several periods, against RK4 on the same system; and a defective A through the same call.
+  const Mathieu m(0.5, 0.0);
+  const inerta::numerics::FloquetBasis basis(m.A);
+  EXPECT_TRUE(basis.diagonal());
+  Eigen::MatrixXd R(2, 2);
+  R << 1, 0, 0, 1;  // r = [c0, c1]
+  for (double eps : {0.1, 0.6}) {
+    const Mathieu me(0.5, eps);
+    const Eigen::MatrixXd P = inerta::numerics::monodromy(
+        basis, m.b, R, [&](double t) { return Eigen::VectorXd(Eigen::Vector2d(-eps * std::cos(t), 0)); }, T, 4096);
+    const Eigen::MatrixXd ref = rk4_monodromy(me, 20000);
+    EXPECT_LT((P - ref).norm(), 1e-5 * ref.norm()) << "eps " << eps;
+    const auto f = inerta::numerics::floquet(
+        basis, m.b, R, [&](double t) { return Eigen::VectorXd(Eigen::Vector2d(-eps * std::cos(t), 0)); }, T, 256);
+    EXPECT_NEAR(f.largest, floquet(me.A, me.b, [&](double t) { return me.r(t); }, T, 256).largest, 1e-12);
+  }
+  Eigen::MatrixXd J(2, 2);
+  J << -0.2, 1, 0, -0.2;
+  EXPECT_FALSE(inerta::numerics::FloquetBasis(J).diagonal());
+  // c(t) of the wrong size is an error, not a read past the end.
+  EXPECT_THROW(inerta::numerics::monodromy(basis, m.b, R, [](double) { return Eigen::VectorXd(Eigen::Vector3d(1, 2, 3)); }, T, 16),
+               inerta::InvalidArgument);
+}

@@ -18,6 +18,33 @@ struct FloquetResult {
   bool stable() const { return largest < 1.0; }
 };
 
+/// A decomposed once for several Floquet checks with the same A (a speed sweep: only the period and
+/// r(t) change): its eigenbasis A = V Λ V⁻¹ when V is well conditioned (σ_min > 1e-8 σ_max), in
+/// which a splitting step costs O(n²); otherwise the dense form (a defective A).
+class FloquetBasis {
+ public:
+  explicit FloquetBasis(const Eigen::MatrixXd& A);
+  const Eigen::MatrixXd& A() const { return A_; }
+  bool diagonal() const { return diagonal_; }
+
+ private:
+  friend Eigen::MatrixXd monodromy(const FloquetBasis&, const Eigen::VectorXd&, const Eigen::MatrixXd&,
+                                   const std::function<Eigen::VectorXd(double)>&, double, int);
+  Eigen::MatrixXd A_;
+  bool diagonal_ = false;
+  Eigen::VectorXcd lambda_;
+  Eigen::MatrixXcd V_, V_inv_;
+};
+
+/// Φ(T) of Ẋ = (A + b r(t)) X with r(t) = c(t)ᵀ R, a combination of the fixed rows of R (m × n) with
+/// coefficients c(t) (m): R is carried into the eigenbasis once, so a step costs O(n² + mn).
+Eigen::MatrixXd monodromy(const FloquetBasis& A, const Eigen::VectorXd& b, const Eigen::MatrixXd& R,
+                          const std::function<Eigen::VectorXd(double)>& c, double T, int steps);
+
+/// Floquet multipliers: the eigenvalues of monodromy(A, b, R, c, T, steps).
+FloquetResult floquet(const FloquetBasis& A, const Eigen::VectorXd& b, const Eigen::MatrixXd& R,
+                      const std::function<Eigen::VectorXd(double)>& c, double T, int steps);
+
 /// Φ(T) of Ẋ = (A + b r(t)) X over one period T > 0 with `steps` ≥ 8 splitting steps (InvalidArgument
 /// otherwise, or if the sizes disagree); NumericalError if Φ(T) is not finite.
 Eigen::MatrixXd monodromy(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
