@@ -132,9 +132,10 @@ TEST(Floquet, SharedBasisWithFixedRowsAgreesWithRungeKutta) {
         basis, m.b, R, [&](double t) { return Eigen::VectorXd(Eigen::Vector2d(-eps * std::cos(t), 0)); }, T, 4096);
     const Eigen::MatrixXd ref = rk4_monodromy(me, 20000);
     EXPECT_LT((P - ref).norm(), 1e-5 * ref.norm()) << "eps " << eps;
+    // The multipliers at the sweep's 256 steps against those of the RK4 monodromy (second order: 1e-3).
     const auto f = inerta::numerics::floquet(
         basis, m.b, R, [&](double t) { return Eigen::VectorXd(Eigen::Vector2d(-eps * std::cos(t), 0)); }, T, 256);
-    EXPECT_NEAR(f.largest, floquet(me.A, me.b, [&](double t) { return me.r(t); }, T, 256).largest, 1e-12);
+    EXPECT_NEAR(f.largest, ref.eigenvalues().cwiseAbs().maxCoeff(), 1e-3) << "eps " << eps;
   }
   Eigen::MatrixXd J(2, 2);
   J << -0.2, 1, 0, -0.2;

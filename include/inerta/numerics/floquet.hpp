@@ -24,7 +24,6 @@ struct FloquetResult {
 class FloquetBasis {
  public:
   explicit FloquetBasis(const Eigen::MatrixXd& A);
-  const Eigen::MatrixXd& A() const { return A_; }
   bool diagonal() const { return diagonal_; }
 
  private:
