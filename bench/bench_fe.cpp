@@ -1,6 +1,8 @@
-// Benchmarks of issue 12: the finite-element catenary (models/catenary-fe.yaml) with the 3-mass and
-// the HSX pantographs; cost against the number of spans; a parallel sweep. One iteration each: a
-// run is seconds long.
+// Benchmarks of issues 12 and 23: the finite-element catenary (models/catenary-fe.yaml) with the
+// 3-mass and the HSX pantographs, by the direct solve (`solver.type=direct`) and the modal solve (the
+// file's default); cost against the number of spans; a parallel sweep. One iteration each: a run is
+// seconds long. "Cold" runs include the line's decomposition (a fresh catenary object); "warm"
+// runs reuse it (a sweep or a study decomposes once).
 #include <benchmark/benchmark.h>
 
 #include "inerta/analysis/contact_statistics.hpp"
@@ -13,6 +15,11 @@ using namespace inerta;
 namespace {
 const char* kFe = INERTA_SOURCE_DIR "/models/catenary-fe.yaml";
 
+std::vector<std::string> direct(std::vector<std::string> sets) {
+  sets.emplace_back("solver.type=direct");
+  return sets;
+}
+
 void run_line(benchmark::State& state, const char* model, double kmh, const std::vector<std::string>& sets) {
   const pantograph::Pantograph p = io::load_pantograph(std::string(INERTA_SOURCE_DIR) + "/models/" + model);
   io::CatenaryFile c = io::load_catenary(kFe, sets);
@@ -22,31 +29,41 @@ void run_line(benchmark::State& state, const char* model, double kmh, const std:
     benchmark::DoNotOptimize(r.stats.std);
   }
 }
+
+// Cold: a new catenary object per iteration (its windows decomposed again), as one CLI run.
+void run_cold(benchmark::State& state, const char* model, double kmh, const std::vector<std::string>& sets) {
+  const pantograph::Pantograph p = io::load_pantograph(std::string(INERTA_SOURCE_DIR) + "/models/" + model);
+  for (auto _ : state) {
+    io::CatenaryFile c = io::load_catenary(kFe, sets);
+    auto sys = c.catenary->couple(p, c.contact, kmh / 3.6);
+    auto r = analysis::run_speed(*sys, analysis::RunOptions{});
+    benchmark::DoNotOptimize(r.stats.std);
+  }
+}
 }  // namespace
 
 // The 3-mass pantograph at 250 km/h on the default line (10 spans, 0.25 m elements, h = 0.5 ms).
-static void BM_Fe3Mass250kmh(benchmark::State& state) { run_line(state, "pantograph-3mass.yaml", 250, {}); }
+static void BM_Fe3Mass250kmh(benchmark::State& state) { run_line(state, "pantograph-3mass.yaml", 250, direct({"integration.time_step=5e-4"})); }
 BENCHMARK(BM_Fe3Mass250kmh)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // The same with h = 1 ms.
 static void BM_Fe3Mass250kmhStep1ms(benchmark::State& state) {
-  run_line(state, "pantograph-3mass.yaml", 250, {"integration.time_step=1e-3"});
+  run_line(state, "pantograph-3mass.yaml", 250, direct({"integration.time_step=1e-3"}));
 }
 BENCHMARK(BM_Fe3Mass250kmhStep1ms)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // The HSX multibody pantograph at 300 km/h.
-static void BM_FeHsx300kmh(benchmark::State& state) { run_line(state, "hsx.yaml", 300, {}); }
+static void BM_FeHsx300kmh(benchmark::State& state) { run_line(state, "hsx.yaml", 300, direct({})); }
 BENCHMARK(BM_FeHsx300kmh)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // Cost against the number of spans (3-mass, 250 km/h).
 static void BM_Fe3MassSpans(benchmark::State& state) {
-  run_line(state, "pantograph-3mass.yaml", 250, {"line.spans=" + std::to_string(state.range(0))});
+  run_line(state, "pantograph-3mass.yaml", 250, direct({"line.spans=" + std::to_string(state.range(0))}));
 }
 BENCHMARK(BM_Fe3MassSpans)->Arg(5)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 // The line alone: one structural step of the default line with a moving penalty contact.
 static void BM_FeLineStep(benchmark::State& state) {
-  const io::CatenaryFile c = io::load_catenary(kFe);
   const catenary::FeLine line(io::read_fe_catenary_data(kFe));
   catenary::FeIntegrator fe(line, 5e-4, 0.0);
   catenary::FeState s = fe.initial({1.0}, {100.0});
@@ -66,7 +83,7 @@ BENCHMARK(BM_FeLineStep)->Unit(benchmark::kMicrosecond);
 // The acceptance sweep: HSX, 150:10:350 km/h (21 speeds), parallel on the machine's cores.
 static void BM_FeHsxSweep21(benchmark::State& state) {
   const pantograph::Pantograph p = io::load_pantograph(INERTA_SOURCE_DIR "/models/hsx.yaml");
-  io::CatenaryFile c = io::load_catenary(kFe);
+  io::CatenaryFile c = io::load_catenary(kFe, direct({}));
   std::vector<double> v;
   for (int k = 150; k <= 350; k += 10) v.push_back(k / 3.6);
   for (auto _ : state) {
@@ -75,3 +92,49 @@ static void BM_FeHsxSweep21(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FeHsxSweep21)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// ---- The modal solve (issue 23), the file's defaults: 2 spans behind, 3 ahead, modes below 100 Hz.
+
+// The acceptance run, cold (decomposition included): 3-mass, 250 km/h.
+static void BM_FeModal3Mass250kmhCold(benchmark::State& state) { run_cold(state, "pantograph-3mass.yaml", 250, {}); }
+BENCHMARK(BM_FeModal3Mass250kmhCold)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The same run with the modes already there (a sweep's or a study's later runs).
+static void BM_FeModal3Mass250kmhWarm(benchmark::State& state) { run_line(state, "pantograph-3mass.yaml", 250, {}); }
+BENCHMARK(BM_FeModal3Mass250kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// HSX at 300 km/h, cold and warm.
+static void BM_FeModalHsx300kmhCold(benchmark::State& state) { run_cold(state, "hsx.yaml", 300, {}); }
+BENCHMARK(BM_FeModalHsx300kmhCold)->Unit(benchmark::kMillisecond)->Iterations(1);
+static void BM_FeModalHsx300kmhWarm(benchmark::State& state) { run_line(state, "hsx.yaml", 300, {}); }
+BENCHMARK(BM_FeModalHsx300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Cost against the number of spans, cold (3-mass, 250 km/h): linear in the line.
+static void BM_FeModalSpans(benchmark::State& state) {
+  run_cold(state, "pantograph-3mass.yaml", 250, {"line.spans=" + std::to_string(state.range(0))});
+}
+BENCHMARK(BM_FeModalSpans)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The decomposition alone: every window of the default line (3 distinct shapes, in parallel).
+static void BM_FeModalPrepare(benchmark::State& state) {
+  const pantograph::Pantograph p = io::load_pantograph(INERTA_SOURCE_DIR "/models/hsx.yaml");
+  for (auto _ : state) {
+    io::CatenaryFile c = io::load_catenary(kFe);
+    c.catenary->prepare({{p, 0.0, c.contact}});
+    benchmark::DoNotOptimize(c.catenary.get());
+  }
+}
+BENCHMARK(BM_FeModalPrepare)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The acceptance sweep on the modal solve: HSX, 150:10:350 km/h, decomposition included.
+static void BM_FeModalHsxSweep21(benchmark::State& state) {
+  const pantograph::Pantograph p = io::load_pantograph(INERTA_SOURCE_DIR "/models/hsx.yaml");
+  std::vector<double> v;
+  for (int k = 150; k <= 350; k += 10) v.push_back(k / 3.6);
+  for (auto _ : state) {
+    io::CatenaryFile c = io::load_catenary(kFe);
+    auto r = analysis::sweep(p, *c.catenary, c.contact, v, analysis::RunOptions{});
+    benchmark::DoNotOptimize(r.data());
+  }
+}
+BENCHMARK(BM_FeModalHsxSweep21)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -706,6 +706,61 @@ int cmd_catenary_fit(const FitArgs& a) {
   return 0;
 }
 
+struct CheckReductionArgs {
+  std::string model = INERTA_SOURCE_DIR "/models/pantograph-3mass.yaml", speeds;
+  CatenaryArgs cat;
+  double tolerance = 1.0;
+};
+
+// The finite-element line's modal solve against its direct solve (docs/catenary-fe.md "Modal solver"):
+// the same runs on both, the EN 50317 statistics side by side; exit 1 if σ (raw or 20 Hz) differs by
+// more than --tolerance %.
+int cmd_check_reduction(CheckReductionArgs a) {
+  std::vector<double> v;
+  if (a.speeds.find(':') == std::string::npos) a.speeds += ":1:" + a.speeds;  // one speed
+  for (double s : frequency_range(a.speeds, "--speeds")) {
+    if (!(s > 0)) throw CLI::ValidationError("--speeds", "speeds must be > 0");
+    v.push_back(to_ms(s, a.cat.unit));
+  }
+  const io::CatenaryFile probe = io::read_catenary_file(a.cat.catenary, io::split_overrides(a.model, a.cat.sets).second);
+  if (!probe.fe) throw ModelError(fmt::format("{}: check-reduction needs a finite-element catenary (type: finite_element)", a.cat.catenary));
+  CatenaryArgs direct = a.cat, modal = a.cat;
+  direct.sets.push_back("solver.type=direct");
+  modal.sets.push_back("solver.type=modal");
+  auto [panto, ref] = pantograph_setup(a.model, direct);
+  auto [panto2, cand] = pantograph_setup(a.model, modal);
+  fmt::print("reference: {}\ncandidate: {}\n", ref.catenary->describe(), cand.catenary->describe());
+  const std::vector<catenary::PantographOnLine> train{{panto, 0.0, ref.contact}};
+  const auto rows = analysis::compare(train, *ref.catenary, *cand.catenary, v, analysis::RunOptions{});
+  auto pct = [](double a_, double b_) { return a_ != 0 ? 100 * (b_ - a_) / std::abs(a_) : 0.0; };
+  double worst = 0;
+  for (const auto& r : rows) {
+    const auto &d = r.reference, &m = r.candidate;
+    const double up_d = d.support_uplift.empty() ? 0 : *std::max_element(d.support_uplift.begin(), d.support_uplift.end());
+    const double up_m = m.support_uplift.empty() ? 0 : *std::max_element(m.support_uplift.begin(), m.support_uplift.end());
+    fmt::print("\nv = {:.4g} {} (analysis section, EN 50317)\n  {:<16}{:>12}{:>12}{:>10}\n", a.cat.unit == "kmh" ? r.speed * 3.6 : r.speed,
+               a.cat.unit == "kmh" ? "km/h" : "m/s", "quantity", "direct", "modal", "diff %");
+    auto row = [&](const char* q, double x, double y) { fmt::print("  {:<16}{:>12.4f}{:>12.4f}{:>+10.3f}\n", q, x, y, pct(x, y)); };
+    row("mean N", d.stats.mean, m.stats.mean);
+    row("sigma N", d.stats.std, m.stats.std);
+    row("sigma 20 Hz N", d.filtered[0].std, m.filtered[0].std);
+    row("max N", d.stats.max, m.stats.max);
+    row("min N", d.stats.min, m.stats.min);
+    row("loss %", d.stats.loss_pct, m.stats.loss_pct);
+    row("uplift max mm", 1e3 * up_d, 1e3 * up_m);
+    row("wall s", r.reference_s, r.candidate_s);
+    worst = std::max({worst, std::abs(pct(d.stats.std, m.stats.std)), std::abs(pct(d.filtered[0].std, m.filtered[0].std))});
+  }
+  fmt::print("\nlargest difference of sigma (raw or 20 Hz): {:.3f} % (tolerance {:g} %)\n", worst, a.tolerance);
+  if (worst > a.tolerance) {
+    fmt::print(stderr, "check-reduction: the modal solve differs from the direct one by {:.3f} % in sigma, more than "
+                       "--tolerance {:g} %: raise solver.cutoff or the window (solver.window_behind / window_ahead)\n",
+               worst, a.tolerance);
+    return 1;
+  }
+  return 0;
+}
+
 struct ModesArgs {
   std::string model, out, export_json, inputs, outputs;
   CatenaryArgs cat;
@@ -1195,6 +1250,18 @@ int main(int argc, char** argv) {
   fit->add_option("--span", fit_args.span, "Span to fit (1-based; default: the middle span)")->check(count_in(0, 100000));
   fit->add_option("--table", fit_args.table, "Also write the fit along the span (CSV: x, elasticity FE/fit, mass, damping)");
   fit->add_option("--set", fit_args.sets, "Override a catenary value (repeatable), e.g. messenger.tension=17000");
+  CheckReductionArgs cra;
+  auto* crd = cat_cmd->add_subcommand(
+      "check-reduction", "Run the finite-element line's modal and direct solves side by side and compare the statistics");
+  crd->add_option("catenary", cra.cat.catenary, "Finite-element catenary file (YAML)")->required();
+  crd->add_option("--model", cra.model, "Pantograph model file (default: the bundled 3-mass DSA 380)");
+  auto* crd_speed = crd->add_option("--speed,--speeds", cra.speeds, "Speed V or speeds V0:DV:V1 in --unit")->required();
+  (void)crd_speed;
+  crd->add_option("--unit", cra.cat.unit, "Speed unit: ms (m/s) or kmh")->check(CLI::IsMember({"ms", "kmh"}))->capture_default_str();
+  crd->add_option("--set", cra.cat.sets, "Override a catenary or model value (repeatable), e.g. solver.cutoff=150");
+  crd->add_option("--tolerance", cra.tolerance, "Largest difference of sigma accepted, % (exit 1 beyond)")
+      ->capture_default_str()
+      ->check(number_in(0, 1e6, "a percentage"));
   cat_cmd->require_subcommand(1);
 
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
@@ -1225,6 +1292,7 @@ int main(int argc, char** argv) {
     if (frf->parsed()) return cmd_frf(fa);
     if (crs->parsed()) return cmd_catenary_response(ca);
     if (fit->parsed()) return cmd_catenary_fit(fit_args);
+    if (crd->parsed()) return cmd_check_reduction(cra);
     if (idn->parsed()) return inerta::cli::run_identify();
     if (rms->parsed()) return inerta::cli::run_rms();
     if (nets->parsed()) return inerta::cli::run_networks();

@@ -619,6 +619,10 @@ class FeCatenaryData:
     gravity: float
     time_step: float
     hht_alpha: float
+    solver: str
+    modal_cutoff: float
+    window_behind: int
+    window_ahead: int
     section_first: int
     section_last: int
     def __init__(self) -> None: ...
@@ -976,6 +980,14 @@ def sweep(model: ModelsOnLine, catenary: CatenaryLike, speeds: ArrayLike, *, con
           progress: Optional[Callable[[int, int], None]] = None) -> SweepResult: ...
 def sweep_periodic(model: Model, catenary: CatenaryLike, speeds: ArrayLike, *, contact: ContactLike = None,
                    harmonics: int = 8) -> SweepResult: ...
+class RunComparison:
+    speed: float
+    reference: SpeedResult
+    candidate: SpeedResult
+    reference_s: float
+    candidate_s: float
+def compare(model: Model, reference: CatenaryLike, candidate: CatenaryLike, speeds: ArrayLike, *,
+            contact: ContactLike = None) -> list[RunComparison]: ...
 def run_speed(model: ModelsOnLine, catenary: CatenaryLike, speed: float, *, contact: ContactLike = None,
               positions: Optional[ArrayLike] = None, options: Optional[RunOptions] = None, method: Optional[str] = None,
               rtol: Optional[float] = None, atol: Optional[float] = None) -> SpeedResult: ...

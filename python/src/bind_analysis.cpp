@@ -453,6 +453,24 @@ void bind_analysis(py::module_& m) {
         "integrator. progress(done, total) after each speed, on this thread; Ctrl-C cancels the sweep "
         "(KeyboardInterrupt once the running speeds finish).");
 
+  py::class_<analysis::RunComparison>(m, "RunComparison", "One speed run on two catenaries (inerta.compare).")
+      .def_readonly("speed", &analysis::RunComparison::speed, "m/s")
+      .def_readonly("reference", &analysis::RunComparison::reference)
+      .def_readonly("candidate", &analysis::RunComparison::candidate)
+      .def_readonly("reference_s", &analysis::RunComparison::reference_s, "wall time of the reference run, s")
+      .def_readonly("candidate_s", &analysis::RunComparison::candidate_s, "wall time of the candidate run, s");
+
+  m.def("compare", [](const py::object& model, const py::object& reference, const py::object& candidate,
+                      const py::object& speeds, const py::object& contact) {
+    const CatenaryArg ref = catenary_arg(reference), cand = catenary_arg(candidate);
+    const auto pantographs = train(model, py::none(), contact_arg(contact, ref));
+    const std::vector<double> v = doubles(speeds);
+    return run(py::none(), [&](Call&) { return analysis::compare(pantographs, *ref.catenary, *cand.catenary, v, {}); });
+  }, py::arg("model"), py::arg("reference"), py::arg("candidate"), py::arg("speeds"), py::kw_only(),
+        py::arg("contact") = py::none(),
+        "The same runs on two catenaries, one speed after the other, each timed (analysis::compare; `inerta catenary "
+        "check-reduction` compares a finite-element line's direct and modal solves this way). Speeds in m/s.");
+
   m.def("sweep_periodic", [](const Model& model, const py::object& catenary, const py::object& speeds,
                              const py::object& contact, int harmonics) {
     const CatenaryArg cat = catenary_arg(catenary);

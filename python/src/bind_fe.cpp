@@ -5,6 +5,7 @@
 
 #include "common.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/lumped_fit_file.hpp"
 
@@ -77,6 +78,16 @@ void bind_fe(py::module_& m) {
       .def_readwrite("hht_alpha", &FeCatenaryData::hht_alpha)
       .def_readwrite("section_first", &FeCatenaryData::section_first, "analysis section, first span (1-based; −1 default)")
       .def_readwrite("section_last", &FeCatenaryData::section_last)
+      .def_property(
+          "solver", [](const FeCatenaryData& d) { return d.solver == FeCatenaryData::Solver::Modal ? "modal" : "direct"; },
+          [](FeCatenaryData& d, const std::string& s) {
+            if (s != "modal" && s != "direct") throw InvalidArgument("FeCatenaryData.solver", "solver", "expected 'modal' or 'direct'");
+            d.solver = s == "modal" ? FeCatenaryData::Solver::Modal : FeCatenaryData::Solver::Direct;
+          },
+          "'modal' (a window of spans, modes below modal_cutoff; docs/catenary-fe.md) or 'direct' (the whole line)")
+      .def_readwrite("modal_cutoff", &FeCatenaryData::modal_cutoff, "Hz, highest natural frequency kept")
+      .def_readwrite("window_behind", &FeCatenaryData::window_behind, "spans behind the rear pantograph's span (−1: whole line)")
+      .def_readwrite("window_ahead", &FeCatenaryData::window_ahead, "spans ahead of the leading pantograph's span (−1: whole line)")
       .def("validate", &FeCatenaryData::validate, "InvalidArgument naming the offending value");
 
   py::class_<FeLine::Dropper>(m, "FeDropper", "One dropper of the assembled line.")

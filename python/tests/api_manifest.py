@@ -237,6 +237,8 @@ BOUND = {
     "catenary::FeCatenaryData": "FeCatenaryData",
     "catenary::FeWire": "FeWire",
     "catenary::FeLine": "FeLine",
+    "analysis::RunComparison": "RunComparison",
+    "analysis::compare": "compare",
     "catenary::LumpedFit": "LumpedFit",
     "catenary::fit_lumped": "fit_lumped",
     "catenary::beam_stiffness": "beam_stiffness",
@@ -346,6 +348,16 @@ EXCLUDED = {
     "catenary::FeIntegrator": "the structural HHT-α stepping workspace of the co-simulation (a call per step); "
                               "simulate_coupled, run_speed and sweep run it through Catenary",
     "catenary::FeLoad": "argument of FeIntegrator::step (see there)",
+    "catenary::FeLineSolver": "a run's structural solver of the line (a per-step workspace inside the coupling); "
+                              "Python chooses it with FeCatenaryData.solver",
+    "catenary::make_direct_solver": "makes an FeLineSolver (see there)",
+    "catenary::make_modal_solver": "makes an FeLineSolver (see there)",
+    "catenary::FeModalLine": "the modes' cache inside FeCatenary: a catenary held in Python keeps it",
+    "catenary::FeWindow": "a window of FeModalLine (see there)",
+    "catenary::FeWindowModes": "the decomposition of a window (see FeModalLine)",
+    "catenary::BandInverse": "numerical kernel of the modal solve's residual flexibility",
+    "catenary::Modes": "result of lowest_modes (see there)",
+    "catenary::lowest_modes": "numerical kernel of the modal solve (Lanczos spectrum slicing), tested in C++",
     "catenary::FeState": "state of FeIntegrator (see there)",
     "io::json_rows": "nlohmann-json plumbing of the C++ writers; the JSON documents are bound as dicts "
                      "(linear_model_json, study_results_json, ModalAnalysis.to_json)",

@@ -88,6 +88,8 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [inerta.CubicSpline([0, 1, 2], [0, 1, 0])]
     fe = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 3})
     out += [fe, fe.catenary, fe.catenary.line, fe.fe, inerta.fit_lumped(fe.catenary, points=32)]
+    fe_direct = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 3, "solver.type": "direct"})
+    out += inerta.compare(inerta.load_model(model("pantograph-3mass.yaml")), fe_direct, fe, [60.0])
     out += [inerta.load_lumped_pantograph_data(model("pantograph-3mass.yaml"))]
     lp = inerta.butterworth_lowpass(20.0, 1000.0)
     tt = np.arange(2000) / 1000.0

@@ -142,3 +142,25 @@ def test_stepper(twobar):
     assert s.time == 1.0 and s.stats.steps > 0
     y, _ = inerta.integrate(twobar, x, 0.0, 1.0, 1.0, rtol=1e-9, atol=1e-11)
     np.testing.assert_allclose(s.state.q, y.q, atol=1e-6)
+
+
+def test_modal_solver_and_compare():
+    # The file's modal solve against the direct one (inerta.compare, as `inerta catenary check-reduction`),
+    # on a short line with the whole line in one window; the data's solver fields round-trip and are checked.
+    sets = {"line.spans": 3, "solver.window_behind": -1, "solver.cutoff": 150}
+    d = inerta.read_fe_catenary_data(model("catenary-fe.yaml"), sets)
+    assert d.solver == "modal" and d.modal_cutoff == 150 and d.window_behind == -1 and d.window_ahead == 3
+    with pytest.raises(inerta.InvalidArgument):
+        d.solver = "fast"
+    direct = inerta.load_catenary(model("catenary-fe.yaml"), {**sets, "solver.type": "direct"})
+    modal = inerta.load_catenary(model("catenary-fe.yaml"), sets)
+    p = inerta.load_model(model("pantograph-3mass.yaml"))
+    rows = inerta.compare(p, direct, modal, [inerta.kmh(200)])
+    assert len(rows) == 1 and rows[0].speed == pytest.approx(200 / 3.6)
+    ref, cand = rows[0].reference.stats.std, rows[0].candidate.stats.std
+    assert ref > 5 and abs(cand - ref) < 0.01 * ref
+    assert rows[0].reference_s > 0 and rows[0].candidate_s > 0
+    bad = dict(sets)
+    bad["solver.window_ahead"] = -2
+    with pytest.raises(inerta.ModelError, match="window_ahead"):
+        inerta.read_fe_catenary_data(model("catenary-fe.yaml"), bad)

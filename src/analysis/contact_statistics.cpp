@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -135,6 +136,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
   std::exception_ptr error;
   std::mutex mutex;
   int done = 0;
+  catenary.prepare(pantographs);  // once, before the runs (a finite-element line's modes)
   tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t i) {
     try {
       auto sys = catenary.couple(pantographs, speeds[i]);
@@ -158,6 +160,28 @@ std::vector<SpeedResult> sweep(const pantograph::Pantograph& pantograph, const c
                                const RunOptions& options, const std::function<void(int, int)>& progress) {
   return sweep(std::vector<catenary::PantographOnLine>{{pantograph, 0.0, contact}}, catenary, speeds, options,
                progress);
+}
+
+std::vector<RunComparison> compare(const std::vector<catenary::PantographOnLine>& pantographs,
+                                   const catenary::Catenary& reference, const catenary::Catenary& candidate,
+                                   const std::vector<double>& speeds, const RunOptions& options) {
+  std::vector<RunComparison> out;
+  auto timed = [&](const catenary::Catenary& c, double v, double& seconds) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto sys = c.couple(pantographs, v);
+    SpeedResult r = run_speed(*sys, options);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.t.clear(), r.F.clear();
+    return r;
+  };
+  for (double v : speeds) {
+    RunComparison c;
+    c.speed = v;
+    c.reference = timed(reference, v, c.reference_s);
+    c.candidate = timed(candidate, v, c.candidate_s);
+    out.push_back(std::move(c));
+  }
+  return out;
 }
 
 }  // namespace inerta::analysis

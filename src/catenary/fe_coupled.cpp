@@ -19,6 +19,7 @@
 #include <cmath>
 
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/fe_modal.hpp"
 #include "inerta/error.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
@@ -81,8 +82,12 @@ class TrackContact : public mbs::ForceElement {
 
 class FeCoupled final : public Coupled {
  public:
-  FeCoupled(std::shared_ptr<const FeLine> line, const std::vector<PantographOnLine>& ps, double speed, Section section)
-      : line_(std::move(line)), fe_(*line_, line_->data().time_step, line_->data().hht_alpha), v_(speed), section_(section) {
+  FeCoupled(std::shared_ptr<const FeLine> line, std::shared_ptr<const FeModalLine> modal,
+            const std::vector<PantographOnLine>& ps, double speed, Section section)
+      : line_(std::move(line)), v_(speed), section_(section) {
+    double lo = line_->length(), hi = 0;
+    for (const PantographOnLine& p : ps) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
+    fe_ = modal ? make_modal_solver(std::move(modal), std::max(0.0, hi - lo)) : make_direct_solver(*line_);
     for (std::size_t k = 0; k < ps.size(); ++k) {
       const PantographOnLine& p = ps[k];
       if (p.contact.kind != Contact::Kind::Penalty)
@@ -132,7 +137,7 @@ class FeCoupled final : public Coupled {
     const Part& p = part(c);
     return p.stepper ? p.stepper->state() : p.x;
   }
-  double time() const override { return s_.t; }
+  double time() const override { return fe_->time(); }
   double line_length() const override { return line_->length(); }
   Section section() const override { return section_; }
   double end_time() const override {
@@ -142,9 +147,7 @@ class FeCoupled final : public Coupled {
   }
   std::vector<double> support_x() const override { return line_->support_x(); }
   std::vector<double> support_uplift() const override {
-    std::vector<double> u;
-    for (int d : line_->support_dofs()) u.push_back(s_.u[d]);
-    return u;
+    return fe_->support_uplift();
   }
 
   void equilibrate() override {
@@ -185,12 +188,12 @@ class FeCoupled final : public Coupled {
           "finite-element catenary: the static uplift of the pantographs against the line did not converge (last "
           "change {:.3g} m)",
           change));
-    s_ = fe_.initial(xs, F, 0.0);
+    fe_->start(xs, F, 0.0);
     for (std::size_t k = 0; k < n; ++k) {
       Part& p = *parts_[k];
       p.stepper.reset();  // made by the first advance, with its options
-      p.y_wire = fe_.height(s_, xs[k]);
-      p.v_wire = fe_.height_rate(s_, xs[k], v_);
+      p.y_wire = fe_->height(xs[k]);
+      p.v_wire = fe_->height_rate(xs[k], v_);
       p.acc_y = 0;
       p.F = F[k];
     }
@@ -201,11 +204,11 @@ class FeCoupled final : public Coupled {
   solve::RunStats advance(double t_end, double dt, const solve::IntegratorOptions& options,
                           const SampleObserver& observer, bool accelerations) override {
     if (!(dt > 0)) throw InvalidArgument("advance: the sample interval must be > 0 s");
-    const double h = fe_.dt();
+    const double h = fe_->dt();
     if (!started_ || options.method != options_.method || options.rtol != options_.rtol ||
         options.atol != options_.atol || options.max_step != options_.max_step) {
       options_ = options;
-      for (auto& p : parts_) p->stepper = std::make_unique<solve::Stepper>(p->model, state_of(*p), s_.t, options_);
+      for (auto& p : parts_) p->stepper = std::make_unique<solve::Stepper>(p->model, state_of(*p), fe_->time(), options_);
       started_ = true;
     }
     const auto wall0 = std::chrono::steady_clock::now();
@@ -224,17 +227,17 @@ class FeCoupled final : public Coupled {
         const double xc = p.x0 + v_ * t;
         if (observer) {
           Sample smp{ContactId{static_cast<int>(k)}, t, xc, F, p.model, x, *p.ws};
-          smp.wire_uplift = line_->contact_displacement(s_.u, xc);
+          smp.wire_uplift = fe_->uplift(xc);
           observer(smp);
         }
       }
     };
-    if (!sampled_start_) deliver(s_.t);
+    if (!sampled_start_) deliver(fe_->time());
     std::vector<FeLoad> loads(parts_.size());
     std::vector<double> forces;
-    const int n_steps = static_cast<int>(std::floor((t_end - s_.t) / h + 1e-6));
+    const int n_steps = static_cast<int>(std::floor((t_end - fe_->time()) / h + 1e-6));
     for (int i = 0; i < n_steps; ++i) {
-      const double t = s_.t, t1 = t + h;
+      const double t = fe_->time(), t1 = t + h;
       for (std::size_t k = 0; k < parts_.size(); ++k) {
         Part& p = *parts_[k];
         const double xc1 = p.x0 + v_ * t1;
@@ -249,18 +252,18 @@ class FeCoupled final : public Coupled {
                           p.ks, p.cs, v_};
         p.yd_prev = yd;
       }
-      fe_.step(s_, loads, forces);
+      fe_->step(loads, forces);
       for (std::size_t k = 0; k < parts_.size(); ++k) {
         Part& p = *parts_[k];
         const double xc1 = p.x0 + v_ * t1;
-        const double y1 = fe_.height(s_, xc1), v1 = fe_.height_rate(s_, xc1, v_);
+        const double y1 = fe_->height(xc1), v1 = fe_->height_rate(xc1, v_);
         *p.track = WireTrack{t, t1, p.offset + p.y_wire, p.offset + y1, p.v_wire, v1};
         p.y_wire = y1, p.v_wire = v1;
         p.stepper->advance(t1);
         const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(p.stepper->state(), p.body), p.u);
         p.acc_y = (pk.v.y() - p.yd_prev) / h;
       }
-      if (++step_index % every == 0) deliver(s_.t);
+      if (++step_index % every == 0) deliver(fe_->time());
     }
     sampled_start_ = true;
     solve::RunStats total;
@@ -297,8 +300,7 @@ class FeCoupled final : public Coupled {
   static const mbs::State& state_of(const Part& p) { return p.stepper ? p.stepper->state() : p.x; }
 
   std::shared_ptr<const FeLine> line_;
-  FeIntegrator fe_;
-  FeState s_;
+  std::unique_ptr<FeLineSolver> fe_;
   double v_;
   Section section_;
   std::vector<std::unique_ptr<Part>> parts_;
@@ -308,9 +310,29 @@ class FeCoupled final : public Coupled {
 
 }  // namespace
 
-FeCatenary::FeCatenary(FeCatenaryData data) : line_(std::make_shared<FeLine>(std::move(data))) {}
+FeCatenary::FeCatenary(FeCatenaryData data) : line_(std::make_shared<FeLine>(std::move(data))) {
+  if (line_->data().solver == FeCatenaryData::Solver::Modal) modal_ = std::make_shared<FeModalLine>(line_);
+}
 
-std::string FeCatenary::describe() const { return line_->describe(); }
+std::string FeCatenary::describe() const {
+  std::string s = line_->describe();
+  const FeCatenaryData& d = line_->data();
+  if (modal_)
+    s += d.window_behind < 0 || d.window_ahead < 0
+             ? fmt::format("; modal solve below {:g} Hz, the whole line", d.modal_cutoff)
+             : fmt::format("; modal solve below {:g} Hz, a window of {} span(s) behind and {} ahead", d.modal_cutoff,
+                           d.window_behind, d.window_ahead);
+  else
+    s += "; direct solve";
+  return s;
+}
+
+void FeCatenary::prepare(const std::vector<PantographOnLine>& pantographs) const {
+  if (!modal_ || pantographs.empty()) return;
+  double lo = line_->length(), hi = 0;
+  for (const PantographOnLine& p : pantographs) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
+  modal_->prepare(modal_->window_spans(std::max(0.0, hi - lo)));
+}
 
 Section FeCatenary::section() const {
   const FeCatenaryData& d = line_->data();
@@ -331,7 +353,7 @@ std::shared_ptr<const Catenary> FeCatenary::mean() const {
 
 std::unique_ptr<Coupled> FeCatenary::make_coupled(const std::vector<PantographOnLine>& pantographs,
                                                   double speed) const {
-  return std::make_unique<FeCoupled>(line_, pantographs, speed, section());
+  return std::make_unique<FeCoupled>(line_, modal_, pantographs, speed, section());
 }
 
 }  // namespace inerta::catenary

@@ -77,6 +77,16 @@ void FeCatenaryData::validate() const {
   if (!(hht_alpha >= -1.0 / 3.0 && hht_alpha <= 0))
     throw InvalidArgument("finite-element catenary: integration", "alpha",
                           fmt::format("HHT-α needs −1/3 <= α <= 0, got {}", hht_alpha));
+  positive("solver", "cutoff", modal_cutoff, "Hz");
+  if (modal_cutoff > 2000)
+    throw InvalidArgument("finite-element catenary: solver", "cutoff",
+                          fmt::format("must be <= 2000 Hz (the modes are for the contact-force band), got {} Hz", modal_cutoff));
+  if (window_behind < -1 || window_behind > 1000)
+    throw InvalidArgument("finite-element catenary: solver", "window_behind",
+                          fmt::format("must be a number of spans >= 0, or −1 for the whole line, got {}", window_behind));
+  if (window_ahead < -1 || window_ahead > 1000)
+    throw InvalidArgument("finite-element catenary: solver", "window_ahead",
+                          fmt::format("must be a number of spans >= 0, or −1 for the whole line, got {}", window_ahead));
   if (section_first != -1 || section_last != -1)
     if (section_first < 1 || section_last < section_first || section_last > spans)
       throw InvalidArgument("finite-element catenary: section", "spans",

@@ -30,22 +30,46 @@ constexpr std::size_t kCacheColumns = 32;  // the contact elements' DOFs
 void FeIntegrator::solve(Eigen::VectorXd& b) const {
   const int n = static_cast<int>(b.size()), kd = kd_, ld = kd_ + 1;
   const double* ab = band_.data();
+  const double* rd = rdiag_.data();
   double* x = b.data();
-  for (int j = 0; j < n; ++j) {
+  for (int j = 0; j < n; ++j) {  // L y = b: each solved value scattered down its column
     const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
-    const double xj = x[j] / c[0];
+    const double xj = x[j] * rd[j];
     x[j] = xj;
     const int m = std::min(kd, n - 1 - j);
     for (int i = 1; i <= m; ++i) x[j + i] -= c[i] * xj;
   }
-  for (int j = n - 1; j >= 0; --j) {
+  for (int j = n - 1; j >= 0; --j) {  // Lᵀ x = y: the newest value x[j+1] enters last (shortest dependency chain)
     const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
     double s = x[j];
     const int m = std::min(kd, n - 1 - j);
-    for (int i = 1; i <= m; ++i) s -= c[i] * x[j + i];
-    x[j] = s / c[0];
+    for (int i = m; i >= 2; --i) s -= c[i] * x[j + i];
+    if (m >= 1) s -= c[1] * x[j + 1];
+    x[j] = s * rd[j];
   }
   ++solves_;
+}
+
+// r = M w + Kb v with both symmetric bands (lower storage, interleaved per column): one pass, each
+// stored entry used for its own row and its mirror (the step's right-hand side, no sparse traversal).
+void FeIntegrator::band_products(const Eigen::VectorXd& w, const Eigen::VectorXd& v, Eigen::VectorXd& r) const {
+  const int n = static_cast<int>(w.size()), kd = kd_, ld = kd_ + 1;
+  r.setZero(n);
+  const double* ab = mk_band_.data();
+  const double *pw = w.data(), *pv = v.data();
+  double* y = r.data();
+  for (int j = 0; j < n; ++j) {
+    const double* m = ab + 2 * static_cast<std::ptrdiff_t>(j) * ld;
+    const double* k = m + ld;
+    const double wj = pw[j], vj = pv[j];
+    double yj = m[0] * wj + k[0] * vj;
+    const int top = std::min(kd, n - 1 - j);
+    for (int i = 1; i <= top; ++i) {
+      y[j + i] += m[i] * wj + k[i] * vj;
+      yj += m[i] * pw[j + i] + k[i] * pv[j + i];
+    }
+    y[j] += yj;
+  }
 }
 
 FeIntegrator::FeIntegrator(const FeLine& line, double dt, double alpha) : L_(line), h_(dt), alpha_(alpha) {
@@ -75,9 +99,20 @@ FeIntegrator::FeIntegrator(const FeLine& line, double dt, double alpha) : L_(lin
   dpbtrf_("L", &n, &kd_, band_.data(), &ldab, &info);
   if (info != 0)
     throw NumericalError(fmt::format("finite-element catenary: the step matrix is not positive definite (LAPACK dpbtrf {})", info));
-  // r = M w1 + (1+α) C vt with C = a M + b K: two products.
-  Mw_ = L_.M();
-  Kw_ = (1 + alpha_) * L_.data().rayleigh_stiffness * L_.K();
+  rdiag_.resize(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) rdiag_[static_cast<std::size_t>(j)] = 1 / band_[static_cast<std::size_t>(j) * ldab];
+  // r = M w1 + (1+α) C vt with C = a M + b K: M and (1+α) b K in the same lower band storage as A,
+  // interleaved per column ([M(j..j+kd, j), Kb(j..j+kd, j)]) so that one pass reads both.
+  mk_band_.assign(2 * static_cast<std::size_t>(ldab) * static_cast<std::size_t>(n), 0.0);
+  auto put = [&](const Eigen::SparseMatrix<double>& S, double scale, int which) {
+    for (int j = 0; j < S.outerSize(); ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(S, j); it; ++it)
+        if (it.row() >= j)
+          mk_band_[2 * static_cast<std::size_t>(ldab) * static_cast<std::size_t>(j) + static_cast<std::size_t>(which * ldab) +
+                   static_cast<std::size_t>(it.row() - j)] = scale * it.value();
+  };
+  put(L_.M(), 1.0, 0);
+  put(L_.K(), (1 + alpha_) * L_.data().rayleigh_stiffness, 1);
   slot_of_.assign(static_cast<std::size_t>(L_.n_dofs()), -1);
 }
 
@@ -150,8 +185,7 @@ void FeIntegrator::step(FeState& s, const std::vector<FeLoad>& loads, std::vecto
   w1_ = c0_ * s.u + c2_ * s.v + c3_ * s.a;
   vt_ = c1_ * s.u + c4_ * s.v + c5_ * s.a;  // v_{n+1} = c1 u − vt
   w1_ += (ap * L_.data().rayleigh_mass) * vt_;
-  r_.noalias() = Mw_ * w1_;
-  r_.noalias() += Kw_ * vt_;
+  band_products(w1_, vt_, r_);
   if (alpha_ != 0) r_ += alpha_ * s.q;
 
   // Loads: prescribed forces into r; penalty contacts as rank-one terms.
@@ -305,5 +339,33 @@ void FeIntegrator::step(FeState& s, const std::vector<FeLoad>& loads, std::vecto
     }
   }
 }
+
+namespace {
+// The direct solve as a run's solver: the FeIntegrator and its state.
+class DirectSolver final : public FeLineSolver {
+ public:
+  explicit DirectSolver(const FeLine& line) : L_(line), fe_(line, line.data().time_step, line.data().hht_alpha) {}
+  double dt() const override { return fe_.dt(); }
+  double time() const override { return s_.t; }
+  void start(const std::vector<double>& x, const std::vector<double>& F, double t) override { s_ = fe_.initial(x, F, t); }
+  void step(const std::vector<FeLoad>& loads, std::vector<double>& forces) override { fe_.step(s_, loads, forces); }
+  double height(double x) const override { return fe_.height(s_, x); }
+  double height_rate(double x, double speed) const override { return fe_.height_rate(s_, x, speed); }
+  double uplift(double x) const override { return L_.contact_displacement(s_.u, x); }
+  std::vector<double> support_uplift() const override {
+    std::vector<double> u;
+    for (int d : L_.support_dofs()) u.push_back(s_.u[d]);
+    return u;
+  }
+  double energy() const override { return fe_.energy(s_); }
+
+ private:
+  const FeLine& L_;
+  FeIntegrator fe_;
+  FeState s_;
+};
+}  // namespace
+
+std::unique_ptr<FeLineSolver> make_direct_solver(const FeLine& line) { return std::make_unique<DirectSolver>(line); }
 
 }  // namespace inerta::catenary

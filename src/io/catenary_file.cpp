@@ -193,6 +193,9 @@ const std::vector<FeField>& fe_fields() {
       INERTA_FE_FIELD("damping", "rayleigh_stiffness", "s", false, false, rayleigh_stiffness),
       INERTA_FE_FIELD("integration", "time_step", "s", false, false, time_step),
       INERTA_FE_FIELD("integration", "alpha", "HHT-α, −1/3 … 0", false, false, hht_alpha),
+      INERTA_FE_FIELD("solver", "cutoff", "Hz", false, false, modal_cutoff),
+      INERTA_FE_FIELD("solver", "window_behind", "spans, −1: the whole line", false, true, window_behind),
+      INERTA_FE_FIELD("solver", "window_ahead", "spans, −1: the whole line", false, true, window_ahead),
   };
   return f;
 }
@@ -208,13 +211,14 @@ std::vector<double>* fe_list(catenary::FeCatenaryData& d, const std::string& key
 
 const std::vector<std::string> kFeSections{"line",         "messenger", "contact_wire", "droppers",
                                            "supports",     "registration", "mesh",      "damping",
-                                           "integration",  "section",   "contact"};
+                                           "integration",  "section",   "contact",      "solver"};
 const std::set<std::string> kFeRequired{"line", "messenger", "contact_wire", "droppers", "supports", "registration"};
 
 std::vector<std::string> fe_keys(const std::string& section) {
   std::vector<std::string> k;
   if (section == "droppers") k = {"x", "presag", "nominal_length"};
   if (section == "section") k = {"spans"};
+  if (section == "solver") k = {"type"};
   for (const FeField& f : fe_fields())
     if (section == f.section) k.emplace_back(f.key);
   return k;
@@ -287,11 +291,12 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
       continue;
     }
     if (s == "contact") continue;  // read_contact
+    if (s == "solver" && sec.IsScalar()) continue;  // `solver: modal`, the type alone
     rd.keys(sec, s, fe_keys(s));
   }
   for (const FeField& f : fe_fields()) {
     const YAML::Node sec = root[f.section];
-    if (!sec.IsDefined() || sec.IsNull()) continue;
+    if (!sec.IsDefined() || sec.IsNull() || !sec.IsMap()) continue;
     const YAML::Node n = sec[f.key];
     if (!n.IsDefined() || n.IsNull()) {
       if (f.required) rd.fail(sec, f.key, fmt::format("missing in {}; expected a number ({})", f.section, f.unit));
@@ -299,6 +304,13 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     }
     const double v = rd.number(n, f.key);
     f.set(d, f.integer ? fe_whole(rd, n, f.key, v) : v);
+  }
+  if (const YAML::Node sv = root["solver"]; sv.IsDefined() && (sv.IsScalar() || (sv.IsMap() && sv["type"].IsDefined()))) {
+    const YAML::Node tn = sv.IsScalar() ? sv : sv["type"];
+    const std::string t = tn.IsScalar() ? tn.Scalar() : "";
+    if (t != "modal" && t != "direct")
+      rd.fail(tn, sv.IsScalar() ? "solver" : "type", fmt::format("expected modal or direct, got '{}'", t));
+    d.solver = t == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
   }
   const YAML::Node drop = root["droppers"];
   for (const char* k : {"x", "presag", "nominal_length"}) {
@@ -375,6 +387,11 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
     d.section_last = parse(last);
     return true;
   }
+  if (section == "solver" && key == "type") {
+    if (value != "modal" && value != "direct") throw ModelError(fmt::format("--set '{}': expected solver.type=modal or direct", o));
+    d.solver = value == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
+    return true;
+  }
   if (section == "droppers") {
     if (const auto open = key.find('['); open != std::string::npos && key.back() == ']') {
       const std::string idx = key.substr(open + 1, key.size() - open - 2);
@@ -399,7 +416,7 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
 std::string fe_override_help() {
   std::string s;
   for (const FeField& f : fe_fields()) s += fmt::format("{}.{}, ", f.section, f.key);
-  return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, ";
+  return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, solver.type=modal|direct, ";
 }
 
 void apply_override(Parsed& c, const std::string& o) {

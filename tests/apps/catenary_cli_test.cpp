@@ -63,3 +63,20 @@ TEST_F(CatenaryCli, SeveralPantographsGetPrefixedColumnsAndAPointModelRefusesThe
   EXPECT_NE(alone.code, 0);
   EXPECT_TRUE(contains(alone.err, "--positions")) << alone.err;
 }
+
+TEST_F(CatenaryCli, CheckReductionComparesTheModalAndDirectSolves) {
+  // A short line, the whole line in one window: the table of both solves and the exit status
+  // against --tolerance (0 within it; 1 beyond, with advice); a lumped catenary is refused.
+  const std::string sets = " --set line.spans=3 --set solver.window_behind=-1 --set solver.cutoff=150";
+  auto r = run("catenary check-reduction " + model("catenary-fe.yaml") + sets + " --speed 200 --unit kmh");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  for (const char* q : {"v = 200 km/h", "sigma N", "sigma 20 Hz N", "uplift max mm", "wall s", "direct solve", "modal solve below 150 Hz"})
+    EXPECT_TRUE(contains(r.out, q)) << q << "\n" << r.out;
+  r = run("catenary check-reduction " + model("catenary-fe.yaml") + " --set line.spans=3 --set solver.window_behind=-1 "
+          "--set solver.cutoff=5 --speed 200 --unit kmh --tolerance 0.01");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  EXPECT_TRUE(contains(r.err, "raise solver.cutoff")) << r.err;
+  r = run("catenary check-reduction " + model("catenary.yaml") + " --speed 200 --unit kmh");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_TRUE(contains(r.err, "needs a finite-element catenary")) << r.err;
+}

@@ -236,3 +236,40 @@ TEST(FeCatenaryFile, OtherTypesKeepTheirFormatAndPointAtTheFiniteElementType) {
                                    "name: a\nname: b\n");
   EXPECT_NE(dup.find(":3: 'name': duplicate key"), std::string::npos) << dup;
 }
+
+TEST(FeCatenaryFile, SolverSectionAndItsErrors) {
+  // Without `solver` the direct solve (older files keep their results); the bundled line is modal.
+  EXPECT_EQ(io::read_fe_catenary_data(write(kLine)).solver, catenary::FeCatenaryData::Solver::Direct);
+  const catenary::FeCatenaryData b = io::read_fe_catenary_data(inerta::testing::model_path("catenary-fe.yaml"));
+  EXPECT_EQ(b.solver, catenary::FeCatenaryData::Solver::Modal);
+  EXPECT_EQ(b.modal_cutoff, 100);
+  EXPECT_EQ(b.window_behind, 2);
+  EXPECT_EQ(b.window_ahead, 3);
+  const catenary::FeCatenaryData m =
+      io::read_fe_catenary_data(write(kLine + "solver: {type: modal, cutoff: 80, window_behind: -1, window_ahead: 1}\n"));
+  EXPECT_EQ(m.solver, catenary::FeCatenaryData::Solver::Modal);
+  EXPECT_EQ(m.modal_cutoff, 80);
+  EXPECT_EQ(m.window_behind, -1);
+  EXPECT_EQ(m.window_ahead, 1);
+  EXPECT_EQ(io::read_fe_catenary_data(write(kLine + "solver: modal\n")).solver, catenary::FeCatenaryData::Solver::Modal);
+  EXPECT_EQ(io::read_fe_catenary_data(write(kLine + "solver: modal\n"), {"solver.type=direct"}).solver,
+            catenary::FeCatenaryData::Solver::Direct);
+  // Errors at their line, naming the key.
+  std::string e = error_of(kLine + "solver: {type: fast}\n");
+  EXPECT_NE(e.find(":14:"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected modal or direct, got 'fast'"), std::string::npos) << e;
+  e = error_of(kLine + "solver: quick\n");
+  EXPECT_NE(e.find("'solver'"), std::string::npos) << e;
+  e = error_of(kLine + "solver: {cutoff: 0}\n");
+  EXPECT_NE(e.find("cutoff"), std::string::npos) << e;
+  e = error_of(kLine + "solver: {window_ahead: 1.5}\n");
+  EXPECT_NE(e.find("whole number"), std::string::npos) << e;
+  e = error_of(kLine + "solver: {window_behind: -3}\n");
+  EXPECT_NE(e.find("window_behind"), std::string::npos) << e;
+  e = error_of(kLine + "solver: {windows: 3}\n");
+  EXPECT_NE(e.find("windows"), std::string::npos) << e;
+  e = error_of(kLine, {"solver.type=quick"});
+  EXPECT_NE(e.find("expected solver.type=modal or direct"), std::string::npos) << e;
+  e = error_of(kLine, {"solver.cutoff=-5"});
+  EXPECT_NE(e.find("cutoff"), std::string::npos) << e;
+}

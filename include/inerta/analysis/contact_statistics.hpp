@@ -70,4 +70,15 @@ std::vector<SpeedResult> sweep(const pantograph::Pantograph& pantograph, const c
                                const catenary::Contact& contact, const std::vector<double>& speeds,
                                const RunOptions& options, const std::function<void(int, int)>& progress = {});
 
+/// The same runs on two catenaries (two formulations of one line: e.g. the finite-element line's
+/// direct and modal solves), one speed after the other, each timed (coupling, start and run, s).
+struct RunComparison {
+  double speed = 0;
+  SpeedResult reference, candidate;
+  double reference_s = 0, candidate_s = 0;
+};
+std::vector<RunComparison> compare(const std::vector<catenary::PantographOnLine>& pantographs,
+                                   const catenary::Catenary& reference, const catenary::Catenary& candidate,
+                                   const std::vector<double>& speeds, const RunOptions& options);
+
 }  // namespace inerta::analysis

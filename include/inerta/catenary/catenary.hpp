@@ -114,6 +114,9 @@ class Catenary {
   std::unique_ptr<Coupled> couple(const std::vector<PantographOnLine>& pantographs, double speed) const;
   /// One pantograph at x0 = 0.
   std::unique_ptr<Coupled> couple(const pantograph::Pantograph& p, const Contact& contact, double speed) const;
+  /// The work runs with these pantographs need once (a finite-element line's modes, in parallel);
+  /// sweeps call it before their parallel loop. Nothing for most catenaries; couple does it too.
+  virtual void prepare(const std::vector<PantographOnLine>& /*pantographs*/) const {}
 
  protected:
   /// After couple's checks (count, speed, contact laws valid, contact markers present).

@@ -72,6 +72,13 @@ struct FeCatenaryData {
   double gravity = 9.81;                     ///< m/s²
   double time_step = 1e-3;                   ///< s, structural (and coupling) step
   double hht_alpha = 0.0;                    ///< α of HHT-α, in [−1/3, 0]
+  /// Structural solver of a run: the modal solve of a window of spans around the pantographs
+  /// (fe_modal.hpp; `solver: modal` in models/catenary-fe.yaml) or the direct solve of the whole
+  /// line (the reference; the default of a file without `solver`, so that older files keep their results).
+  enum class Solver { Modal, Direct } solver = Solver::Direct;
+  double modal_cutoff = 100; ///< Hz, highest natural frequency kept (droppers taut)
+  int window_behind = 2;     ///< spans of the window behind the rearmost pantograph's span; −1: the whole line
+  int window_ahead = 3;      ///< spans ahead of the leading pantograph's span; −1: the whole line
   int section_first = -1, section_last = -1;  ///< analysis section: spans first..last (1-based); −1: default
   /// InvalidArgument naming the offending value.
   void validate() const;
@@ -151,6 +158,27 @@ class FeLine {
   friend class FeIntegrator;
 };
 
+/// The structural solver of one run on the line (a workspace, one per run): the direct HHT-α solve
+/// of the whole line (FeIntegrator) or the modal solve of a moving window (FeModalSolver). Heights
+/// are absolute; x along the line.
+struct FeLoad;
+class FeLineSolver {
+ public:
+  virtual ~FeLineSolver() = default;
+  virtual double dt() const = 0;
+  virtual double time() const = 0;
+  /// At rest in the static equilibrium under upward forces F_k at x_k, at time t.
+  virtual void start(const std::vector<double>& x, const std::vector<double>& F, double t) = 0;
+  /// One step to time() + dt() with the loads at its end; `forces`: the upward force of each load.
+  virtual void step(const std::vector<FeLoad>& loads, std::vector<double>& forces) = 0;
+  virtual double height(double x) const = 0;                     ///< contact wire at x, m
+  virtual double height_rate(double x, double speed) const = 0;  ///< at the point moving with speed, m/s
+  virtual double uplift(double x) const = 0;                     ///< contact wire at x from its static state, m
+  virtual std::vector<double> support_uplift() const = 0;        ///< contact wire at each interior mast, m
+  /// Kinetic + elastic energy relative to the static state (slack droppers' springs removed), J.
+  virtual double energy() const = 0;
+};
+
 /// A load on the contact wire at x for one step: either a prescribed upward force, or a penalty
 /// contact with a head whose height and vertical velocity at the end of the step are given
 /// (absolute heights: the wire at x is at static_height(x) + N(x)ᵀu).
@@ -202,7 +230,9 @@ class FeIntegrator {
   double c0_, c1_, c2_, c3_, c4_, c5_;
   int kd_ = 0;                ///< half bandwidth of A
   std::vector<double> band_;  ///< Cholesky factor of A, LAPACK lower band storage
-  Eigen::SparseMatrix<double, Eigen::RowMajor> Mw_, Kw_;  // row-major: the products gather (faster than a scatter)
+  std::vector<double> rdiag_;  ///< 1 / its diagonal
+  std::vector<double> mk_band_;  ///< M and (1+α) b K₀, lower band storage interleaved per column
+  void band_products(const Eigen::VectorXd& w, const Eigen::VectorXd& v, Eigen::VectorXd& r) const;  ///< r = M w + Kb v
   std::vector<Eigen::VectorXd> contact_z_, dropper_z_;
   std::vector<int> slot_of_;  ///< per DOF: cache slot or −1
   std::vector<Eigen::VectorXd> cache_;
@@ -247,12 +277,20 @@ class FeCatenary final : public Catenary {
   double line_length() const override { return line_->length(); }
   Section section() const override;
   std::shared_ptr<const Catenary> mean() const override;
+  /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep
+  /// or a study decomposes a window once); nullptr with solver: direct.
+  std::shared_ptr<const class FeModalLine> modal() const { return modal_; }
+  void prepare(const std::vector<PantographOnLine>& pantographs) const override;
 
  protected:
   std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs, double speed) const override;
 
  private:
   std::shared_ptr<const FeLine> line_;
+  std::shared_ptr<const class FeModalLine> modal_;
 };
+
+/// The direct solve of the whole line (FeIntegrator) as a run's solver.
+std::unique_ptr<FeLineSolver> make_direct_solver(const FeLine& line);
 
 }  // namespace inerta::catenary

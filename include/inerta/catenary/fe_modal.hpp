@@ -1,0 +1,117 @@
+#pragma once
+// Modal solve of the finite-element line (spec/05 §5.3; docs/catenary-fe.md "Modal solver").
+//
+// A run sees a window of whole spans around its pantographs: `window_behind` spans behind the
+// rearmost pantograph's span and `window_ahead` spans ahead of the leading one's. At a window end
+// that is not the line's own end, each wire ends on a dashpot sqrt(T ρA) (the impedance of a
+// tensioned string: waves leave the window rather than reflect; a local force like the contacts). In the window, u = Φ q with Φ the M-orthonormal modes of
+// (K₀, M) (droppers taut) below `modal_cutoff`, each mode a damped oscillator
+//   q̈_i + (a + b ω_i²) q̇_i + ω_i² q_i = φ_iᵀ f       (Rayleigh C = a M + b K₀)
+// stepped by the same HHT-α formulas as the direct solve (with every mode kept, the two agree to
+// round-off). The local forces — penalty contacts (shape N(x)) and slack droppers (b = e_m − e_c,
+// the taut dropper's force (T₀ + k bᵀu) removed) — are rank-one terms solved exactly in the modal
+// space by the Woodbury identity, within the same active-set iteration as the direct solve, and
+// the modes left out act on them quasi-statically through the residual flexibility
+//   R(w_a, w_b) = w_aᵀ (K₀⁻¹ − Φ Ω⁻² Φᵀ) w_b
+// (K₀⁻¹ columns by the window's band Cholesky), so that the static response to them is exact.
+// When the pantographs enter a new span the window moves on by a span: the state on the spans both
+// windows share is carried over (q' = Φ'ᵀ M' u), the span left behind is dropped, the one ahead
+// starts at rest. The work of a step does not depend on the length of the line.
+//
+// Modes: spectrum slicing with shift-invert Lanczos (Spectra) on the band matrices, the number of
+// eigenvalues in each slice known beforehand from the inertia of K₀ − σM (Sylvester), slices in
+// parallel. Windows of the same shape and matrices (every interior window of a uniform line) share
+// one decomposition.
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "inerta/catenary/fe_catenary.hpp"
+
+namespace inerta::catenary {
+
+/// Modes of the generalised problem K φ = ω² M φ with ω/2π < cutoff_hz (K, M symmetric, K positive
+/// definite), M-orthonormal, ascending. NumericalError if the slices do not account for every
+/// eigenvalue the inertia counts.
+struct Modes {
+  Eigen::VectorXd omega2;  ///< ω², (rad/s)²
+  Eigen::MatrixXd phi;     ///< n × m
+};
+Modes lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz);
+
+/// The band of K⁻¹ (entries |i − j| <= kd) of a symmetric positive definite band matrix, from its
+/// band Cholesky factor (Takahashi's recurrence Lᵀ Z = L⁻¹).
+struct BandInverse {
+  int n = 0, kd = 0;
+  std::vector<double> z;  ///< (kd + 1) × n: z[(i − j) + j (kd + 1)] = Z(i, j), i >= j
+  double operator()(int i, int j) const;  ///< |i − j| <= kd
+};
+
+/// One window shape: its matrices, modes, the band Cholesky factor of K₀ and what the residual
+/// flexibility needs: K₀⁻¹ within the band and its columns at the "special" DOFs (each dropper's
+/// messenger and contact-wire ends, then the absorbing ends).
+struct FeWindowModes {
+  Eigen::SparseMatrix<double> M, K;
+  Eigen::VectorXd omega2;  ///< m
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> phi;  ///< n_w × m, a DOF a row
+  int kd = 0;                    ///< half bandwidth of K
+  std::vector<double> cholesky;  ///< K = L Lᵀ, LAPACK lower band storage
+  BandInverse band;              ///< K⁻¹ within the band
+  std::vector<int> special;      ///< local DOFs
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> kinv_special;  ///< n_w × special: K⁻¹ columns
+  void solve_K(Eigen::VectorXd& b) const;  ///< b ← K⁻¹ b
+};
+
+/// A window of the line: spans [first_span, first_span + spans), its free DOFs (global, ascending)
+/// and the modes of its shape.
+struct FeWindow {
+  int first_span = 0, spans = 0, first_node = 0, last_node = 0;
+  std::vector<int> dofs;
+  /// Absorbing ends: at a window end that is not the line's own end, a dashpot sqrt(T ρA) on each
+  /// wire's w (a tensioned string's impedance: a wave leaves the window instead of being reflected).
+  struct End {
+    int local;
+    double damping;  ///< N·s/m
+  };
+  std::vector<End> ends;
+  std::vector<int> droppers;  ///< the line's droppers in the window, in order
+  std::shared_ptr<const FeWindowModes> modes;
+  int local(int global) const;  ///< index in dofs, −1 if not in the window (held or outside)
+};
+
+/// The modal data of one FeLine: the windows' decompositions, made when first asked for and kept
+/// (thread-safe). Immutable for its users.
+class FeModalLine {
+ public:
+  explicit FeModalLine(std::shared_ptr<const FeLine> line);
+  const FeLine& line() const { return *line_; }
+  /// Spans of a window for pantographs spread over `spread` m (the whole line at most).
+  int window_spans(double spread) const;
+  /// The window of `spans` spans starting at first_span (decomposed on first use).
+  std::shared_ptr<const FeWindow> window(int first_span, int spans) const;
+  /// Every window of `spans` spans, the distinct shapes decomposed in parallel (a run calls it first).
+  void prepare(int spans) const;
+  int mast_node(int mast) const { return mast_node_[static_cast<std::size_t>(mast)]; }
+  int decompositions() const;  ///< distinct window shapes decomposed so far
+
+ private:
+  std::shared_ptr<const FeLine> line_;
+  std::vector<int> mast_node_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::pair<int, int>, std::shared_ptr<const FeWindow>> windows_;
+  mutable std::vector<std::shared_ptr<const FeWindowModes>> shapes_;
+  std::shared_ptr<FeWindow> structure(int first_span, int spans, Eigen::SparseMatrix<double>& K,
+                                      Eigen::SparseMatrix<double>& M) const;
+  std::shared_ptr<const FeWindowModes> decompose(const FeWindow& w, Eigen::SparseMatrix<double> K,
+                                                 Eigen::SparseMatrix<double> M) const;
+  std::shared_ptr<const FeWindowModes> find_shape(const Eigen::SparseMatrix<double>& K,
+                                                  const Eigen::SparseMatrix<double>& M) const;
+};
+
+/// The modal solve of a run (header comment).
+std::unique_ptr<FeLineSolver> make_modal_solver(std::shared_ptr<const FeModalLine> modal, double spread);
+
+}  // namespace inerta::catenary

@@ -1,0 +1,838 @@
+// Modal solve of the finite-element line (catenary/fe_modal.hpp, spec/05 §5.3).
+#include "inerta/catenary/fe_modal.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <Spectra/SymGEigsShiftSolver.h>
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <numbers>
+
+#include "inerta/error.hpp"
+
+namespace inerta::catenary {
+
+extern "C" {
+void dpbtrf_(const char* uplo, const int* n, const int* kd, double* ab, const int* ldab, int* info);
+}
+
+namespace {
+
+using Sparse = Eigen::SparseMatrix<double>;
+using Ldlt = Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>>;
+
+// (K − σM)⁻¹ for Spectra's shift-invert mode: sparse LDLᵀ in the band's own order.
+class ShiftInvert {
+ public:
+  using Scalar = double;
+  ShiftInvert(const Sparse& K, const Sparse& M) : K_(K), M_(M) {}
+  Eigen::Index rows() const { return K_.rows(); }
+  Eigen::Index cols() const { return K_.cols(); }
+  void set_shift(double sigma) {
+    ldlt_.compute(Sparse(K_ - sigma * M_));
+    if (ldlt_.info() != Eigen::Success)
+      throw NumericalError(fmt::format("finite-element modes: K − σM is singular at σ = {:.6g}", sigma));
+  }
+  void perform_op(const double* x, double* y) const {
+    Eigen::Map<const Eigen::VectorXd> in(x, rows());
+    Eigen::Map<Eigen::VectorXd>(y, rows()) = ldlt_.solve(in);
+  }
+
+ private:
+  const Sparse &K_, &M_;
+  Ldlt ldlt_;
+};
+
+class MassProduct {
+ public:
+  using Scalar = double;
+  explicit MassProduct(const Sparse& M) : M_(M) {}
+  Eigen::Index rows() const { return M_.rows(); }
+  Eigen::Index cols() const { return M_.cols(); }
+  void perform_op(const double* x, double* y) const {
+    Eigen::Map<const Eigen::VectorXd> in(x, rows());
+    Eigen::Map<Eigen::VectorXd>(y, rows()).noalias() = M_ * in;
+  }
+
+ private:
+  const Sparse& M_;
+};
+
+// Eigenvalues of (K, M) below λ (Sylvester's law of inertia: negative pivots of K − λM = LDLᵀ).
+int count_below(const Sparse& K, const Sparse& M, double lambda) {
+  Ldlt f(Sparse(K - lambda * M));
+  if (f.info() != Eigen::Success)
+    throw NumericalError(fmt::format("finite-element modes: K − λM is singular at λ = {:.6g}", lambda));
+  return static_cast<int>((f.vectorD().array() < 0).count());
+}
+
+constexpr int kSliceModes = 24;  // eigenvalues a slice: Lanczos work grows with the square of it
+
+}  // namespace
+
+Modes lowest_modes(const Sparse& K, const Sparse& M, double cutoff_hz) {
+  const int n = static_cast<int>(K.rows());
+  const double w_max = 2 * std::numbers::pi * cutoff_hz, lambda_max = w_max * w_max;
+  const int m = count_below(K, M, lambda_max);
+  Modes out;
+  if (m == 0) {
+    out.omega2.resize(0);
+    out.phi.resize(n, 0);
+    return out;
+  }
+  if (n <= 200) {  // small: dense
+    const Eigen::MatrixXd Kd(K), Md(M);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Kd, Md);
+    out.omega2 = es.eigenvalues().head(m);
+    out.phi = es.eigenvectors().leftCols(m);
+    return out;
+  }
+  // Slices uniform in ω (a wire's modes are about evenly spaced in frequency), each with its count.
+  const int S = std::max(1, (m + kSliceModes - 1) / kSliceModes);
+  std::vector<double> edge(static_cast<std::size_t>(S) + 1);
+  std::vector<int> below(static_cast<std::size_t>(S) + 1);
+  for (int k = 0; k <= S; ++k) edge[static_cast<std::size_t>(k)] = lambda_max * (double(k) / S) * (double(k) / S);
+  below[0] = 0;
+  below[static_cast<std::size_t>(S)] = m;
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(1, S, [&](int k) { below[static_cast<std::size_t>(k)] = count_below(K, M, edge[static_cast<std::size_t>(k)]); });
+  });
+  std::vector<Eigen::VectorXd> vals(static_cast<std::size_t>(S));
+  std::vector<Eigen::MatrixXd> vecs(static_cast<std::size_t>(S));
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(0, S, [&](int k) {
+      const std::size_t s = static_cast<std::size_t>(k);
+      const int want = below[s + 1] - below[s];
+      if (want == 0) return;
+      const double lo = edge[s], hi = edge[s + 1], sigma = 0.5 * (lo + hi);
+      ShiftInvert op(K, M);
+      MassProduct bop(M);
+      // The `want` eigenvalues nearest σ are those of [lo, hi); ask for a few more, keep those inside.
+      const int nev = std::min(n - 2, want + 2);
+      const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+      Spectra::SymGEigsShiftSolver<ShiftInvert, MassProduct, Spectra::GEigsMode::ShiftInvert> es(op, bop, nev, ncv, sigma);
+      es.init();
+      es.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
+      if (es.info() != Spectra::CompInfo::Successful)
+        throw NumericalError(fmt::format(
+            "finite-element modes: the Lanczos iteration did not converge between {:.4g} and {:.4g} Hz",
+            std::sqrt(lo) / (2 * std::numbers::pi), std::sqrt(hi) / (2 * std::numbers::pi)));
+      const Eigen::VectorXd ev = es.eigenvalues();
+      const Eigen::MatrixXd V = es.eigenvectors();
+      std::vector<Eigen::Index> keep;
+      for (Eigen::Index i = 0; i < ev.size(); ++i)
+        if (ev[i] >= lo && ev[i] < hi) keep.push_back(i);
+      if (static_cast<int>(keep.size()) != want)
+        throw NumericalError(fmt::format(
+            "finite-element modes: found {} of the {} modes between {:.4g} and {:.4g} Hz (a cluster at a slice's edge?)",
+            keep.size(), want, std::sqrt(lo) / (2 * std::numbers::pi), std::sqrt(hi) / (2 * std::numbers::pi)));
+      vals[s].resize(want);
+      vecs[s].resize(n, want);
+      for (int i = 0; i < want; ++i) vals[s][i] = ev[keep[static_cast<std::size_t>(i)]], vecs[s].col(i) = V.col(keep[static_cast<std::size_t>(i)]);
+    });
+  });
+  out.omega2.resize(m);
+  out.phi.resize(n, m);
+  std::vector<std::pair<double, std::pair<int, int>>> order;
+  for (int s = 0; s < S; ++s)
+    for (Eigen::Index i = 0; i < vals[static_cast<std::size_t>(s)].size(); ++i)
+      order.push_back({vals[static_cast<std::size_t>(s)][i], {s, static_cast<int>(i)}});
+  std::sort(order.begin(), order.end());
+  for (int j = 0; j < m; ++j) {
+    const auto [s, i] = order[static_cast<std::size_t>(j)].second;
+    out.omega2[j] = order[static_cast<std::size_t>(j)].first;
+    out.phi.col(j) = vecs[static_cast<std::size_t>(s)].col(i);
+  }
+  return out;
+}
+
+void FeWindowModes::solve_K(Eigen::VectorXd& b) const {
+  const int n = static_cast<int>(b.size()), ld = kd + 1;
+  const double* ab = cholesky.data();
+  double* x = b.data();
+  for (int j = 0; j < n; ++j) {
+    const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
+    const double xj = x[j] / c[0];
+    x[j] = xj;
+    const int m = std::min(kd, n - 1 - j);
+    for (int i = 1; i <= m; ++i) x[j + i] -= c[i] * xj;
+  }
+  for (int j = n - 1; j >= 0; --j) {
+    const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
+    double s = x[j];
+    const int m = std::min(kd, n - 1 - j);
+    for (int i = 1; i <= m; ++i) s -= c[i] * x[j + i];
+    x[j] = s / c[0];
+  }
+}
+
+int FeWindow::local(int global) const {
+  const auto it = std::lower_bound(dofs.begin(), dofs.end(), global);
+  return it != dofs.end() && *it == global ? static_cast<int>(it - dofs.begin()) : -1;
+}
+
+FeModalLine::FeModalLine(std::shared_ptr<const FeLine> line) : line_(std::move(line)) {
+  const FeCatenaryData& d = line_->data();
+  if (!(d.modal_cutoff > 0) || !std::isfinite(d.modal_cutoff))
+    throw InvalidArgument("finite-element catenary: solver", "cutoff", fmt::format("must be > 0 Hz, got {}", d.modal_cutoff));
+  const std::vector<double>& x = line_->node_x();
+  for (int s = 0; s <= d.spans; ++s) {
+    const auto it = std::lower_bound(x.begin(), x.end(), s * d.span - 1e-9);
+    mast_node_.push_back(static_cast<int>(it - x.begin()));
+  }
+}
+
+int FeModalLine::window_spans(double spread) const {
+  const FeCatenaryData& d = line_->data();
+  if (d.window_behind < 0 || d.window_ahead < 0) return d.spans;
+  const int extra = static_cast<int>(std::ceil(spread / d.span - 1e-9));
+  return std::min(d.spans, d.window_behind + 1 + d.window_ahead + extra);
+}
+
+int FeModalLine::decompositions() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return static_cast<int>(shapes_.size());
+}
+
+// Takahashi: Lᵀ Z = L⁻¹ row by row from the last, within the band (K = L Lᵀ).
+BandInverse band_inverse(const std::vector<double>& L, int n, int kd) {
+  BandInverse Z;
+  Z.n = n, Z.kd = kd;
+  const int ld = kd + 1;
+  Z.z.assign(L.size(), 0.0);
+  auto l = [&](int i, int j) { return L[static_cast<std::size_t>(i - j) + static_cast<std::size_t>(j) * ld]; };
+  for (int j = n - 1; j >= 0; --j) {
+    const int last = std::min(n - 1, j + kd);
+    for (int i = last; i >= j; --i) {
+      double s = i == j ? 1 / l(j, j) : 0.0;
+      for (int k = j + 1; k <= last; ++k) s -= l(k, j) * Z(k, i);
+      Z.z[static_cast<std::size_t>(i - j) + static_cast<std::size_t>(j) * ld] = s / l(j, j);
+    }
+  }
+  return Z;
+}
+
+double BandInverse::operator()(int i, int j) const {
+  if (i < j) std::swap(i, j);
+  return z[static_cast<std::size_t>(i - j) + static_cast<std::size_t>(j) * (kd + 1)];
+}
+
+std::shared_ptr<FeWindow> FeModalLine::structure(int first_span, int spans, Sparse& K, Sparse& M) const {
+  const FeLine& L = *line_;
+  auto w = std::make_shared<FeWindow>();
+  w->first_span = first_span, w->spans = spans;
+  w->first_node = mast_node(first_span), w->last_node = mast_node(first_span + spans);
+  for (int node = w->first_node; node <= w->last_node; ++node)
+    for (int wire = 0; wire < 2; ++wire)
+      for (int c = 0; c < 2; ++c)
+        if (const int g = L.dof(wire, node, c); g >= 0) w->dofs.push_back(g);
+  std::sort(w->dofs.begin(), w->dofs.end());
+  const FeWire* wires[2] = {&L.data().messenger, &L.data().contact_wire};
+  for (int node : {w->first_node, w->last_node})
+    for (int wire = 0; wire < 2; ++wire)
+      if (const int g = L.dof(wire, node, 0); g >= 0 && node != 0 && node != L.n_nodes() - 1)
+        w->ends.push_back({w->local(g), std::sqrt(wires[wire]->tension * wires[wire]->mass_per_length)});
+  const double x0 = first_span * L.data().span, x1 = (first_span + spans) * L.data().span;
+  for (std::size_t k = 0; k < L.droppers().size(); ++k)
+    if (L.droppers()[k].x > x0 && L.droppers()[k].x < x1) w->droppers.push_back(static_cast<int>(k));
+  const int n = static_cast<int>(w->dofs.size());
+  auto sub = [&](const Sparse& A) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int j = 0; j < n; ++j)
+      for (Sparse::InnerIterator it(A, w->dofs[static_cast<std::size_t>(j)]); it; ++it)
+        if (const int i = w->local(static_cast<int>(it.row())); i >= 0) t.emplace_back(i, j, it.value());
+    Sparse S(n, n);
+    S.setFromTriplets(t.begin(), t.end());
+    return S;
+  };
+  K = sub(L.K()), M = sub(L.M());
+  return w;
+}
+
+namespace {
+// A window of the same shape and matrices (to 1e-6 of the largest entry: the interior spans of a
+// uniform line, whose form-found droppers differ by ~1e-9) shares its modes.
+bool same(const Sparse& a, const Sparse& b) {
+  if (a.rows() != b.rows() || a.nonZeros() != b.nonZeros()) return false;
+  const double tol = 1e-6 * std::max(1.0, Eigen::Map<const Eigen::VectorXd>(a.valuePtr(), a.nonZeros()).cwiseAbs().maxCoeff());
+  return (Sparse(a - b)).norm() <= tol * std::sqrt(double(a.nonZeros()));
+}
+}  // namespace
+
+std::shared_ptr<const FeWindowModes> FeModalLine::find_shape(const Sparse& K, const Sparse& M) const {
+  for (const auto& s : shapes_)
+    if (same(s->K, K) && same(s->M, M)) return s;
+  return nullptr;
+}
+
+std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, Sparse K, Sparse M) const {
+  const FeLine& L = *line_;
+  const int n = static_cast<int>(K.rows());
+  auto md = std::make_shared<FeWindowModes>();
+  Modes modes = lowest_modes(K, M, L.data().modal_cutoff);
+  md->omega2 = modes.omega2;
+  md->phi = modes.phi;
+  // K's band Cholesky factor, the band of K⁻¹ and its columns at the special DOFs (residual flexibility).
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (Sparse::InnerIterator it(K, j); it; ++it) md->kd = std::max(md->kd, static_cast<int>(it.row()) - j);
+  const int ld = md->kd + 1;
+  md->cholesky.assign(static_cast<std::size_t>(ld) * static_cast<std::size_t>(n), 0.0);
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (Sparse::InnerIterator it(K, j); it; ++it)
+      if (it.row() >= j) md->cholesky[static_cast<std::size_t>(it.row() - j) + static_cast<std::size_t>(j) * ld] = it.value();
+  int info = 0;
+  if (n > 0) dpbtrf_("L", &n, &md->kd, md->cholesky.data(), &ld, &info);
+  if (info != 0)
+    throw NumericalError(fmt::format("finite-element modes: K₀ of a window is not positive definite (LAPACK dpbtrf {})", info));
+  md->band = band_inverse(md->cholesky, n, md->kd);
+  for (int k : w.droppers) {
+    const auto& dr = L.droppers()[static_cast<std::size_t>(k)];
+    md->special.push_back(w.local(dr.dof_m));
+    md->special.push_back(w.local(dr.dof_c));
+  }
+  for (const FeWindow::End& e : w.ends) md->special.push_back(e.local);
+  md->kinv_special.resize(n, static_cast<Eigen::Index>(md->special.size()));
+  Eigen::VectorXd c;
+  for (std::size_t j = 0; j < md->special.size(); ++j) {
+    c.setZero(n);
+    c[md->special[j]] = 1;
+    md->solve_K(c);
+    md->kinv_special.col(static_cast<Eigen::Index>(j)) = c;
+  }
+  md->K = std::move(K), md->M = std::move(M);
+  return md;
+}
+
+std::shared_ptr<const FeWindow> FeModalLine::window(int first_span, int spans) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (auto it = windows_.find({first_span, spans}); it != windows_.end()) return it->second;
+  Sparse K, M;
+  std::shared_ptr<FeWindow> w = structure(first_span, spans, K, M);
+  w->modes = find_shape(K, M);
+  if (!w->modes) {
+    tbb::this_task_arena::isolate([&] { w->modes = decompose(*w, std::move(K), std::move(M)); });
+    shapes_.push_back(w->modes);
+  }
+  windows_[{first_span, spans}] = w;
+  return w;
+}
+
+void FeModalLine::prepare(int spans) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  struct New {
+    std::shared_ptr<FeWindow> w;
+    Sparse K, M;
+    int shape = -1;  // index into `todo`
+  };
+  std::vector<New> fresh;
+  std::vector<std::size_t> todo;  // entries of `fresh` whose shape is decomposed here
+  for (int first = 0; first + spans <= line_->data().spans; ++first) {
+    if (windows_.count({first, spans})) continue;
+    New nw;
+    nw.w = structure(first, spans, nw.K, nw.M);
+    nw.w->modes = find_shape(nw.K, nw.M);
+    if (!nw.w->modes)
+      for (std::size_t t = 0; t < todo.size() && nw.shape < 0; ++t)
+        if (same(fresh[todo[t]].K, nw.K) && same(fresh[todo[t]].M, nw.M)) nw.shape = static_cast<int>(t);
+    if (!nw.w->modes && nw.shape < 0) nw.shape = static_cast<int>(todo.size()), todo.push_back(fresh.size());
+    fresh.push_back(std::move(nw));
+  }
+  std::vector<std::shared_ptr<const FeWindowModes>> made(todo.size());
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
+      const New& o = fresh[todo[t]];
+      made[t] = decompose(*o.w, o.K, o.M);
+    });
+  });
+  shapes_.insert(shapes_.end(), made.begin(), made.end());
+  for (New& nw : fresh) {
+    if (!nw.w->modes) nw.w->modes = made[static_cast<std::size_t>(nw.shape)];
+    windows_[{nw.w->first_span, spans}] = nw.w;
+  }
+}
+
+namespace {
+
+// The modal solve of one run: the current window and the modal state in it.
+class ModalSolver final : public FeLineSolver {
+ public:
+  ModalSolver(std::shared_ptr<const FeModalLine> modal, double spread)
+      : ml_(std::move(modal)), L_(ml_->line()), W_(ml_->window_spans(spread)) {
+    const FeCatenaryData& d = L_.data();
+    h_ = d.time_step, alpha_ = d.hht_alpha;
+    if (!(h_ > 0) || !std::isfinite(h_)) throw InvalidArgument("finite-element catenary", "time_step", "must be > 0 (s)");
+    if (!(alpha_ >= -1.0 / 3.0 && alpha_ <= 0))
+      throw InvalidArgument("finite-element catenary", "alpha", fmt::format("HHT-α needs −1/3 <= α <= 0, got {}", alpha_));
+    gamma_ = 0.5 - alpha_;
+    beta_ = 0.25 * (1 - alpha_) * (1 - alpha_);
+    c0_ = 1 / (beta_ * h_ * h_), c1_ = gamma_ / (beta_ * h_), c2_ = 1 / (beta_ * h_);
+    c3_ = 1 / (2 * beta_) - 1, c4_ = gamma_ / beta_ - 1, c5_ = h_ * (gamma_ / (2 * beta_) - 1);
+    slack_.assign(L_.droppers().size(), 0);
+    if (W_ < L_.data().spans) ml_->prepare(W_);
+  }
+  double dt() const override { return h_; }
+  double time() const override { return t_; }
+
+  void start(const std::vector<double>& x, const std::vector<double>& F, double t) override {
+    t_ = t;
+    std::vector<char> slack;
+    const Eigen::VectorXd u = L_.static_displacement(x, F, &slack);
+    enter(first_span_for(x));
+    // In equilibrium: q = Ω⁻² Φᵀ f under the contact forces and the slack droppers' corrections;
+    // the modes left out give the residual displacement at the contact points.
+    const auto& md = *win_->modes;
+    std::fill(slack_.begin(), slack_.end(), 0);
+    mods_.clear();
+    for (std::size_t k = 0; k < x.size(); ++k) mods_.push_back(contact_mod(L_.contact_shape(x[k]), 0, F[k]));
+    const auto& drs = L_.droppers();
+    for (int k : droppers_)
+      if (slack[static_cast<std::size_t>(k)]) {
+        const auto& dr = drs[static_cast<std::size_t>(k)];
+        slack_[static_cast<std::size_t>(k)] = 1;
+        const int j = static_cast<int>(std::find(droppers_.begin(), droppers_.end(), k) - droppers_.begin());
+        mods_.push_back(special_mod(2 * j, 2 * j + 1, 0, dr.tension + dr.stiffness * (u[dr.dof_m] - u[dr.dof_c])));
+      }
+    q_.setZero(md.omega2.size());
+    for (const Mod& m : mods_) q_ += m.coeff * m.pw;  // coeff: the force here
+    qd_.setZero(q_.size()), qdd_.setZero(q_.size()), qi_.setZero(q_.size());
+    last_x_ = x;
+    last_F_ = F;
+    last_res_.assign(x.size(), 0.0);
+    for (std::size_t k = 0; k < x.size(); ++k)
+      for (const Mod& m : mods_) last_res_[k] += residual(mods_[k], m) * m.coeff;
+  }
+
+  // One step. The set of rank-one terms: active contacts (changing every step) and the special
+  // terms, absorbing ends (always) and slack droppers; everything the active-set passes need of the
+  // special terms is precomputed per window (enter), so a pass costs O(droppers × set), not O(modes).
+  void step(const std::vector<FeLoad>& loads, std::vector<double>& forces) override {
+    const double t1 = t_ + h_, ap = 1 + alpha_;
+    xs_.clear();
+    for (const FeLoad& ld : loads) xs_.push_back(ld.x);
+    if (const int first = first_span_for(xs_); first != win_->first_span) move_to(first);
+    const auto& md = *win_->modes;
+    const std::size_t nd = droppers_.size(), ns = smods_.size();
+    // Right-hand side and the diagonal step matrix, a mode each.
+    w1_ = c0_ * q_ + c2_ * qd_ + c3_ * qdd_;
+    vt_ = c1_ * q_ + c4_ * qd_ + c5_ * qdd_;
+    r_ = w1_ + ap * damp_.cwiseProduct(vt_);
+    if (alpha_ != 0) r_ += alpha_ * qi_;
+    forces.assign(loads.size(), 0.0);
+    contacts_.clear();
+    mods_.clear();
+    prescribed_.clear();
+    for (std::size_t k = 0; k < loads.size(); ++k) {
+      const FeLoad& ld = loads[k];
+      const FeLine::Shape sh = L_.contact_shape(ld.x);
+      if (!ld.penalty) {
+        prescribed_.push_back({contact_mod(sh, 0, 0), ld.force});
+        r_ += (ap * ld.force) * prescribed_.back().first.p;
+        forces[k] = ld.force;
+        continue;
+      }
+      double Nvt = 0, w_x = 0;
+      for (int a = 0; a < 4; ++a)
+        if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) {
+          Nvt += sh.N[a] * md.phi.row(l).dot(vt_);
+          w_x += sh.dN[a] * md.phi.row(l).dot(q_);
+        }
+      const double conv = ld.speed * (L_.static_slope(ld.x) + w_x);
+      const double fh = ld.stiffness * (ld.head_y - L_.static_height(ld.x)) + ld.damping * (ld.head_v - conv + Nvt);
+      const double kc = ld.stiffness + ld.damping * c1_;
+      contacts_.push_back({static_cast<int>(k), kc, fh});
+      mods_.push_back(contact_mod(sh, ap * kc, ap * fh));
+    }
+    const std::size_t nc = mods_.size();
+    if (active_.size() != nc) active_.assign(nc, 1);
+    contact_w_.assign(nc, 0.0);
+    for (std::size_t e = 0; e < win_->ends.size(); ++e)  // the dashpots: F = −c v = c vt − c c1 u
+      smods_[nd + e].coeff = ap * win_->ends[e].damping * md.phi.row(win_->ends[e].local).dot(vt_);
+    x0_ = r_.cwiseQuotient(A_);
+    // Displacements without the set (Wx0: contacts, then specials; D0: droppers), the prescribed
+    // forces' residual included.
+    const Eigen::Index N = static_cast<Eigen::Index>(nc + ns);
+    wx0_.resize(N);
+    // The droppers' rows with x0 and with each contact's A⁻¹p − Ω⁻²p/(1+α) (the step's largest cost:
+    // droppers × modes).
+    const Eigen::Index m = A_.size();
+    xz_.resize(m, static_cast<Eigen::Index>(1 + nc));
+    xz_.col(0) = x0_;
+    for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(1 + c)) = mods_[c].p.cwiseQuotient(A_) - mods_[c].pw / ap;
+    dxz_.resize(static_cast<Eigen::Index>(nd), xz_.cols());
+    for (Eigen::Index k = 0; k < xz_.cols(); ++k) dxz_.col(k).noalias() = dropper_p_ * xz_.col(k);
+    d0_ = dxz_.col(0);
+    for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] = mods_[c].p.dot(x0_);
+    for (std::size_t j = 0; j < nd; ++j) wx0_[static_cast<Eigen::Index>(nc + j)] = d0_[static_cast<Eigen::Index>(j)];
+    for (std::size_t e = 0; e < win_->ends.size(); ++e) wx0_[static_cast<Eigen::Index>(nc + nd + e)] = smods_[nd + e].p.dot(x0_);
+    for (const auto& [f, F] : prescribed_) {
+      for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] += residual(mods_[c], f) * F;
+      for (std::size_t s2 = 0; s2 < ns; ++s2) wx0_[static_cast<Eigen::Index>(nc + s2)] += residual(smods_[s2], f) * F;
+      d0_ += residual_droppers(f) * F;
+    }
+    // Coupling of each contact with everything: G(c, ·) and its effect on the droppers.
+    gc_.resize(N, static_cast<Eigen::Index>(nc));
+    dwc_.resize(static_cast<Eigen::Index>(nd), static_cast<Eigen::Index>(nc));
+    for (std::size_t c = 0; c < nc; ++c) {
+      const Mod& mc = mods_[c];
+      const auto zc = xz_.col(static_cast<Eigen::Index>(1 + c));  // Z part and the modal part of the residual
+      Eigen::VectorXd col(N);
+      for (std::size_t c2 = 0; c2 < nc; ++c2) col[static_cast<Eigen::Index>(c2)] = mods_[c2].p.dot(mc.p.cwiseQuotient(A_)) + residual(mods_[c2], mc) / ap;
+      const auto dz = dxz_.col(static_cast<Eigen::Index>(1 + c));
+      for (std::size_t j = 0; j < nd; ++j)
+        col[static_cast<Eigen::Index>(nc + j)] = dz[static_cast<Eigen::Index>(j)] + (mc.ks[static_cast<Eigen::Index>(2 * j)] - mc.ks[static_cast<Eigen::Index>(2 * j + 1)]) / ap;
+      for (std::size_t e = 0; e < win_->ends.size(); ++e)
+        col[static_cast<Eigen::Index>(nc + nd + e)] = smods_[nd + e].p.dot(zc) + mc.ks[static_cast<Eigen::Index>(2 * nd + e)] / ap;
+      gc_.col(static_cast<Eigen::Index>(c)) = col;
+      dwc_.col(static_cast<Eigen::Index>(c)) = col.segment(static_cast<Eigen::Index>(nc), static_cast<Eigen::Index>(nd));
+    }
+    const auto& drs = L_.droppers();
+    for (int pass = 0;; ++pass) {
+      if (pass > 60)
+        throw NumericalError(fmt::format(
+            "finite-element catenary (modal): t = {:.6g} s: the set of slack droppers and open contacts does not "
+            "settle in 60 passes (a dropper or contact chattering; try a smaller time step)",
+            t1));
+      // The set, as indices into [contacts, specials].
+      set_.clear();
+      for (std::size_t c = 0; c < nc; ++c)
+        if (active_[c]) set_.push_back(static_cast<int>(c));
+      for (std::size_t e = 0; e < win_->ends.size(); ++e) set_.push_back(static_cast<int>(nc + nd + e));
+      for (std::size_t j = 0; j < nd; ++j)
+        if (slack_[static_cast<std::size_t>(droppers_[j])]) set_.push_back(static_cast<int>(nc + j));
+      const Eigen::Index r = static_cast<Eigen::Index>(set_.size());
+      auto G = [&](int i, int j) {  // G between entries of [contacts, specials]
+        if (j < static_cast<int>(nc)) return gc_(i, j);
+        if (i < static_cast<int>(nc)) return gc_(j, i);
+        return gs_(i - static_cast<int>(nc), j - static_cast<int>(nc));
+      };
+      coef_.resize(r);
+      if (r > 0) {
+        Eigen::VectorXd sv(r), Wx0(r);
+        Eigen::MatrixXd Gm(r, r), cap(r, r);
+        for (Eigen::Index i = 0; i < r; ++i) {
+          const int si = set_[static_cast<std::size_t>(i)];
+          const Mod& mi = si < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(si)] : smods_[static_cast<std::size_t>(si) - nc];
+          sv[i] = mi.coeff;
+          Wx0[i] = wx0_[si];
+          for (Eigen::Index j = 0; j < r; ++j) Gm(i, j) = G(si, set_[static_cast<std::size_t>(j)]);
+          cap.row(i) = Gm.row(i);
+          cap(i, i) += 1 / mi.d;
+        }
+        coef_ = sv - cap.partialPivLu().solve(Wx0 + Gm * sv);
+      }
+      bool changed = false;
+      for (std::size_t c = 0; c < nc; ++c) {
+        double w = wx0_[static_cast<Eigen::Index>(c)];
+        for (Eigen::Index j = 0; j < r; ++j) w += G(static_cast<int>(c), set_[static_cast<std::size_t>(j)]) * coef_[j];
+        contact_w_[c] = w;
+        const double F = contacts_[c].fh - contacts_[c].k * w;
+        forces[static_cast<std::size_t>(contacts_[c].load)] = F > 0 ? F : 0.0;
+        if ((F > 0) != static_cast<bool>(active_[c])) active_[c] = F > 0, changed = true;
+      }
+      du_ = d0_;
+      for (Eigen::Index j = 0; j < r; ++j) {
+        const int sj = set_[static_cast<std::size_t>(j)];
+        du_ += coef_[j] * (sj < static_cast<int>(nc) ? dwc_.col(sj) : dws_.col(sj - static_cast<int>(nc)));
+      }
+      for (std::size_t j = 0; j < nd; ++j) {
+        const int k = droppers_[j];
+        const double T = drs[static_cast<std::size_t>(k)].tension + drs[static_cast<std::size_t>(k)].stiffness * du_[static_cast<Eigen::Index>(j)];
+        if ((T < 0) != static_cast<bool>(slack_[static_cast<std::size_t>(k)])) slack_[static_cast<std::size_t>(k)] = T < 0, changed = true;
+      }
+      if (!changed) break;
+    }
+    // The modal solution: u = x0 + Σ coef_j A⁻¹ p_j.
+    u_ = x0_;
+    for (std::size_t j = 0; j < set_.size(); ++j) {
+      const int sj = set_[j];
+      const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
+      u_ += (coef_[static_cast<Eigen::Index>(j)] / A_.array()).matrix().cwiseProduct(m.p);
+    }
+    const Eigen::VectorXd a1 = c0_ * (u_ - q_) - c2_ * qd_ - c3_ * qdd_;
+    qd_ = c1_ * (u_ - q_) - c4_ * qd_ - c5_ * qdd_;
+    qdd_ = a1;
+    q_.swap(u_);
+    t_ = t1;
+    // The residual (quasi-static) displacement at each load point, for height() and uplift().
+    last_x_ = xs_;
+    last_F_ = forces;
+    last_res_.assign(loads.size(), 0.0);
+    for (std::size_t c = 0; c < nc; ++c) last_res_[static_cast<std::size_t>(contacts_[c].load)] = contact_w_[c] - mods_[c].p.dot(q_);
+    {  // prescribed forces: their residual displacement (from every force of the step)
+      std::size_t i = 0;
+      for (std::size_t k = 0; k < loads.size(); ++k) {
+        if (loads[k].penalty) continue;
+        const Mod& f = prescribed_[i++].first;
+        double w = 0;
+        for (const auto& [g, F] : prescribed_) w += residual(f, g) * F;
+        for (std::size_t j = 0; j < set_.size(); ++j) {
+          const int sj = set_[j];
+          const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
+          w += residual(f, m) * coef_[static_cast<Eigen::Index>(j)] / ap;
+        }
+        last_res_[k] = w;
+      }
+    }
+    if (alpha_ != 0) {  // q = C v + K₀ u − f at t_{n+1}, in modal coordinates (f: the set's forces)
+      qi_ = damp_.cwiseProduct(qd_) + md.omega2.cwiseProduct(q_);
+      for (std::size_t j = 0; j < set_.size(); ++j) {
+        const int sj = set_[j];
+        const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
+        qi_ -= (coef_[static_cast<Eigen::Index>(j)] / ap) * m.p;
+      }
+      for (const auto& [f, F] : prescribed_) qi_ -= F * f.p;
+    }
+  }
+
+  double uplift(double x) const override {
+    const FeLine::Shape sh = L_.contact_shape(x);
+    double w = 0;
+    for (int a = 0; a < 4; ++a)
+      if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) w += sh.N[a] * win_->modes->phi.row(l).dot(q_);
+    for (std::size_t k = 0; k < last_x_.size(); ++k)
+      if (last_x_[k] == x) return w + last_res_[k];  // the quasi-static part of the modes left out
+    return w;
+  }
+  double height(double x) const override { return L_.static_height(x) + uplift(x); }
+  double height_rate(double x, double speed) const override {
+    const FeLine::Shape sh = L_.contact_shape(x);
+    double w_dot = 0, w_x = 0;
+    for (int a = 0; a < 4; ++a)
+      if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) {
+        w_dot += sh.N[a] * win_->modes->phi.row(l).dot(qd_);
+        w_x += sh.dN[a] * win_->modes->phi.row(l).dot(q_);
+      }
+    return w_dot + speed * (L_.static_slope(x) + w_x);
+  }
+  // ½ q̇ᵀq̇ + ½ qᵀΩ²q, the residual springs ½ Σ F_k ρ_k of the loads, minus the slack droppers'.
+  double energy() const override {
+    double E = 0.5 * qd_.squaredNorm() + 0.5 * q_.dot(win_->modes->omega2.cwiseProduct(q_));
+    for (std::size_t k = 0; k < last_res_.size(); ++k) E += 0.5 * last_F_[k] * last_res_[k];
+    const auto& drs = L_.droppers();
+    for (std::size_t j = 0; j < droppers_.size(); ++j)
+      if (const auto& dr = drs[static_cast<std::size_t>(droppers_[j])]; slack_[static_cast<std::size_t>(droppers_[j])] && static_cast<Eigen::Index>(j) < du_.size()) {
+        const double e = dr.tension / dr.stiffness + du_[static_cast<Eigen::Index>(j)];
+        E -= 0.5 * dr.stiffness * e * e;
+      }
+    return E;
+  }
+  std::vector<double> support_uplift() const override {
+    std::vector<double> u;
+    for (int g : L_.support_dofs()) {
+      const int l = win_->local(g);
+      u.push_back(l >= 0 ? win_->modes->phi.row(l).dot(q_) : 0.0);
+    }
+    return u;
+  }
+
+ private:
+  // A local force of shape w (at most 4 window DOFs l with weights w): p = Φᵀw, pw = Ω⁻² p, ks = K₀⁻¹w
+  // at the special DOFs; a dropper or an absorbing end is itself a combination (s, sw) of special
+  // DOFs. d and coeff as in fe_integrator.cpp (stiffness term and load coefficient).
+  struct Mod {
+    std::array<int, 4> l{-1, -1, -1, -1};
+    std::array<double, 4> w{};
+    Eigen::VectorXd p, pw, ks;
+    std::array<int, 2> s{-1, -1};
+    std::array<double, 2> sw{};
+    double d = 0, coeff = 0;
+  };
+  struct Contact {
+    int load;
+    double k, fh;
+  };
+
+  int first_span_for(const std::vector<double>& x) const {
+    const FeCatenaryData& d = L_.data();
+    double lo = x.empty() ? 0 : x.front();
+    for (double v : x) lo = std::min(lo, v);
+    const int s = std::clamp(static_cast<int>(std::floor(lo / d.span)), 0, d.spans - 1);
+    const int behind = d.window_behind < 0 ? d.spans : d.window_behind;
+    return std::clamp(s - behind, 0, d.spans - W_);
+  }
+
+  // K₀⁻¹(i, j): within the band from the band inverse, else from a column (cached per shape).
+  double kinv(int i, int j) {
+    const auto& md = *win_->modes;
+    if (std::abs(i - j) <= md.kd) return md.band(i, j);
+    auto it = columns_.find(j);
+    if (it == columns_.end()) {
+      Eigen::VectorXd c = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(win_->dofs.size()));
+      c[j] = 1;
+      md.solve_K(c);
+      it = columns_.emplace(j, std::move(c)).first;
+    }
+    return it->second[i];
+  }
+  Mod contact_mod(const FeLine::Shape& sh, double d, double coeff) const {
+    Mod m;
+    const auto& md = *win_->modes;
+    m.p = Eigen::VectorXd::Zero(md.omega2.size());
+    m.ks = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(md.special.size()));
+    for (int a = 0; a < 4; ++a)
+      if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) {
+        m.l[static_cast<std::size_t>(a)] = l, m.w[static_cast<std::size_t>(a)] = sh.N[static_cast<std::size_t>(a)];
+        m.p += sh.N[static_cast<std::size_t>(a)] * md.phi.row(l).transpose();
+        m.ks += sh.N[static_cast<std::size_t>(a)] * md.kinv_special.row(l).transpose();
+      }
+    m.pw = m.p.cwiseQuotient(md.omega2);
+    m.d = d, m.coeff = coeff;
+    return m;
+  }
+  // Special DOFs i (weight +1) and j (weight −1, if j >= 0).
+  Mod special_mod(int i, int j, double d, double coeff) const {
+    const auto& md = *win_->modes;
+    Mod m;
+    const int li = md.special[static_cast<std::size_t>(i)];
+    m.l = {li, -1, -1, -1};
+    m.w = {1.0, 0, 0, 0};
+    m.s = {i, j};
+    m.sw = {1.0, j >= 0 ? -1.0 : 0.0};
+    m.p = md.phi.row(li).transpose();
+    m.ks = md.kinv_special.row(li).transpose();
+    if (j >= 0) {
+      const int lj = md.special[static_cast<std::size_t>(j)];
+      m.l[1] = lj, m.w[1] = -1.0;
+      m.p -= md.phi.row(lj).transpose();
+      m.ks -= md.kinv_special.row(lj).transpose();
+    }
+    m.pw = m.p.cwiseQuotient(md.omega2);
+    m.d = d, m.coeff = coeff;
+    return m;
+  }
+  // w_aᵀ (K₀⁻¹ − Φ Ω⁻² Φᵀ) w_b.
+  double residual(const Mod& a, const Mod& b) {
+    double k = 0;
+    if (a.s[0] >= 0) {
+      for (int i = 0; i < 2; ++i)
+        if (a.s[static_cast<std::size_t>(i)] >= 0) k += a.sw[static_cast<std::size_t>(i)] * b.ks[a.s[static_cast<std::size_t>(i)]];
+    } else if (b.s[0] >= 0) {
+      for (int i = 0; i < 2; ++i)
+        if (b.s[static_cast<std::size_t>(i)] >= 0) k += b.sw[static_cast<std::size_t>(i)] * a.ks[b.s[static_cast<std::size_t>(i)]];
+    } else {
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          if (a.l[static_cast<std::size_t>(i)] >= 0 && b.l[static_cast<std::size_t>(j)] >= 0)
+            k += a.w[static_cast<std::size_t>(i)] * b.w[static_cast<std::size_t>(j)] * kinv(a.l[static_cast<std::size_t>(i)], b.l[static_cast<std::size_t>(j)]);
+    }
+    return k - a.p.dot(b.pw);
+  }
+  // The same for every window dropper against b: b_dᵀ(K₀⁻¹ − Φ Ω⁻² Φᵀ) w_b.
+  Eigen::VectorXd residual_droppers(const Mod& b) const {
+    Eigen::VectorXd r = -(dropper_p_ * b.pw);
+    for (Eigen::Index j = 0; j < r.size(); ++j) r[j] += b.ks[2 * j] - b.ks[2 * j + 1];
+    return r;
+  }
+
+  // Makes the window starting at span `first` the current one (the state is set by the caller).
+  void enter(int first) {
+    const std::shared_ptr<const FeWindowModes> before = win_ ? win_->modes : nullptr;
+    win_ = ml_->window(first, W_);
+    if (win_->modes != before) columns_.clear();
+    const auto& md = *win_->modes;
+    const FeCatenaryData& d = L_.data();
+    const double ap = 1 + alpha_;
+    damp_ = (d.rayleigh_mass + d.rayleigh_stiffness * md.omega2.array()).matrix();
+    A_ = (c0_ + ap * (c1_ * damp_.array() + md.omega2.array())).matrix();
+    droppers_ = win_->droppers;
+    const auto& drs = L_.droppers();
+    dropper_p_.resize(static_cast<Eigen::Index>(droppers_.size()), md.omega2.size());
+    smods_.clear();
+    for (std::size_t j = 0; j < droppers_.size(); ++j) {
+      const auto& dr = drs[static_cast<std::size_t>(droppers_[j])];
+      dropper_p_.row(static_cast<Eigen::Index>(j)) = md.phi.row(win_->local(dr.dof_m)) - md.phi.row(win_->local(dr.dof_c));
+    }
+    for (std::size_t j = 0; j < droppers_.size(); ++j) {
+      const auto& dr = drs[static_cast<std::size_t>(droppers_[j])];
+      smods_.push_back(special_mod(static_cast<int>(2 * j), static_cast<int>(2 * j + 1), -ap * dr.stiffness, ap * dr.tension));
+    }
+    for (std::size_t e = 0; e < win_->ends.size(); ++e)
+      smods_.push_back(special_mod(static_cast<int>(2 * droppers_.size() + e), -1, ap * win_->ends[e].damping * c1_, 0));
+    // G between special terms: p_sᵀ A⁻¹ p_t + R(s, t)/(1 + α); their effect on the droppers.
+    const Eigen::Index ns = static_cast<Eigen::Index>(smods_.size()), nd = static_cast<Eigen::Index>(droppers_.size());
+    gs_.resize(ns, ns);
+    dws_.resize(nd, ns);
+    for (Eigen::Index t = 0; t < ns; ++t) {
+      const Mod& mt = smods_[static_cast<std::size_t>(t)];
+      const Eigen::VectorXd zt = mt.p.cwiseQuotient(A_) - mt.pw / ap;
+      for (Eigen::Index s2 = 0; s2 < ns; ++s2) {
+        const Mod& ms = smods_[static_cast<std::size_t>(s2)];
+        double k = 0;
+        for (int i = 0; i < 2; ++i)
+          if (ms.s[static_cast<std::size_t>(i)] >= 0) k += ms.sw[static_cast<std::size_t>(i)] * mt.ks[ms.s[static_cast<std::size_t>(i)]];
+        gs_(s2, t) = ms.p.dot(zt) + k / ap;
+      }
+      dws_.col(t) = gs_.col(t).head(nd);
+    }
+  }
+
+  // The window moves: the physical state on the shared DOFs is carried over and projected.
+  void move_to(int first) {
+    const std::shared_ptr<const FeWindow> old = win_;
+    const auto& mo = *old->modes;
+    const Eigen::VectorXd u = mo.phi * q_, v = mo.phi * qd_, a = mo.phi * qdd_;
+    Eigen::VectorXd fi;
+    if (alpha_ != 0) fi = mo.M * (mo.phi * qi_);
+    enter(first);
+    const auto& mn = *win_->modes;
+    const Eigen::Index n = static_cast<Eigen::Index>(win_->dofs.size());
+    Eigen::VectorXd u2 = Eigen::VectorXd::Zero(n), v2 = u2, a2 = u2, f2 = u2;
+    for (std::size_t i = 0, j = 0; i < old->dofs.size() && j < win_->dofs.size();) {
+      if (old->dofs[i] < win_->dofs[j]) ++i;
+      else if (old->dofs[i] > win_->dofs[j]) ++j;
+      else {
+        const Eigen::Index oi = static_cast<Eigen::Index>(i), nj = static_cast<Eigen::Index>(j);
+        u2[nj] = u[oi], v2[nj] = v[oi], a2[nj] = a[oi];
+        if (alpha_ != 0) f2[nj] = fi[oi];
+        ++i, ++j;
+      }
+    }
+    q_ = mn.phi.transpose() * (mn.M * u2);
+    qd_ = mn.phi.transpose() * (mn.M * v2);
+    qdd_ = mn.phi.transpose() * (mn.M * a2);
+    qi_ = alpha_ != 0 ? Eigen::VectorXd(mn.phi.transpose() * f2) : Eigen::VectorXd::Zero(q_.size());
+    // Droppers left behind are forgotten; those ahead start taut.
+    std::vector<char> keep(slack_.size(), 0);
+    for (int k : droppers_) keep[static_cast<std::size_t>(k)] = slack_[static_cast<std::size_t>(k)];
+    slack_.swap(keep);
+  }
+
+  std::shared_ptr<const FeModalLine> ml_;
+  const FeLine& L_;
+  int W_;
+  double h_ = 0, alpha_ = 0, beta_ = 0, gamma_ = 0, c0_ = 0, c1_ = 0, c2_ = 0, c3_ = 0, c4_ = 0, c5_ = 0;
+  double t_ = 0;
+  std::shared_ptr<const FeWindow> win_;
+  Eigen::VectorXd q_, qd_, qdd_, qi_, damp_, A_;
+  std::vector<int> droppers_;  // global indices of the window's droppers
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> dropper_p_;  // a row per window dropper: Φᵀ(e_m − e_c)
+  std::vector<char> slack_;    // per dropper of the line
+  std::vector<char> active_;   // per penalty load
+  std::vector<double> last_x_, last_res_, last_F_;
+  std::map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
+  // Step scratch.
+  std::vector<double> xs_;
+  Eigen::VectorXd w1_, vt_, r_, x0_, u_, du_, coef_;
+  std::vector<Mod> mods_;
+  std::vector<Contact> contacts_;
+  std::vector<int> set_;
+  std::vector<std::pair<Mod, double>> prescribed_;
+  Eigen::VectorXd wx0_, d0_;
+  Eigen::MatrixXd gc_, dwc_, xz_, dxz_;
+  std::vector<double> contact_w_;
+  // Per window: the special terms (droppers as slack ones, then the absorbing ends' dashpots), their
+  // G among themselves and their effect on every dropper's elongation (a column per special term).
+  std::vector<Mod> smods_;
+  Eigen::MatrixXd gs_, dws_;
+};
+
+}  // namespace
+
+std::unique_ptr<FeLineSolver> make_modal_solver(std::shared_ptr<const FeModalLine> modal, double spread) {
+  return std::make_unique<ModalSolver>(std::move(modal), spread);
+}
+
+}  // namespace inerta::catenary
