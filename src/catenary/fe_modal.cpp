@@ -5,7 +5,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsShiftSolver.h>
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -24,11 +24,14 @@ namespace {
 using Sparse = Eigen::SparseMatrix<double>;
 using Ldlt = Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>>;
 
-// (K − σM)⁻¹ for Spectra's shift-invert mode: sparse LDLᵀ in the band's own order.
+// The standard form of K φ = λ M φ with M = L Lᵀ (band Cholesky): A y = λ y, A = L⁻¹ K L⁻ᵀ, φ = L⁻ᵀ y.
+// Spectra's shift-invert operator (A − σI)⁻¹ = Lᵀ (K − σM)⁻¹ L: two band products and a sparse LDLᵀ
+// solve in the band's own order; the Lanczos vectors then need no M inner products.
+using Llt = Eigen::SimplicialLLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>>;
 class ShiftInvert {
  public:
   using Scalar = double;
-  ShiftInvert(const Sparse& K, const Sparse& M) : K_(K), M_(M) {}
+  ShiftInvert(const Sparse& K, const Sparse& M, const Sparse& L) : K_(K), M_(M), L_(L), t_(K.rows()) {}
   Eigen::Index rows() const { return K_.rows(); }
   Eigen::Index cols() const { return K_.cols(); }
   void set_shift(double sigma) {
@@ -38,27 +41,15 @@ class ShiftInvert {
   }
   void perform_op(const double* x, double* y) const {
     Eigen::Map<const Eigen::VectorXd> in(x, rows());
-    Eigen::Map<Eigen::VectorXd>(y, rows()) = ldlt_.solve(in);
+    t_.noalias() = L_ * in;
+    t_ = ldlt_.solve(t_);
+    Eigen::Map<Eigen::VectorXd>(y, rows()).noalias() = L_.transpose() * t_;
   }
 
  private:
-  const Sparse &K_, &M_;
+  const Sparse &K_, &M_, &L_;
   Ldlt ldlt_;
-};
-
-class MassProduct {
- public:
-  using Scalar = double;
-  explicit MassProduct(const Sparse& M) : M_(M) {}
-  Eigen::Index rows() const { return M_.rows(); }
-  Eigen::Index cols() const { return M_.cols(); }
-  void perform_op(const double* x, double* y) const {
-    Eigen::Map<const Eigen::VectorXd> in(x, rows());
-    Eigen::Map<Eigen::VectorXd>(y, rows()).noalias() = M_ * in;
-  }
-
- private:
-  const Sparse& M_;
+  mutable Eigen::VectorXd t_;
 };
 
 // Eigenvalues of (K, M) below λ (Sylvester's law of inertia: negative pivots of K − λM = LDLᵀ).
@@ -102,18 +93,20 @@ Modes lowest_modes(const Sparse& K, const Sparse& M, double cutoff_hz) {
   });
   std::vector<Eigen::VectorXd> vals(static_cast<std::size_t>(S));
   std::vector<Eigen::MatrixXd> vecs(static_cast<std::size_t>(S));
+  const Llt mllt(M);
+  if (mllt.info() != Eigen::Success) throw NumericalError("finite-element modes: the mass matrix is not positive definite");
+  const Sparse Lm = mllt.matrixL();
   tbb::this_task_arena::isolate([&] {
     tbb::parallel_for(0, S, [&](int k) {
       const std::size_t s = static_cast<std::size_t>(k);
       const int want = below[s + 1] - below[s];
       if (want == 0) return;
       const double lo = edge[s], hi = edge[s + 1], sigma = 0.5 * (lo + hi);
-      ShiftInvert op(K, M);
-      MassProduct bop(M);
+      ShiftInvert op(K, M, Lm);
       // The `want` eigenvalues nearest σ are those of [lo, hi); ask for a few more, keep those inside.
       const int nev = std::min(n - 2, want + 2);
       const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
-      Spectra::SymGEigsShiftSolver<ShiftInvert, MassProduct, Spectra::GEigsMode::ShiftInvert> es(op, bop, nev, ncv, sigma);
+      Spectra::SymEigsShiftSolver<ShiftInvert> es(op, nev, ncv, sigma);
       es.init();
       es.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);
       if (es.info() != Spectra::CompInfo::Successful)
@@ -132,6 +125,7 @@ Modes lowest_modes(const Sparse& K, const Sparse& M, double cutoff_hz) {
       vals[s].resize(want);
       vecs[s].resize(n, want);
       for (int i = 0; i < want; ++i) vals[s][i] = ev[keep[static_cast<std::size_t>(i)]], vecs[s].col(i) = V.col(keep[static_cast<std::size_t>(i)]);
+      vecs[s] = mllt.matrixU().solve(vecs[s]);  // φ = L⁻ᵀ y: M-orthonormal
     });
   });
   out.omega2.resize(m);
