@@ -12,6 +12,7 @@
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/model_file.hpp"
+#include "support/fe_line.hpp"
 
 using namespace inerta;
 using catenary::FeCatenaryData;
@@ -20,19 +21,7 @@ using std::numbers::pi;
 
 namespace {
 
-// The default line of models/catenary-fe.yaml (issue 12 item 7), `spans` spans.
-FeCatenaryData benchmark(int spans = 10) {
-  FeCatenaryData d;
-  d.span = 55;
-  d.spans = spans;
-  d.encumbrance = 1.2;
-  d.dropper_x = {4.5, 10.25, 16.0, 21.75, 27.5, 33.25, 39.0, 44.75, 50.5};
-  d.presag = {0, 0.024, 0.041, 0.052, 0.055, 0.052, 0.041, 0.024, 0};
-  d.nominal_dropper_length = {1.017, 0.896, 0.810, 0.758, 0.741, 0.758, 0.810, 0.896, 1.017};
-  d.messenger = {16e3, 1.08, 131.7};
-  d.contact_wire = {22e3, 1.35, 195};
-  return d;
-}
+FeCatenaryData benchmark(int spans = 10) { return inerta::testing::fe_benchmark_line(spans); }
 
 // A 1-mass pantograph: head on a vertical slider, lifted by a constant force, with a damper.
 const char* kHead = R"(

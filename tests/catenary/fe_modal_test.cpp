@@ -13,6 +13,7 @@
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
+#include "support/fe_line.hpp"
 
 using namespace inerta;
 using catenary::FeCatenaryData;
@@ -21,18 +22,18 @@ using std::numbers::pi;
 
 namespace {
 
-// The default line of models/catenary-fe.yaml, `spans` spans (as fe_catenary_test.cpp).
+// The default line of models/catenary-fe.yaml, `spans` spans, elements of at most `element` m.
 FeCatenaryData line_data(int spans, double element = 0.25) {
-  FeCatenaryData d;
-  d.span = 55;
-  d.spans = spans;
-  d.encumbrance = 1.2;
-  d.dropper_x = {4.5, 10.25, 16.0, 21.75, 27.5, 33.25, 39.0, 44.75, 50.5};
-  d.presag = {0, 0.024, 0.041, 0.052, 0.055, 0.052, 0.041, 0.024, 0};
-  d.messenger = {16e3, 1.08, 131.7};
-  d.contact_wire = {22e3, 1.35, 195};
+  FeCatenaryData d = inerta::testing::fe_benchmark_line(spans);
+  d.nominal_dropper_length.clear();
   d.element_length = element;
   return d;
+}
+
+// The bundled line's file with these overrides and one more.
+std::vector<std::string> sets_with(std::vector<std::string> base, const std::string& more) {
+  base.push_back(more);
+  return base;
 }
 
 // The modal solve of the whole line (no window) below `cutoff` Hz.
@@ -172,17 +173,13 @@ TEST(FeModal, SigmaConvergesToTheDirectSolveAsTheCutoffGrows) {
   const auto panto = io::load_pantograph(INERTA_SOURCE_DIR "/models/pantograph-3mass.yaml");
   const std::string file = INERTA_SOURCE_DIR "/models/catenary-fe.yaml";
   const std::vector<std::string> base{"line.spans=3", "solver.window_behind=-1"};
-  auto sets = [&](std::vector<std::string> more) {
-    more.insert(more.begin(), base.begin(), base.end());
-    return more;
-  };
-  const auto direct = io::load_catenary(file, sets({"solver.type=direct"}));
+  const auto direct = io::load_catenary(file, sets_with(base, "solver.type=direct"));
   const std::vector<catenary::PantographOnLine> train{{panto, 0.0, direct.contact}};
   const double v = 200 / 3.6;
   const double ref = analysis::run_speed(*direct.catenary->couple(train, v), {}).stats.std;
   std::vector<double> err;
   for (double fc : {40.0, 80.0, 160.0}) {
-    const auto m = io::load_catenary(file, sets({"solver.cutoff=" + std::to_string(fc)}));
+    const auto m = io::load_catenary(file, sets_with(base, "solver.cutoff=" + std::to_string(fc)));
     err.push_back(std::abs(analysis::run_speed(*m.catenary->couple(train, v), {}).stats.std - ref) / ref);
   }
   EXPECT_LT(err[1], err[0]);
@@ -196,13 +193,8 @@ TEST(FeModal, WithinOnePercentOfTheDirectSolveAt200To300KmH) {
   // after the 20 Hz low-pass within 1 % of the direct solve at 200, 250 and 300 km/h.
   const std::string file = INERTA_SOURCE_DIR "/models/catenary-fe.yaml";
   const std::vector<std::string> base{"line.spans=5", "solver.window_behind=-1", "solver.cutoff=150"};
-  auto with = [&](const char* s) {
-    std::vector<std::string> v = base;
-    v.emplace_back(s);
-    return v;
-  };
-  const auto direct = io::load_catenary(file, with("solver.type=direct"));
-  const auto reduced = io::load_catenary(file, with("solver.type=modal"));
+  const auto direct = io::load_catenary(file, sets_with(base, "solver.type=direct"));
+  const auto reduced = io::load_catenary(file, sets_with(base, "solver.type=modal"));
   for (const char* model : {"pantograph-3mass.yaml", "hsx.yaml"}) {
     const auto panto = io::load_pantograph(std::string(INERTA_SOURCE_DIR "/models/") + model);
     const auto rows = analysis::compare({{panto, 0.0, direct.contact}}, *direct.catenary, *reduced.catenary,
@@ -238,13 +230,8 @@ TEST(FeModal, AMovingWindowStaysWithinTheMeasuredErrorOfTheDirectSolve) {
   // window on ten spans), and the support uplift at the section's supports within 5 %.
   const std::string file = INERTA_SOURCE_DIR "/models/catenary-fe.yaml";
   const std::vector<std::string> base{"line.spans=8", "solver.window_behind=1", "solver.window_ahead=2", "solver.cutoff=60"};
-  auto with = [&](const char* s) {
-    std::vector<std::string> v = base;
-    v.emplace_back(s);
-    return v;
-  };
-  const auto direct = io::load_catenary(file, with("solver.type=direct"));
-  const auto reduced = io::load_catenary(file, with("solver.type=modal"));
+  const auto direct = io::load_catenary(file, sets_with(base, "solver.type=direct"));
+  const auto reduced = io::load_catenary(file, sets_with(base, "solver.type=modal"));
   const auto panto = io::load_pantograph(INERTA_SOURCE_DIR "/models/pantograph-3mass.yaml");
   const auto rows = analysis::compare({{panto, 0.0, direct.contact}}, *direct.catenary, *reduced.catenary, {200 / 3.6}, {});
   const auto &a = rows[0].reference, &b = rows[0].candidate;
