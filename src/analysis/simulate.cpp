@@ -106,6 +106,7 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   r.supports.columns.resize(r.support_x.size());
   const int nc = sys->n_contacts();
   std::vector<std::vector<double>> window(static_cast<std::size_t>(nc));
+  std::vector<std::vector<double>> force(static_cast<std::size_t>(nc));  // every sample's contact force
   r.contacts.resize(static_cast<std::size_t>(nc));
   for (int c = 0; c < nc; ++c) {
     TimeHistory h = empty_history(sys->model(sys->contact(c)));
@@ -133,6 +134,7 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
             const std::vector<double> u = sys->support_uplift();
             for (std::size_t j = 0; j < u.size(); ++j) r.supports.columns[j].push_back(u[j]);
           }
+          force[c].push_back(s.force);
           ContactSummary& cs = r.contacts[c];
           if (s.force <= 0) {
             if (cs.lost_samples++ == 0) cs.first_loss_t = s.t, cs.first_loss_x = s.x_contact;
@@ -146,8 +148,7 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   if (line) {  // EN 50317 / 50318 outputs over the section
     for (int c = 0; c < nc; ++c) {
       const TimeHistory& h = r.histories[static_cast<std::size_t>(c)];
-      const std::size_t iF = static_cast<std::size_t>(std::find(h.names.begin(), h.names.end(), "F_contact") - h.names.begin());
-      r.quality.push_back(contact_quality(h.t, h.columns[h.columns.size() - 2], h.columns[iF], r.section));
+      r.quality.push_back(contact_quality(h.t, h.columns[h.columns.size() - 2], force[static_cast<std::size_t>(c)], r.section));
     }
     std::vector<std::vector<double>> rows(r.supports.t.size(), std::vector<double>(r.support_x.size()));
     for (std::size_t i = 0; i < rows.size(); ++i)

@@ -188,6 +188,11 @@ int FeModalLine::window_spans(double spread) const {
 
 int FeModalLine::decompositions() const {
   std::lock_guard<std::mutex> lock(mutex_);
+  return solved_;
+}
+
+int FeModalLine::shapes() const {
+  std::lock_guard<std::mutex> lock(mutex_);
   return static_cast<int>(shapes_.size());
 }
 
@@ -262,11 +267,13 @@ std::shared_ptr<const FeWindowModes> FeModalLine::find_shape(const Sparse& K, co
   return nullptr;
 }
 
-std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, Sparse K, Sparse M) const {
+std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, Sparse K, Sparse M,
+                                                          const Modes* given) const {
   const FeLine& L = *line_;
   const int n = static_cast<int>(K.rows());
   auto md = std::make_shared<FeWindowModes>();
-  Modes modes = lowest_modes(K, M, L.data().modal_cutoff);
+  Modes modes = given ? *given : lowest_modes(K, M, L.data().modal_cutoff);
+  if (!given) ++solved_;
   md->omega2 = modes.omega2;
   md->phi = modes.phi;
   // K's band Cholesky factor, the band of K⁻¹ and its columns at the special DOFs (residual flexibility).
@@ -314,6 +321,41 @@ std::shared_ptr<const FeWindow> FeModalLine::window(int first_span, int spans) c
   return w;
 }
 
+// The window's DOFs mirrored about its middle (x → x_first + x_last − x): local index i of `b` is
+// ±(local index map[i] of `a`), the sign −1 for a slope θ. Empty if the two do not correspond.
+std::vector<std::pair<int, double>> FeModalLine::mirror(const FeWindow& a, const FeWindow& b) const {
+  const FeLine& L = *line_;
+  std::vector<std::pair<int, double>> map;
+  if (a.dofs.size() != b.dofs.size() || a.last_node - a.first_node != b.last_node - b.first_node) return {};
+  for (int node = b.first_node; node <= b.last_node; ++node)
+    for (int wire = 0; wire < 2; ++wire)
+      for (int c = 0; c < 2; ++c) {
+        const int gb = L.dof(wire, node, c);
+        if (gb < 0) continue;
+        const int ga = L.dof(wire, a.last_node - (node - b.first_node), c);
+        if (ga < 0 || a.local(ga) < 0) return {};
+        map.push_back({a.local(ga), c == 1 ? -1.0 : 1.0});
+      }
+  return map;
+}
+
+namespace {
+// P A Pᵀ for the signed permutation of a mirror (row i of the result is row map[i] of A).
+Sparse mirrored(const Sparse& A, const std::vector<std::pair<int, double>>& map) {
+  std::vector<int> inv(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) inv[static_cast<std::size_t>(map[i].first)] = static_cast<int>(i);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Sparse::InnerIterator it(A, j); it; ++it) {
+      const int r = inv[static_cast<std::size_t>(it.row())], c = inv[static_cast<std::size_t>(j)];
+      t.emplace_back(r, c, map[static_cast<std::size_t>(r)].second * map[static_cast<std::size_t>(c)].second * it.value());
+    }
+  Sparse B(A.rows(), A.cols());
+  B.setFromTriplets(t.begin(), t.end());
+  return B;
+}
+}  // namespace
+
 void FeModalLine::prepare(int spans) const {
   std::lock_guard<std::mutex> lock(mutex_);
   struct New {
@@ -334,11 +376,32 @@ void FeModalLine::prepare(int spans) const {
     if (!nw.w->modes && nw.shape < 0) nw.shape = static_cast<int>(todo.size()), todo.push_back(fresh.size());
     fresh.push_back(std::move(nw));
   }
+  // A shape that is the mirror image of an earlier one (the last window of a symmetric line is the
+  // first one reversed) takes its modes from it, reordered, instead of a decomposition of its own.
+  std::vector<int> mirror_of(todo.size(), -1);
+  std::vector<std::vector<std::pair<int, double>>> maps(todo.size());
+  for (std::size_t t = 1; t < todo.size(); ++t)
+    for (std::size_t o = 0; o < t && mirror_of[t] < 0; ++o) {
+      if (mirror_of[o] >= 0) continue;
+      const New &a = fresh[todo[o]], &b = fresh[todo[t]];
+      auto map = mirror(*a.w, *b.w);
+      if (!map.empty() && same(mirrored(a.K, map), b.K) && same(mirrored(a.M, map), b.M))
+        mirror_of[t] = static_cast<int>(o), maps[t] = std::move(map);
+    }
   std::vector<std::shared_ptr<const FeWindowModes>> made(todo.size());
   tbb::this_task_arena::isolate([&] {
     tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
-      const New& o = fresh[todo[t]];
-      made[t] = decompose(*o.w, o.K, o.M);
+      if (mirror_of[t] < 0) made[t] = decompose(*fresh[todo[t]].w, fresh[todo[t]].K, fresh[todo[t]].M);
+    });
+    tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
+      if (mirror_of[t] < 0) return;
+      const FeWindowModes& src = *made[static_cast<std::size_t>(mirror_of[t])];
+      Modes m;
+      m.omega2 = src.omega2;
+      m.phi.resize(src.phi.rows(), src.phi.cols());
+      for (std::size_t i = 0; i < maps[t].size(); ++i)
+        m.phi.row(static_cast<Eigen::Index>(i)) = maps[t][i].second * src.phi.row(maps[t][i].first);
+      made[t] = decompose(*fresh[todo[t]].w, fresh[todo[t]].K, fresh[todo[t]].M, &m);
     });
   });
   shapes_.insert(shapes_.end(), made.begin(), made.end());

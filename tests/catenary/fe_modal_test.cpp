@@ -209,15 +209,23 @@ TEST(FeModal, WithinOnePercentOfTheDirectSolveAt200To300KmH) {
 
 TEST(FeModal, InteriorWindowsShareOneDecomposition) {
   // Ten uniform spans, windows of 6: the first and the last windows hold the line's anchors and its
-  // end spans' form-found droppers, every interior window has the same matrices — three shapes.
+  // end spans' form-found droppers, every interior window has the same matrices — three shapes; the
+  // last is the first one mirrored, so two eigenproblems. The mirrored modes are the last window's
+  // own: K φ = ω² M φ and φᵀ M φ = I on its matrices.
   FeCatenaryData d = line_data(10, 1.0);
   d.modal_cutoff = 20;
   const catenary::FeModalLine ml(std::make_shared<const FeLine>(d));
   ml.prepare(6);
-  EXPECT_EQ(ml.decompositions(), 3);
+  EXPECT_EQ(ml.shapes(), 3);
+  EXPECT_EQ(ml.decompositions(), 2);
   EXPECT_EQ(ml.window(1, 6)->modes, ml.window(3, 6)->modes);
   EXPECT_NE(ml.window(0, 6)->modes, ml.window(1, 6)->modes);
   EXPECT_NE(ml.window(4, 6)->modes, ml.window(3, 6)->modes);
+  const auto& last = *ml.window(4, 6)->modes;
+  const Eigen::MatrixXd phi = last.phi;
+  EXPECT_LT((Eigen::MatrixXd(last.K) * phi - Eigen::MatrixXd(last.M) * phi * last.omega2.asDiagonal()).cwiseAbs().maxCoeff(),
+            1e-6 * last.omega2.maxCoeff() * phi.cwiseAbs().maxCoeff());
+  EXPECT_LT((phi.transpose() * Eigen::MatrixXd(last.M) * phi - Eigen::MatrixXd::Identity(phi.cols(), phi.cols())).cwiseAbs().maxCoeff(), 1e-8);
   EXPECT_EQ(ml.window(0, 6)->ends.size(), 2u);  // a dashpot on each wire at its far end only
   EXPECT_EQ(ml.window(2, 6)->ends.size(), 4u);
   EXPECT_EQ(ml.window_spans(0), 6);

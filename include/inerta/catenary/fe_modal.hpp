@@ -21,9 +21,11 @@
 // Modes: spectrum slicing with shift-invert Lanczos (Spectra) on the band matrices, the number of
 // eigenvalues in each slice known beforehand from the inertia of K₀ − σM (Sylvester), slices in
 // parallel. Windows of the same shape and matrices (every interior window of a uniform line) share
-// one decomposition.
+// one decomposition; a window that is the mirror image of another (the last window of a symmetric
+// line, of the first) takes its modes reordered.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <atomic>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -95,7 +97,8 @@ class FeModalLine {
   /// Every window of `spans` spans, the distinct shapes decomposed in parallel (a run calls it first).
   void prepare(int spans) const;
   int mast_node(int mast) const { return mast_node_[static_cast<std::size_t>(mast)]; }
-  int decompositions() const;  ///< distinct window shapes decomposed so far
+  int decompositions() const;  ///< eigenproblems solved so far
+  int shapes() const;          ///< distinct window shapes so far (a mirrored one needs no eigenproblem)
 
  private:
   std::shared_ptr<const FeLine> line_;
@@ -103,10 +106,13 @@ class FeModalLine {
   mutable std::mutex mutex_;
   mutable std::map<std::pair<int, int>, std::shared_ptr<const FeWindow>> windows_;
   mutable std::vector<std::shared_ptr<const FeWindowModes>> shapes_;
+  mutable std::atomic<int> solved_{0};
   std::shared_ptr<FeWindow> structure(int first_span, int spans, Eigen::SparseMatrix<double>& K,
                                       Eigen::SparseMatrix<double>& M) const;
+  /// Its modes (`given`: modes of the same matrices found otherwise), factor and residual data.
   std::shared_ptr<const FeWindowModes> decompose(const FeWindow& w, Eigen::SparseMatrix<double> K,
-                                                 Eigen::SparseMatrix<double> M) const;
+                                                 Eigen::SparseMatrix<double> M, const Modes* given = nullptr) const;
+  std::vector<std::pair<int, double>> mirror(const FeWindow& a, const FeWindow& b) const;
   std::shared_ptr<const FeWindowModes> find_shape(const Eigen::SparseMatrix<double>& K,
                                                   const Eigen::SparseMatrix<double>& M) const;
 };
