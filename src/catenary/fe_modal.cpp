@@ -22,7 +22,55 @@ void dpbtrf_(const char* uplo, const int* n, const int* kd, double* ab, const in
 namespace {
 
 using Sparse = Eigen::SparseMatrix<double>;
-using Ldlt = Eigen::SimplicialLDLT<Sparse, Eigen::Lower, Eigen::NaturalOrdering<int>>;
+// LDLᵀ of a symmetric band matrix (indefinite allowed, no pivoting, as a sparse LDLᵀ in the band's own
+// order), the band stored contiguously: K − σM of the shift-invert steps and of the inertia counts.
+class BandLdlt {
+ public:
+  explicit BandLdlt(const Sparse& A) : n_(static_cast<int>(A.rows())) {
+    for (int j = 0; j < A.outerSize(); ++j)
+      for (Sparse::InnerIterator it(A, j); it; ++it) kd_ = std::max(kd_, static_cast<int>(it.row()) - j);
+    ld_ = kd_ + 1;
+    l_.assign(static_cast<std::size_t>(ld_) * static_cast<std::size_t>(n_), 0.0);
+    for (int j = 0; j < A.outerSize(); ++j)
+      for (Sparse::InnerIterator it(A, j); it; ++it)
+        if (it.row() >= j) at(static_cast<int>(it.row()), j) = it.value();
+    d_.resize(static_cast<std::size_t>(n_));
+    for (int j = 0; j < n_; ++j) {
+      const int k0 = std::max(0, j - kd_);
+      double dj = at(j, j);
+      for (int k = k0; k < j; ++k) dj -= at(j, k) * at(j, k) * d_[static_cast<std::size_t>(k)];
+      if (dj == 0 || !std::isfinite(dj)) throw NumericalError(fmt::format("finite-element modes: K − σM is singular (pivot {})", j));
+      d_[static_cast<std::size_t>(j)] = dj;
+      for (int i = j + 1; i <= std::min(n_ - 1, j + kd_); ++i) {
+        double v = at(i, j);
+        for (int k = std::max(k0, i - kd_); k < j; ++k) v -= at(i, k) * at(j, k) * d_[static_cast<std::size_t>(k)];
+        at(i, j) = v / dj;
+      }
+    }
+  }
+  int negative() const { return static_cast<int>(std::count_if(d_.begin(), d_.end(), [](double v) { return v < 0; })); }
+  void solve(double* x) const {
+    for (int j = 0; j < n_; ++j) {
+      const double* c = l_.data() + static_cast<std::ptrdiff_t>(j) * ld_;
+      const double xj = x[j];
+      const int m = std::min(kd_, n_ - 1 - j);
+      for (int i = 1; i <= m; ++i) x[j + i] -= c[i] * xj;
+    }
+    for (int j = 0; j < n_; ++j) x[j] /= d_[static_cast<std::size_t>(j)];
+    for (int j = n_ - 1; j >= 0; --j) {
+      const double* c = l_.data() + static_cast<std::ptrdiff_t>(j) * ld_;
+      double s = x[j];
+      const int m = std::min(kd_, n_ - 1 - j);
+      for (int i = 1; i <= m; ++i) s -= c[i] * x[j + i];
+      x[j] = s;
+    }
+  }
+
+ private:
+  double& at(int i, int j) { return l_[static_cast<std::size_t>(i - j) + static_cast<std::size_t>(j) * static_cast<std::size_t>(ld_)]; }
+  int n_, kd_ = 0, ld_ = 1;
+  std::vector<double> l_, d_;
+};
 
 // The standard form of K φ = λ M φ with M = L Lᵀ (band Cholesky): A y = λ y, A = L⁻¹ K L⁻ᵀ, φ = L⁻ᵀ y.
 // Spectra's shift-invert operator (A − σI)⁻¹ = Lᵀ (K − σM)⁻¹ L: two band products and a sparse LDLᵀ
@@ -34,30 +82,23 @@ class ShiftInvert {
   ShiftInvert(const Sparse& K, const Sparse& M, const Sparse& L) : K_(K), M_(M), L_(L), t_(K.rows()) {}
   Eigen::Index rows() const { return K_.rows(); }
   Eigen::Index cols() const { return K_.cols(); }
-  void set_shift(double sigma) {
-    ldlt_.compute(Sparse(K_ - sigma * M_));
-    if (ldlt_.info() != Eigen::Success)
-      throw NumericalError(fmt::format("finite-element modes: K − σM is singular at σ = {:.6g}", sigma));
-  }
+  void set_shift(double sigma) { ldlt_ = std::make_unique<BandLdlt>(Sparse(K_ - sigma * M_)); }
   void perform_op(const double* x, double* y) const {
     Eigen::Map<const Eigen::VectorXd> in(x, rows());
     t_.noalias() = L_ * in;
-    t_ = ldlt_.solve(t_);
+    ldlt_->solve(t_.data());
     Eigen::Map<Eigen::VectorXd>(y, rows()).noalias() = L_.transpose() * t_;
   }
 
  private:
   const Sparse &K_, &M_, &L_;
-  Ldlt ldlt_;
+  std::unique_ptr<BandLdlt> ldlt_;
   mutable Eigen::VectorXd t_;
 };
 
 // Eigenvalues of (K, M) below λ (Sylvester's law of inertia: negative pivots of K − λM = LDLᵀ).
 int count_below(const Sparse& K, const Sparse& M, double lambda) {
-  Ldlt f(Sparse(K - lambda * M));
-  if (f.info() != Eigen::Success)
-    throw NumericalError(fmt::format("finite-element modes: K − λM is singular at λ = {:.6g}", lambda));
-  return static_cast<int>((f.vectorD().array() < 0).count());
+  return BandLdlt(Sparse(K - lambda * M)).negative();
 }
 
 constexpr int kSliceModes = 24;  // eigenvalues a slice: Lanczos work grows with the square of it
