@@ -8,7 +8,21 @@
 #include <cmath>
 #include <string>
 
+#include "inerta/error.hpp"
+
 namespace inerta::cli {
+
+/// A number obeying a library rule (inerta::NumberRule: the same rule and message as the Python
+/// argument it mirrors).
+inline CLI::Validator number_rule(const NumberRule& rule) {
+  return CLI::Validator(
+      [=](std::string& s) {
+        double v = 0;
+        if (!CLI::detail::lexical_cast(s, v)) return fmt::format("expected a finite number, got '{}'", s);
+        return rule.check(v, s);
+      },
+      rule.what);
+}
 
 /// A finite number in [lo, hi]; `what` describes the range and unit, e.g. "> 0 s".
 inline CLI::Validator number_in(double lo, double hi, const std::string& what) {

@@ -1149,13 +1149,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> check_sets;
   check->add_option("--set", check_sets, "Override a value NAME.KEY=VALUE of the file (repeatable)");
 
-  using inerta::cli::count_in, inerta::cli::number_in, inerta::cli::positive;
+  using inerta::cli::count_in, inerta::cli::number_in, inerta::cli::number_rule, inerta::cli::positive;
 
   SimulateArgs sa;
   auto* sim = app.add_subcommand("simulate", "Time simulation; writes a CSV of the model's outputs");
   sim->add_option("model", sa.model, "Model file (YAML)")->required();
-  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)")->check(number_in(1e-12, 1e7, "> 0 s, at most 1e7 s"));
-  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)")->check(positive("s"));
+  sim->add_option("--t-end", sa.t_end, "End time, s (default: options.t_end of the model)")->check(number_rule(analysis::t_end_rule));
+  sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)")->check(number_rule(analysis::sample_rule));
   sim->add_option("--out", sa.out, "CSV file to write (default: standard output)");
   sim->add_flag("--no-centripetal", sa.no_centripetal, "Switch off the inerter centripetal correction (eq. 3.8)");
   sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str()->check(number_in(1e-14, 1, "1e-14 … 1"));

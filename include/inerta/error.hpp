@@ -36,4 +36,18 @@ struct NumericalError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A numeric argument's rule, shared by the CLI option and the Python argument that mirror each
+/// other: finite and in [lo, hi]; `what` says so in words ("> 0 s, at most 1e7 s").
+struct NumberRule {
+  double lo, hi;
+  const char* what;
+  /// "" if v obeys the rule, else the message ("0 is out of range; expected > 0 s, at most 1e7 s",
+  /// "expected a finite number, got 'nan'"); `text` is v as the user wrote it.
+  std::string check(double v, const std::string& text) const {
+    if (!(v == v) || v - v != 0) return "expected a finite number, got '" + text + "'";
+    if (!(v >= lo && v <= hi)) return text + " is out of range; expected " + what;
+    return {};
+  }
+};
+
 }  // namespace inerta

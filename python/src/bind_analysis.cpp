@@ -265,11 +265,22 @@ void bind_analysis(py::module_& m) {
   m.def("summarise", [](const History& r, double from) { return analysis::summarise(*r.h, from); }, py::arg("result"),
         py::arg("from_t"), "Summaries (OutputSummary) of every output over t >= from_t (s).");
 
-  m.def("simulate", [](const Model& model, double t_end, double sample, bool from_equilibrium, double steady_from,
-                       const py::object& integrator, const py::object& method, const py::object& rtol,
-                       const py::object& atol, const py::object& max_step, const py::object& progress) {
+  m.def("simulate", [](const Model& model, const py::object& t_end, const py::object& sample, bool from_equilibrium,
+                       double steady_from, const py::object& integrator, const py::object& method,
+                       const py::object& rtol, const py::object& atol, const py::object& max_step,
+                       const py::object& progress) {
     analysis::SimulateOptions o;
-    o.t_end = t_end, o.sample = sample, o.from_equilibrium = from_equilibrium, o.steady_from = steady_from;
+    // Given: the CLI's rule and message (--t-end, --sample); None: the model's options.
+    auto given = [](const py::object& v, const char* name, const NumberRule& rule) {
+      if (v.is_none()) return -1.0;
+      const double x = v.cast<double>();
+      if (const std::string e = rule.check(x, py::str(v).cast<std::string>()); !e.empty())
+        throw InvalidArgument(std::string(name) + ": " + e);
+      return x;
+    };
+    o.t_end = given(t_end, "t_end", analysis::t_end_rule);
+    o.sample = given(sample, "sample", analysis::sample_rule);
+    o.from_equilibrium = from_equilibrium, o.steady_from = steady_from;
     o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
     return run(progress, [&](Call& call) {
       const auto t0 = Clock::now();
@@ -278,12 +289,13 @@ void bind_analysis(py::module_& m) {
       }));
       return History{sim, &sim->history, sim, seconds_since(t0)};
     });
-  }, py::arg("model"), py::arg("t_end") = -1.0, py::arg("sample") = -1.0, py::kw_only(),
+  }, py::arg("model"), py::arg("t_end") = py::none(), py::arg("sample") = py::none(), py::kw_only(),
         py::arg("from_equilibrium") = false, py::arg("steady_from") = -1.0, py::arg("integrator") = py::none(),
         py::arg("method") = py::none(), py::arg("rtol") = py::none(), py::arg("atol") = py::none(),
         py::arg("max_step") = py::none(), py::arg("progress") = py::none(),
         "Time simulation (analysis::simulate, as `inerta simulate`): assembles at t = 0 (static equilibrium with "
-        "from_equilibrium), integrates to t_end (s; <= 0: the model's options.t_end) and samples every output each "
+        "from_equilibrium), integrates to t_end (s; None: the model's options.t_end; given: > 0 s, at most 1e7 s, as "
+        "`inerta simulate --t-end`, else InvalidArgument with the CLI's message) and samples every output each "
         "`sample` s. Integrator: `integrator` (IntegratorOptions) and/or method ('rk'|'bdf'), rtol, atol, max_step "
         "(s). steady_from >= 0: Result.steady summarises t >= steady_from. progress(t, t_end) is called on this "
         "thread; Ctrl-C stops the run (KeyboardInterrupt). NumericalError with the time on failure.");

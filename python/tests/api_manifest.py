@@ -348,6 +348,8 @@ EXCLUDED = {
     "catenary::FeIntegrator": "the structural HHT-α stepping workspace of the co-simulation (a call per step); "
                               "simulate_coupled, run_speed and sweep run it through Catenary",
     "catenary::FeLoad": "argument of FeIntegrator::step (see there)",
+    "NumberRule": "an argument's rule shared by a CLI option and its Python argument; Python applies it (simulate's "
+                  "t_end, sample) and raises InvalidArgument with its message",
     "catenary::FeLineSolver": "a run's structural solver of the line (a per-step workspace inside the coupling); "
                               "Python chooses it with FeCatenaryData.solver",
     "catenary::make_direct_solver": "makes an FeLineSolver (see there)",

@@ -138,3 +138,22 @@ def test_ctrl_c_stops_a_long_run(twobar):
     t = time.perf_counter() - t0
     r = inerta.simulate(twobar, t_end=100, sample=0.01)
     assert t < 0.2 + 0.5 + 3 * r.wall_s  # r.wall_s: the time of 1/50 of the long run
+
+
+@pytest.mark.parametrize("arg,option,value", [("t_end", "--t-end", 0), ("t_end", "--t-end", -1),
+                                              ("t_end", "--t-end", float("nan")), ("t_end", "--t-end", 1e8),
+                                              ("sample", "--sample", 0), ("sample", "--sample", float("inf"))])
+def test_run_length_refused_as_by_the_cli(twobar, arg, option, value):
+    """t_end and sample follow the CLI's rule (analysis::t_end_rule, sample_rule) with its message; not
+    given (None), the model's options apply."""
+    from conftest import run_cli
+    text = {0: "0", -1: "-1", 1e8: "1e8"}.get(value, str(value))
+    r = run_cli("simulate", model("twobar.yaml"), option, text, check=False)
+    assert r.returncode == 105
+    cli_message = r.stderr.splitlines()[0].split(": ", 1)[1]  # after "--t-end: "
+    with pytest.raises(inerta.InvalidArgument) as e:
+        inerta.simulate(twobar, **{arg: value})
+    py_message = str(e.value).split(": ", 1)[1]  # after "t_end: "
+    assert py_message.split("; expected")[-1] == cli_message.split("; expected")[-1]
+    assert ("out of range" in py_message) == ("out of range" in cli_message)
+    assert ("finite" in py_message) == ("finite" in cli_message)

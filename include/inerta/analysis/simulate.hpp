@@ -2,6 +2,7 @@
 // Time simulation as a library call (`inerta simulate`, the Python module): the outputs of a model
 // sampled over a run, their summaries, and the same for pantographs running under a catenary with
 // the contact-force statistics of spec/06 §6.1.
+#include "inerta/error.hpp"
 #include <functional>
 #include <optional>
 #include <string>
@@ -37,6 +38,11 @@ std::vector<OutputSummary> summarise(const TimeHistory& history, double from);
 
 /// progress(t, t_end), called now and then from the integrating thread.
 using TimeProgress = std::function<void(double t, double t_end)>;
+
+/// The rules of a run's length and sampling interval when given (`inerta simulate --t-end/--sample`,
+/// `inerta.simulate(t_end=, sample=)`): one rule, one message for both.
+inline constexpr NumberRule t_end_rule{1e-12, 1e7, "> 0 s, at most 1e7 s"};
+inline constexpr NumberRule sample_rule{1e-300, 1e300, "> 0 s"};
 
 struct SimulateOptions {
   double t_end = -1;   ///< s; ≤ 0: the model's options.t_end
