@@ -359,6 +359,8 @@ EXCLUDED = {
     "catenary::FeWindowModes": "the decomposition of a window (see FeModalLine)",
     "catenary::BandInverse": "numerical kernel of the modal solve's residual flexibility",
     "catenary::Modes": "result of lowest_modes (see there)",
+    "catenary::ModeStore": "the on-disk store of decompositions, chosen by the environment (INERTA_CACHE), "
+                           "used by every FeCatenary the module makes",
     "catenary::lowest_modes": "numerical kernel of the modal solve (Lanczos spectrum slicing), tested in C++",
     "catenary::FeState": "state of FeIntegrator (see there)",
     "io::json_rows": "nlohmann-json plumbing of the C++ writers; the JSON documents are bound as dicts "

@@ -311,7 +311,8 @@ class FeCoupled final : public Coupled {
 }  // namespace
 
 FeCatenary::FeCatenary(FeCatenaryData data) : line_(std::make_shared<FeLine>(std::move(data))) {
-  if (line_->data().solver == FeCatenaryData::Solver::Modal) modal_ = std::make_shared<FeModalLine>(line_);
+  if (line_->data().solver == FeCatenaryData::Solver::Modal)
+    modal_ = std::make_shared<FeModalLine>(line_, ModeStore::from_environment());
 }
 
 std::string FeCatenary::describe() const {

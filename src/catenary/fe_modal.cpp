@@ -209,7 +209,8 @@ int FeWindow::local(int global) const {
   return it != dofs.end() && *it == global ? static_cast<int>(it - dofs.begin()) : -1;
 }
 
-FeModalLine::FeModalLine(std::shared_ptr<const FeLine> line) : line_(std::move(line)) {
+FeModalLine::FeModalLine(std::shared_ptr<const FeLine> line, std::optional<ModeStore> store)
+    : line_(std::move(line)), store_(std::move(store)) {
   const FeCatenaryData& d = line_->data();
   if (!(d.modal_cutoff > 0) || !std::isfinite(d.modal_cutoff))
     throw InvalidArgument("finite-element catenary: solver", "cutoff", fmt::format("must be > 0 Hz, got {}", d.modal_cutoff));
@@ -231,6 +232,8 @@ int FeModalLine::decompositions() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return solved_;
 }
+
+int FeModalLine::loaded() const { return loaded_; }
 
 int FeModalLine::shapes() const {
   std::lock_guard<std::mutex> lock(mutex_);
@@ -313,10 +316,17 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
   const FeLine& L = *line_;
   const int n = static_cast<int>(K.rows());
   auto md = std::make_shared<FeWindowModes>();
-  Modes modes = given ? *given : lowest_modes(K, M, L.data().modal_cutoff);
-  if (!given) ++solved_;
-  md->omega2 = modes.omega2;
-  md->phi = modes.phi;
+  const double cutoff = L.data().modal_cutoff;
+  std::optional<Modes> stored;
+  if (!given && store_) stored = store_->load(K, M, cutoff);
+  Modes modes = given ? *given : stored ? std::move(*stored) : lowest_modes(K, M, cutoff);
+  if (!given && stored) ++loaded_;
+  if (!given && !stored) {
+    ++solved_;
+    if (store_) store_->save(K, M, cutoff, modes);
+  }
+  md->omega2 = std::move(modes.omega2);
+  md->phi = std::move(modes.phi);
   // K's band Cholesky factor, the band of K⁻¹ and its columns at the special DOFs (residual flexibility).
   for (int j = 0; j < K.outerSize(); ++j)
     for (Sparse::InnerIterator it(K, j); it; ++it) md->kd = std::max(md->kd, static_cast<int>(it.row()) - j);
@@ -871,9 +881,13 @@ class ModalSolver final : public FeLineSolver {
   void move_to(int first) {
     const std::shared_ptr<const FeWindow> old = win_;
     const auto& mo = *old->modes;
-    const Eigen::VectorXd u = mo.phi * q_, v = mo.phi * qd_, a = mo.phi * qdd_;
+    Eigen::MatrixXd qs(q_.size(), alpha_ != 0 ? 4 : 3);  // one pass over Φ for the state's four vectors
+    qs.col(0) = q_, qs.col(1) = qd_, qs.col(2) = qdd_;
+    if (alpha_ != 0) qs.col(3) = qi_;
+    const Eigen::MatrixXd uva = mo.phi * qs;
+    const auto u = uva.col(0), v = uva.col(1), a = uva.col(2);
     Eigen::VectorXd fi;
-    if (alpha_ != 0) fi = mo.M * (mo.phi * qi_);
+    if (alpha_ != 0) fi = mo.M * uva.col(3);
     enter(first);
     const auto& mn = *win_->modes;
     const Eigen::Index n = static_cast<Eigen::Index>(win_->dofs.size());
@@ -888,10 +902,11 @@ class ModalSolver final : public FeLineSolver {
         ++i, ++j;
       }
     }
-    q_ = mn.phi.transpose() * (mn.M * u2);
-    qd_ = mn.phi.transpose() * (mn.M * v2);
-    qdd_ = mn.phi.transpose() * (mn.M * a2);
-    qi_ = alpha_ != 0 ? Eigen::VectorXd(mn.phi.transpose() * f2) : Eigen::VectorXd::Zero(q_.size());
+    Eigen::MatrixXd rhs(n, 4);
+    rhs.col(0) = mn.M * u2, rhs.col(1) = mn.M * v2, rhs.col(2) = mn.M * a2, rhs.col(3) = f2;
+    const Eigen::MatrixXd qn = mn.phi.transpose() * rhs;
+    q_ = qn.col(0), qd_ = qn.col(1), qdd_ = qn.col(2);
+    qi_ = alpha_ != 0 ? Eigen::VectorXd(qn.col(3)) : Eigen::VectorXd::Zero(q_.size());
     // Droppers left behind are forgotten; those ahead start taut.
     std::vector<char> keep(slack_.size(), 0);
     for (int k : droppers_) keep[static_cast<std::size_t>(k)] = slack_[static_cast<std::size_t>(k)];

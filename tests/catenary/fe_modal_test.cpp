@@ -4,7 +4,12 @@
 // statistics of a coupled run against the direct solve.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+#include <unistd.h>
+
 #include <Eigen/Eigenvalues>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <numbers>
 
@@ -249,4 +254,85 @@ TEST(FeModal, AMovingWindowStaysWithinTheMeasuredErrorOfTheDirectSolve) {
   ASSERT_FALSE(a.support_uplift.empty());
   for (std::size_t k = 0; k < a.support_uplift.size(); ++k)
     EXPECT_NEAR(b.support_uplift[k], a.support_uplift[k], 0.05 * a.support_uplift[k]) << "support " << k;
+}
+
+TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
+  // A store in a fresh directory: the first line solves its two eigenproblems and writes them, a
+  // second line of the same data reads both and solves none, and a run on it gives the same history
+  // to the last bit. A damaged file (one byte changed, or cut short) and a file of another cut-off
+  // are not read: the modes are solved again.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("inerta-mode-store-{}", ::getpid());
+  fs::remove_all(dir);
+  FeCatenaryData d = line_data(10, 1.0);
+  d.modal_cutoff = 20;
+  d.solver = FeCatenaryData::Solver::Modal;
+  const auto line = std::make_shared<const FeLine>(d);
+  const auto first = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
+  first->prepare(6);
+  EXPECT_EQ(first->decompositions(), 2);
+  EXPECT_EQ(first->loaded(), 0);
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
+  ASSERT_EQ(files.size(), 2u);  // no temporary file left
+  const auto second = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
+  second->prepare(6);
+  EXPECT_EQ(second->decompositions(), 0);
+  EXPECT_EQ(second->loaded(), 2);
+  auto history = [&](const std::shared_ptr<const catenary::FeModalLine>& ml) {
+    auto s = catenary::make_modal_solver(ml, 0.0);
+    const double x0 = 2.5 * d.span;
+    s->start({x0}, {120.0}, 0.0);
+    std::vector<double> out, forces;
+    for (int i = 0; i < 400; ++i) {
+      const double x = x0 + 70.0 * s->time();
+      s->step({catenary::FeLoad{x, false, 120.0 + 30 * std::sin(40 * s->time())}}, forces);
+      out.push_back(s->uplift(x));
+    }
+    return out;
+  };
+  EXPECT_EQ(history(first), history(second));
+  // Damage each file in turn: it is ignored and solved again (and written anew).
+  {
+    std::fstream f(files[0], std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(200);
+    const char c = 0x5a;
+    f.write(&c, 1);
+  }
+  fs::resize_file(files[1], fs::file_size(files[1]) - 8);
+  const auto third = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
+  third->prepare(6);
+  EXPECT_EQ(third->decompositions(), 2);
+  EXPECT_EQ(third->loaded(), 0);
+  EXPECT_EQ(history(first), history(third));
+  FeCatenaryData other = d;
+  other.modal_cutoff = 21;
+  const catenary::FeModalLine fourth(std::make_shared<const FeLine>(other), catenary::ModeStore(dir));
+  fourth.prepare(6);
+  EXPECT_EQ(fourth.decompositions(), 2);
+  EXPECT_EQ(fourth.loaded(), 0);
+  // Beyond its size limit the store removes the oldest files, never the one just written.
+  other.modal_cutoff = 22;
+  const catenary::FeModalLine fifth(std::make_shared<const FeLine>(other), catenary::ModeStore(dir, 1));
+  fifth.prepare(6);
+  EXPECT_EQ(fifth.decompositions(), 2);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+TEST(FeModalStore, TheEnvironmentChoosesTheDirectoryOrNone) {
+  const char* saved = std::getenv("INERTA_CACHE");
+  const std::string keep = saved ? saved : "";
+  ::setenv("INERTA_CACHE", "off", 1);
+  EXPECT_FALSE(catenary::ModeStore::from_environment());
+  ::setenv("INERTA_CACHE", "/tmp/somewhere", 1);
+  ASSERT_TRUE(catenary::ModeStore::from_environment());
+  EXPECT_EQ(catenary::ModeStore::from_environment()->directory(), std::filesystem::path("/tmp/somewhere"));
+  ::unsetenv("INERTA_CACHE");
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const std::string keep_xdg = xdg ? xdg : "";
+  ::setenv("XDG_CACHE_HOME", "/tmp/xdg", 1);
+  EXPECT_EQ(catenary::ModeStore::from_environment()->directory(), std::filesystem::path("/tmp/xdg/inerta/modes"));
+  if (xdg) ::setenv("XDG_CACHE_HOME", keep_xdg.c_str(), 1); else ::unsetenv("XDG_CACHE_HOME");
+  if (saved) ::setenv("INERTA_CACHE", keep.c_str(), 1);
 }

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/mode_store.hpp"
 
 namespace inerta::catenary {
 
@@ -40,7 +41,7 @@ namespace inerta::catenary {
 /// eigenvalue the inertia counts.
 struct Modes {
   Eigen::VectorXd omega2;  ///< ω², (rad/s)²
-  Eigen::MatrixXd phi;     ///< n × m
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> phi;  ///< n × m, a DOF a row
 };
 Modes lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz);
 
@@ -88,7 +89,8 @@ struct FeWindow {
 /// (thread-safe). Immutable for its users.
 class FeModalLine {
  public:
-  explicit FeModalLine(std::shared_ptr<const FeLine> line);
+  /// `store`: where decompositions are kept between processes (none: always solved here).
+  explicit FeModalLine(std::shared_ptr<const FeLine> line, std::optional<ModeStore> store = std::nullopt);
   const FeLine& line() const { return *line_; }
   /// Spans of a window for pantographs spread over `spread` m (the whole line at most).
   int window_spans(double spread) const;
@@ -98,6 +100,8 @@ class FeModalLine {
   void prepare(int spans) const;
   int mast_node(int mast) const { return mast_node_[static_cast<std::size_t>(mast)]; }
   int decompositions() const;  ///< eigenproblems solved so far
+  int loaded() const;          ///< decompositions read from the store so far
+  const std::optional<ModeStore>& store() const { return store_; }
   int shapes() const;          ///< distinct window shapes so far (a mirrored one needs no eigenproblem)
 
  private:
@@ -106,7 +110,8 @@ class FeModalLine {
   mutable std::mutex mutex_;
   mutable std::map<std::pair<int, int>, std::shared_ptr<const FeWindow>> windows_;
   mutable std::vector<std::shared_ptr<const FeWindowModes>> shapes_;
-  mutable std::atomic<int> solved_{0};
+  std::optional<ModeStore> store_;
+  mutable std::atomic<int> solved_{0}, loaded_{0};
   std::shared_ptr<FeWindow> structure(int first_span, int spans, Eigen::SparseMatrix<double>& K,
                                       Eigen::SparseMatrix<double>& M) const;
   /// Its modes (`given`: modes of the same matrices found otherwise), factor and residual data.

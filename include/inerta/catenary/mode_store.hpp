@@ -1,0 +1,45 @@
+#pragma once
+// Decompositions of the finite-element line kept on disk between processes (docs/catenary-fe.md
+// "Mode store"): a window's modes depend only on its matrices (K₀, M) and the cut-off, so a second
+// process with the same line reads them instead of solving the eigenproblem again (≈ 1 s a shape).
+//
+// A file `modes-<key>.bin` per decomposition, the key a 64-bit hash of K₀, M (structure and values,
+// bit for bit) and the cut-off; the header repeats the key, sizes and cut-off and a checksum of the
+// data, so a file that does not match (another line, a truncated or damaged file) is ignored and the
+// modes are computed. Files are written under a temporary name and renamed (processes sharing the
+// directory never read a partial file). The loaded modes are the computed ones bit for bit, so
+// results do not depend on whether the store was used.
+#include <Eigen/Sparse>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+namespace inerta::catenary {
+
+struct Modes;
+
+class ModeStore {
+ public:
+  explicit ModeStore(std::filesystem::path directory, std::uintmax_t max_bytes = std::uintmax_t{4} << 30);
+  /// From the environment: INERTA_CACHE=off (or empty) → none; INERTA_CACHE=DIR → DIR; unset →
+  /// $XDG_CACHE_HOME/inerta/modes, else $HOME/.cache/inerta/modes; none if neither is set.
+  static std::optional<ModeStore> from_environment();
+  const std::filesystem::path& directory() const { return dir_; }
+
+  static std::uint64_t key(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                           double cutoff_hz);
+  std::filesystem::path file(std::uint64_t key) const;
+  /// The stored modes of (K, M, cutoff), or nothing (absent, or not matching).
+  std::optional<Modes> load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                            double cutoff_hz) const;
+  /// Stores them; true if written. A failure (read-only or full disk) only loses the cache. Beyond
+  /// max_bytes in all, the least recently written files are removed.
+  bool save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz,
+            const Modes& modes) const noexcept;
+
+ private:
+  std::filesystem::path dir_;
+  std::uintmax_t max_bytes_;
+};
+
+}  // namespace inerta::catenary

@@ -1,0 +1,176 @@
+// Decompositions on disk (catenary/mode_store.hpp).
+#include "inerta/catenary/mode_store.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "inerta/catenary/fe_modal.hpp"
+
+namespace inerta::catenary {
+
+namespace {
+
+constexpr char kMagic[8] = {'I', 'N', 'M', 'O', 'D', 'E', 'S', '1'};
+
+struct Header {
+  char magic[8];
+  std::uint64_t key;
+  std::int64_t n, m;
+  double cutoff;
+  std::uint64_t checksum;
+};
+
+// FNV-1a over 64-bit words (stable across processes; not cryptographic: it detects other data, not
+// an adversary).
+struct Hash {
+  std::uint64_t h = 14695981039346656037ull;
+  void word(std::uint64_t w) {
+    for (int b = 0; b < 8; ++b) h = (h ^ ((w >> (8 * b)) & 0xffu)) * 1099511628211ull;
+  }
+  void words(const void* p, std::size_t bytes) {  // whole words; a faster mix for the bulk data
+    const auto* c = static_cast<const unsigned char*>(p);
+    for (std::size_t i = 0; i + 8 <= bytes; i += 8) {
+      std::uint64_t w;
+      std::memcpy(&w, c + i, 8);
+      h = (h ^ w) * 1099511628211ull;
+      h ^= h >> 29;
+    }
+    for (std::size_t i = bytes - bytes % 8; i < bytes; ++i) h = (h ^ c[i]) * 1099511628211ull;
+  }
+  void matrix(const Eigen::SparseMatrix<double>& A) {
+    word(static_cast<std::uint64_t>(A.rows())), word(static_cast<std::uint64_t>(A.cols()));
+    word(static_cast<std::uint64_t>(A.nonZeros()));
+    words(A.outerIndexPtr(), sizeof(int) * static_cast<std::size_t>(A.outerSize() + 1));
+    words(A.innerIndexPtr(), sizeof(int) * static_cast<std::size_t>(A.nonZeros()));
+    words(A.valuePtr(), sizeof(double) * static_cast<std::size_t>(A.nonZeros()));
+  }
+};
+
+std::uint64_t checksum(const Modes& m) {
+  Hash h;
+  h.words(m.omega2.data(), sizeof(double) * static_cast<std::size_t>(m.omega2.size()));
+  h.words(m.phi.data(), sizeof(double) * static_cast<std::size_t>(m.phi.size()));
+  return h.h;
+}
+
+}  // namespace
+
+ModeStore::ModeStore(std::filesystem::path directory, std::uintmax_t max_bytes)
+    : dir_(std::move(directory)), max_bytes_(max_bytes) {}
+
+std::optional<ModeStore> ModeStore::from_environment() {
+  if (const char* v = std::getenv("INERTA_CACHE")) {
+    const std::string s = v;
+    if (s.empty() || s == "off" || s == "0" || s == "no") return std::nullopt;
+    return ModeStore(s);
+  }
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return ModeStore(std::filesystem::path(x) / "inerta" / "modes");
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return ModeStore(std::filesystem::path(home) / ".cache" / "inerta" / "modes");
+  return std::nullopt;
+}
+
+std::uint64_t ModeStore::key(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                             double cutoff_hz) {
+  Hash h;
+  h.words(kMagic, sizeof kMagic);
+  std::uint64_t c;
+  std::memcpy(&c, &cutoff_hz, 8);
+  h.word(c);
+  h.matrix(K);
+  h.matrix(M);
+  return h.h;
+}
+
+std::filesystem::path ModeStore::file(std::uint64_t key) const { return dir_ / fmt::format("modes-{:016x}.bin", key); }
+
+std::optional<Modes> ModeStore::load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                     double cutoff_hz) const {
+  const std::uint64_t k = key(K, M, cutoff_hz);
+  std::ifstream in(file(k), std::ios::binary);
+  if (!in) return std::nullopt;
+  Header hd{};
+  if (!in.read(reinterpret_cast<char*>(&hd), sizeof hd)) return std::nullopt;
+  if (std::memcmp(hd.magic, kMagic, sizeof kMagic) != 0 || hd.key != k || hd.n != K.rows() || hd.m < 0 ||
+      hd.m > hd.n || std::memcmp(&hd.cutoff, &cutoff_hz, 8) != 0)
+    return std::nullopt;
+  Modes m;
+  m.omega2.resize(hd.m);
+  m.phi.resize(hd.n, hd.m);
+  if (!in.read(reinterpret_cast<char*>(m.omega2.data()), static_cast<std::streamsize>(sizeof(double) * hd.m)) ||
+      !in.read(reinterpret_cast<char*>(m.phi.data()), static_cast<std::streamsize>(sizeof(double) * hd.n * hd.m)))
+    return std::nullopt;
+  if (in.peek() != std::char_traits<char>::eof() || checksum(m) != hd.checksum) return std::nullopt;
+  return m;
+}
+
+bool ModeStore::save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz,
+                     const Modes& modes) const noexcept {
+  try {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(dir_, ec);
+    if (ec) return false;
+    Header hd{};
+    std::memcpy(hd.magic, kMagic, sizeof kMagic);
+    hd.key = key(K, M, cutoff_hz);
+    hd.n = modes.phi.rows(), hd.m = modes.phi.cols();
+    hd.cutoff = cutoff_hz;
+    hd.checksum = checksum(modes);
+    static std::atomic<unsigned> counter{0};
+    const fs::path target = file(hd.key);
+    const fs::path tmp = dir_ / fmt::format(".{}.{}.{}.tmp", target.filename().string(), ::getpid(), counter++);
+    {
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      out.write(reinterpret_cast<const char*>(&hd), sizeof hd);
+      out.write(reinterpret_cast<const char*>(modes.omega2.data()),
+                static_cast<std::streamsize>(sizeof(double) * static_cast<std::size_t>(modes.omega2.size())));
+      out.write(reinterpret_cast<const char*>(modes.phi.data()),
+                static_cast<std::streamsize>(sizeof(double) * static_cast<std::size_t>(modes.phi.size())));
+      out.close();
+      if (!out) {
+        fs::remove(tmp, ec);
+        return false;
+      }
+    }
+    fs::rename(tmp, target, ec);
+    if (ec) {
+      fs::remove(tmp, ec);
+      return false;
+    }
+    // Keep the directory under max_bytes: the oldest files go first (never the one just written).
+    struct F {
+      fs::path p;
+      fs::file_time_type t;
+      std::uintmax_t size;
+    };
+    std::vector<F> files;
+    std::uintmax_t total = 0;
+    for (const auto& e : fs::directory_iterator(dir_, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.rfind("modes-", 0) != 0 || e.path().extension() != ".bin") continue;
+      const auto size = e.file_size(ec);
+      if (ec) continue;
+      files.push_back({e.path(), e.last_write_time(ec), size});
+      total += size;
+    }
+    std::sort(files.begin(), files.end(), [](const F& a, const F& b) { return a.t < b.t; });
+    for (const F& f : files) {
+      if (total <= max_bytes_) break;
+      if (f.p == target) continue;
+      if (fs::remove(f.p, ec)) total -= f.size;
+    }
+    return true;
+  } catch (...) {
+    return false;
+  }
+}
+
+}  // namespace inerta::catenary
