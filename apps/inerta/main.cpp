@@ -10,7 +10,9 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <numbers>
@@ -198,6 +200,7 @@ void append_number(std::string& s, double v) {
 struct CatenaryArgs {
   std::string catenary, unit = "ms", suspension, contact;
   std::vector<std::string> sets, params;
+  bool relaxed = false;  ///< relax --suspension at the operating point under the catenary (as a study)
 };
 
 network::Params parse_params(const std::vector<std::string>& list) {
@@ -230,6 +233,9 @@ std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::
   const auto [panto_sets, cat_sets] = io::split_overrides(path, c.sets);
   pantograph::Pantograph p = io::load_pantograph(path, panto_sets);
   if (no_centripetal) p.model.options.centripetal = false;
+  io::CatenaryFile cat = io::load_catenary(c.catenary, cat_sets);
+  if (!c.contact.empty())
+    cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
   if (!c.suspension.empty()) {
     network::Network net;
     try {
@@ -237,13 +243,14 @@ std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::
     } catch (const network::NetworkError& e) {
       throw ModelError(fmt::format("--suspension '{}': {}", c.suspension, e.what()));
     }
-    p.model = pantograph::with_suspension(p.model, net);
+    // --relaxed: at the actuator's length of the static equilibrium with the model's own suspension
+    // under this catenary, as a study's candidates (optim::operating_length); else the old network's.
+    p.model = pantograph::with_suspension(p.model, net, c.relaxed ? optim::operating_length(p, *cat.catenary, cat.contact) : -1);
   } else if (!c.params.empty()) {
     throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
+  } else if (c.relaxed) {
+    throw CLI::ValidationError("--relaxed", "needs --suspension LAYOUT");
   }
-  io::CatenaryFile cat = io::load_catenary(c.catenary, cat_sets);
-  if (!c.contact.empty())
-    cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
   return {p, cat};
 }
 
@@ -261,6 +268,9 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
       ->check(CLI::IsMember({"bilateral", "penalty"}));
   app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
   app->add_option("--param", c.params, "Suspension element value NAME=VALUE (repeatable)");
+  app->add_flag("--relaxed", c.relaxed,
+                "Relax the --suspension network at the static equilibrium with the model's own suspension under this "
+                "catenary, as a study's candidates (default: at the replaced network's reference length)");
 }
 
 struct SimulateArgs {
@@ -946,7 +956,33 @@ struct OptimiseArgs {
   std::string study, out;
   int map = 15;
   bool no_plots = false, force = false;
+  int workers = 0;        ///< > 0: a local Dask cluster of this many processes
+  std::string scheduler;  ///< a Dask scheduler's address
 };
+
+// `optimise --workers N | --scheduler ADDRESS`: the study on Dask, by the Python module's driver
+// (python/inerta/distributed.py), which this process becomes (exit code and Ctrl-C are its).
+int run_distributed(const OptimiseArgs& a) {
+  if (a.map != 15) throw InvalidArgument("--map: not available with --workers/--scheduler (the report uses the default map)");
+  std::vector<std::string> args{INERTA_PYTHON, "-m", "inerta.distributed", "optimise", a.study};
+  if (a.workers > 0) args.insert(args.end(), {"--workers", std::to_string(a.workers)});
+  else args.insert(args.end(), {"--scheduler", a.scheduler});
+  if (!a.out.empty()) args.insert(args.end(), {"--out", a.out});
+  if (a.force) args.push_back("--force");
+  if (a.no_plots) args.push_back("--no-plots");
+  const char* old = std::getenv("PYTHONPATH");
+  const std::string path = std::string(INERTA_PYTHON_DIR) + (old && *old ? std::string(":") + old : std::string());
+  ::setenv("PYTHONPATH", path.c_str(), 1);
+  ::setenv("INERTA_SOURCE_DIR", INERTA_SOURCE_DIR, 0);
+  std::vector<char*> argv;
+  for (auto& s : args) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  ::execv(INERTA_PYTHON, argv.data());
+  throw InvalidArgument(fmt::format("--workers/--scheduler: cannot run {} ({}); the distributed driver needs Debian's "
+                                    "python3 with python3-distributed (scripts/install-deps)",
+                                    INERTA_PYTHON, std::strerror(errno)));
+}
 
 // Draws the PNGs of an `optimise --out DIR` with scripts/plot-study (python3 + matplotlib); without
 // them, a note: the CSV files are complete either way.
@@ -973,6 +1009,7 @@ void draw_plots(const std::string& dir) {
 
 // Structure-based design (spec/07): optimise every layout of the study, print and write the table.
 int cmd_optimise(const OptimiseArgs& a) {
+  if (a.workers > 0 || !a.scheduler.empty()) return run_distributed(a);
   if (!a.out.empty()) io::prepare_output_folder(a.out, io::study_output_names(), a.force);  // before any computation
   if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
   optim::Study study = io::load_study(a.study);
@@ -982,9 +1019,18 @@ int cmd_optimise(const OptimiseArgs& a) {
                "a warm start from the best sub-network, periodic fast path\n",
                study.name, study.all->max_elements, study.layouts.size(), study.catenaries.size(), study.speeds.size(),
                study.search.starts, study.search.seed);
+  else if (study.coarse)
+    fmt::print("study {}: {} layouts; each searched on the coarse study ({} catenaries, {} speeds, {} starts, seed {}, {}), "
+               "then refined here ({} catenaries, {} speeds, {}; at most {} evaluations from the coarse optimum)\n",
+               study.name, study.layouts.size(), study.coarse->catenaries.size(), study.coarse->speeds.size(),
+               study.coarse->search.starts, study.coarse->search.seed,
+               study.coarse->method == optim::Study::Method::Time ? "time domain" : "periodic fast path",
+               study.catenaries.size(), study.speeds.size(),
+               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study.refine.max_evaluations);
   else
-    fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), periodic fast path\n", study.name,
-               study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed);
+    fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), {}\n", study.name,
+               study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed,
+               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path");
   const auto wall0 = std::chrono::steady_clock::now();
   const network::Network baseline = optim::default_suspension(study);
   const optim::StudyCost def = optim::evaluate(study, baseline);
@@ -1008,16 +1054,20 @@ int cmd_optimise(const OptimiseArgs& a) {
       }));
       if (tty) fmt::print("\r{:80}\r", "");
       const auto& r = results.back();
-      fmt::print("  {:<12} J = {:.4f} N after {} evaluations{}{}\n", layout, r.cost.J, r.evaluations,
-                 r.budget_exhausted ? " (budget exhausted: max_evaluations reached before min_step)" : "",
-                 r.unstable ? fmt::format("; {} unstable designs refused", r.unstable) : "");
+      if (study.coarse)
+        fmt::print("  {:<12} coarse J = {:.4f} N after {} evaluations; here {:.4f} N → refined {:.4f} N ({:+.1f} %) after {} "
+                   "evaluations{}{}\n",
+                   layout, r.coarse_cost.J, r.coarse_evaluations, r.coarse_here.J, r.cost.J,
+                   100 * (r.cost.J - r.coarse_here.J) / r.coarse_here.J, r.evaluations,
+                   r.budget_exhausted ? " (budget exhausted)" : "", r.cost.feasible ? "" : "; outside the limits: " + r.cost.violation);
+      else
+        fmt::print("  {:<12} J = {:.4f} N after {} evaluations{}{}{}\n", layout, r.cost.J, r.evaluations,
+                   r.budget_exhausted ? " (budget exhausted: max_evaluations reached before min_step)" : "",
+                   r.unstable ? fmt::format("; {} unstable designs refused", r.unstable) : "",
+                   r.cost.feasible ? "" : "; outside the limits: " + r.cost.violation);
     }
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  auto value = [](const network::Params& p, const char* k) {
-    auto it = p.find(k);
-    return it == p.end() ? std::string("-") : numerics::describe(it->second);
-  };
   if (study.all) {
     inerta::cli::print_structure(entries, def.J, "N");
     int evaluations = 0;
@@ -1052,20 +1102,7 @@ int cmd_optimise(const OptimiseArgs& a) {
       io::write_text_file(a.out + "/recheck.csv", csv);
     }
   } else {
-    fmt::print("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network", "b [kg]",
-               "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
-    bool marked = false;
-    for (const auto& r : results) {
-      auto v = [&](const char* k) {  // '*': ended on a search limit
-        const bool at = std::find(r.at_bounds.begin(), r.at_bounds.end(), k) != r.at_bounds.end();
-        marked = marked || at;
-        return value(r.values, k) + (at ? "*" : "");
-      };
-      fmt::print("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}{}\n", r.layout,
-                 r.expression, v("b"), v("c"), v("k"), r.cost.J, 100 * (r.cost.J - def.J) / def.J, r.cost.speed * 3.6,
-                 r.cost.mean, r.budget_exhausted ? "  budget exhausted" : "");
-    }
-    if (marked) fmt::print("  *: on a search limit (lo, hi, open or rigid)\n");
+    fmt::print("{}", io::study_table(study, def, results));
   }
   fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
              network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
@@ -1084,7 +1121,7 @@ int cmd_optimise(const OptimiseArgs& a) {
   if (study.all && !a.out.empty()) inerta::cli::write_structure(a.out, study.name, "J2", "N", def.J, entries, !a.no_plots);
   std::size_t best = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
-    if (results[i].cost.J < results[best].cost.J) best = i;
+    if (results[i].cost.penalised() < results[best].cost.penalised()) best = i;  // within the limits first
   if (!a.out.empty()) {
     io::write_study_results(a.out, study.name, def, results);
     fmt::print("wrote {}/results.csv and {}/results.json\n", a.out, a.out);
@@ -1129,12 +1166,17 @@ int cmd_optimise(const OptimiseArgs& a) {
         fmt::print("centripetal correction, {}: no inerter, nothing to correct\n", c.design.label);
     }
     if (!a.no_plots) draw_plots(a.out);
-  } else {
+  } else if (study.method == optim::Study::Method::Periodic) {
     check = optim::evaluate_time(study, network::resolve(results[best].layout, results[best].values));
   }
-  fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
-             results[best].layout, results[best].expression, check.J, check.speed * 3.6, results[best].cost.J,
-             100 * (results[best].cost.J - check.J) / check.J);
+  if (study.method == optim::Study::Method::Time)
+    fmt::print("best: {} ({}) — J2 = {:.3f} N at {:.0f} km/h (time domain){}\n", results[best].layout,
+               results[best].expression, results[best].cost.J, results[best].cost.speed * 3.6,
+               results[best].cost.feasible ? "" : "; no design keeps the limits: " + results[best].cost.violation);
+  else
+    fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
+               results[best].layout, results[best].expression, check.J, check.speed * 3.6, results[best].cost.J,
+               100 * (results[best].cost.J - check.J) / check.J);
   return 0;
 }
 
@@ -1275,6 +1317,10 @@ int main(int argc, char** argv) {
                   "Directory for results.csv/json, the figures' data (CSV) and their PNGs (scripts/plot-study)");
   opt->add_option("--map", oa.map, "J2 map over (b, k): N×N points (0: none)")->capture_default_str()->check(count_in(0, 200));
   opt->add_flag("--no-plots", oa.no_plots, "Write the figures' CSV files but do not draw the PNGs");
+  auto* workers = opt->add_option("--workers", oa.workers, "Run the layouts on a local Dask cluster of N processes (docs/distributed.md)")
+                      ->check(count_in(1, 1024));
+  opt->add_option("--scheduler", oa.scheduler, "Run the layouts on the Dask cluster of this scheduler, tcp://HOST:PORT")
+      ->excludes(workers);
   opt->add_flag("--force", oa.force,
                 "Use an --out folder that is not empty: the files a study writes there are removed first");
 

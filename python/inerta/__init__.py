@@ -11,6 +11,7 @@ rad; speeds in m/s (``kmh`` converts km/h), frequencies in Hz.
 from ._inerta import *  # noqa: F401,F403  (the compiled bindings)
 from ._inerta import __doc__ as _bindings_doc  # noqa: F401
 from . import _inerta
+from . import distributed  # noqa: F401  (Dask is imported only when used)
 
 __version__ = "0.1.0"
 
@@ -21,6 +22,22 @@ def kmh(v):
 
     a = np.asarray(v, dtype=float) / 3.6
     return float(a) if a.ndim == 0 else a
+
+
+def sweep(model, catenary, speeds, *, client=None, **kwargs):
+    """Speed sweep in the time domain (the library's sweep; docs/python.md). With ``client`` (a
+    dask.distributed.Client) each speed is a task on the cluster and the result equals the serial
+    sweep to the last bit (inerta.distributed.sweep; the model must come from a file, the catenary be
+    a file name or load_catenary's CatenaryFile). Other keywords: contact, positions, options, method,
+    rtol, atol, progress, as the library's sweep."""
+    if client is None:
+        return _inerta.sweep(model, catenary, speeds, **kwargs)
+    from . import distributed
+
+    return distributed.sweep(model, catenary, speeds, client, **kwargs)
+
+
+sweep.__doc__ += "\n\nThe library's sweep:\n" + (_inerta.sweep.__doc__ or "")
 
 
 def plot_sweep(result, ax=None, label=None, unit="kmh", **kwargs):
@@ -54,4 +71,4 @@ def plot_result(result, names=None, ax=None, **kwargs):
     return ax
 
 
-__all__ = [n for n in dir(_inerta) if not n.startswith("_")] + ["kmh", "plot_sweep", "plot_result"]
+__all__ = [n for n in dir(_inerta) if not n.startswith("_")] + ["kmh", "plot_sweep", "plot_result", "sweep"]

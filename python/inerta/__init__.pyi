@@ -15,3 +15,7 @@ def kmh(v: Any) -> Any:
 def plot_sweep(result: SweepResult, ax: Any = None, label: Optional[str] = None, unit: str = "kmh",
                **kwargs: Any) -> Any: ...
 def plot_result(result: Result, names: Optional[Sequence[str]] = None, ax: Any = None, **kwargs: Any) -> Any: ...
+def sweep(model: Any, catenary: Any, speeds: Any, *, client: Any = None, contact: Any = None, positions: Any = None,
+          options: Any = None, method: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None,
+          progress: Any = None) -> SweepResult:
+    """Speed sweep in the time domain; with client (dask.distributed.Client) one task per speed."""

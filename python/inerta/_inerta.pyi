@@ -568,6 +568,10 @@ class CatenaryFile:
     def contact(self) -> Contact: ...
     @property
     def fe(self) -> Optional[FeCatenaryData]: ...
+    @property
+    def path(self) -> str: ...
+    @property
+    def overrides(self) -> list[str]: ...
     def describe(self) -> str: ...
 
 def load_catenary(path: PathLike, overrides: Overrides = None) -> CatenaryFile: ...
@@ -937,6 +941,7 @@ class SpeedResult:
     filtered: list[ContactStatistics]
 
 class SweepResult:
+    def __init__(self, results: Sequence[SpeedResult], wall_s: float = 0.0, method: str = "time") -> None: ...
     def __len__(self) -> int: ...
     def __getitem__(self, i: int) -> SpeedResult: ...
     @property
@@ -1088,6 +1093,18 @@ def catenary_response(catenary: Union[LumpedCatenary, CatenaryLike], fp: ArrayLi
                       settle: float = 60.0, periods: int = 10) -> CatenaryResponses: ...
 
 # ---- studies -----------------------------------------------------------------------------------------
+class ContactLimits:
+    mean_min: float
+    mean_max: float
+    loss_max: float
+    statistical_min: float
+    uplift_max: float
+    def any(self) -> bool: ...
+
+class ElementBounds:
+    lo: float
+    hi: float
+
 class Study:
     def __init__(self, pantograph: Model, catenaries: Union[CatenaryLike, Sequence[CatenaryLike]],
                  speeds: ArrayLike, layouts: Sequence[str], *, contact: ContactLike = None,
@@ -1109,6 +1126,15 @@ class Study:
     hi: float
     harmonics: int
     operating_length: list[float]
+    @property
+    def method(self) -> str: ...
+    limits: ContactLimits
+    bounds: dict[str, ElementBounds]
+    @property
+    def coarse(self) -> Optional[Study]: ...
+    refine: SearchOptions
+    @property
+    def all_networks(self) -> bool: ...
     def replace(self, *, speeds: Optional[ArrayLike] = None, layouts: Optional[Sequence[str]] = None,
                 search: Optional[SearchOptions] = None, lo: Optional[float] = None, hi: Optional[float] = None,
                 harmonics: Optional[int] = None, name: Optional[str] = None) -> Study: ...
@@ -1122,6 +1148,15 @@ class StudyCost:
     mean: float
     catenary: int
     unstable_speed: float
+    excess: float
+    feasible: bool
+    violation: str
+    mean_min: float
+    mean_max: float
+    loss_pct: float
+    statistical_min: float
+    uplift: float
+    def penalised(self) -> float: ...
 
 class LayoutResult:
     layout: str
@@ -1132,12 +1167,21 @@ class LayoutResult:
     unstable: int
     budget_exhausted: bool
     at_bounds: list[str]
+    coarse_values: dict[str, float]
+    coarse_cost: StudyCost
+    coarse_here: StudyCost
+    coarse_evaluations: int
     def network(self) -> Network: ...
 
 def default_suspension(study: Study) -> Network: ...
 def evaluate(study: Study, network: NetworkLike, params: Optional[Params] = None) -> StudyCost: ...
 def evaluate_time(study: Study, network: NetworkLike, params: Optional[Params] = None) -> StudyCost: ...
 def free_parameters(layout: str) -> list[str]: ...
+def cost_of(study: Study, sweeps: Sequence[Sequence[SpeedResult]]) -> StudyCost: ...
+def search_variables(study: Study, layout: str) -> list[Variable]: ...
+def study_table(study: Study, default_cost: StudyCost, results: Sequence[LayoutResult]) -> str: ...
+def prepare_output_folder(dir: PathLike, owned: Sequence[str], force: bool) -> None: ...
+def study_output_names() -> list[str]: ...
 def optimise_layout(study: Study, layout: str, *,
                     progress: Optional[Callable[[int, int, float], None]] = None) -> LayoutResult: ...
 

@@ -191,7 +191,18 @@ void bind_analysis(py::module_& m) {
       .def_readonly("samples", &analysis::ContactStatistics::samples)
       .def("__repr__", [](const analysis::ContactStatistics& s) {
         return fmt::format("ContactStatistics(mean={:.4g} N, std={:.4g} N, loss={:.3g} %)", s.mean, s.std, s.loss_pct);
-      });
+      })
+      .def(py::pickle(  // exact: every field, as Python floats (Dask, docs/distributed.md)
+          [](const analysis::ContactStatistics& s) {
+            return py::make_tuple(s.mean, s.std, s.max, s.min, s.stat_max, s.stat_min, s.loss_pct, s.samples);
+          },
+          [](const py::tuple& t) {
+            analysis::ContactStatistics s;
+            s.mean = t[0].cast<double>(), s.std = t[1].cast<double>(), s.max = t[2].cast<double>();
+            s.min = t[3].cast<double>(), s.stat_max = t[4].cast<double>(), s.stat_min = t[5].cast<double>();
+            s.loss_pct = t[6].cast<double>(), s.samples = t[7].cast<long>();
+            return s;
+          }));
   m.def("statistics", [](const py::object& F) { return analysis::statistics(doubles(F)); }, py::arg("F"),
         "Contact statistics (spec/06 §6.1) of a contact-force array (N).");
 
@@ -400,11 +411,32 @@ void bind_analysis(py::module_& m) {
       .def("__repr__", [](const analysis::SpeedResult& s) {
         return fmt::format("SpeedResult(v = {:.4g} m/s, σ = {:.4g} N, mean = {:.4g} N)", s.speed, s.stats.std,
                            s.stats.mean);
-      });
+      })
+      .def(py::pickle(
+          [](const analysis::SpeedResult& s) {
+            return py::make_tuple(s.speed, s.stats, s.contacts, s.spans, s.sigma_change, s.converged, s.floquet, s.t, s.F,
+                                  s.support_x, s.support_uplift, s.filtered);
+          },
+          [](const py::tuple& t) {
+            analysis::SpeedResult s;
+            s.speed = t[0].cast<double>(), s.stats = t[1].cast<analysis::ContactStatistics>();
+            s.contacts = t[2].cast<std::vector<analysis::ContactStatistics>>(), s.spans = t[3].cast<int>();
+            s.sigma_change = t[4].cast<double>(), s.converged = t[5].cast<bool>(), s.floquet = t[6].cast<double>();
+            s.t = t[7].cast<std::vector<double>>(), s.F = t[8].cast<std::vector<double>>();
+            s.support_x = t[9].cast<std::vector<double>>(), s.support_uplift = t[10].cast<std::vector<double>>();
+            s.filtered = t[11].cast<std::vector<analysis::ContactStatistics>>();
+            return s;
+          }));
 
   py::class_<SweepResult>(m, "SweepResult",
                           "Contact statistics over speeds: NumPy arrays speed (m/s), mean, std, max, min, stat_max, "
                           "stat_min (N), loss_pct (%), spans, sigma_change; r[i] is the SpeedResult of speed i.")
+      .def(py::init([](std::vector<analysis::SpeedResult> r, double wall_s, const std::string& method) {
+             if (method != "time" && method != "periodic") throw py::value_error("method: expected 'time' or 'periodic'");
+             return SweepResult{std::move(r), wall_s, method};
+           }),
+           py::arg("results"), py::arg("wall_s") = 0.0, py::arg("method") = "time",
+           "A sweep from its speeds' results (inerta.sweep(..., client=c) gathers them from Dask workers).")
       .def("__len__", [](const SweepResult& s) { return s.r.size(); })
       .def("__getitem__", [](const SweepResult& s, long i) {
         const long n = static_cast<long>(s.r.size());

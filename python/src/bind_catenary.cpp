@@ -183,6 +183,17 @@ void bind_catenary(py::module_& m) {
                              "the catenary (None after read_catenary_file for a finite-element file)")
       .def_readonly("contact", &io::CatenaryFile::contact)
       .def_readonly("fe", &io::CatenaryFile::fe, "type finite_element: the data it was made from, else None")
+      .def_readonly("path", &io::CatenaryFile::path, "the file it was read from")
+      .def_readonly("overrides", &io::CatenaryFile::overrides, "the overrides applied, NAME.KEY=VALUE")
+      .def(py::pickle(  // a Dask worker reads the same file again (docs/distributed.md): the path must be visible there
+          [](const io::CatenaryFile& f) {
+            if (f.path.empty() || !f.catenary)
+              throw py::type_error("this CatenaryFile was not read by load_catenary, so it cannot be sent to another process");
+            return py::make_tuple(f.path, f.overrides);
+          },
+          [](const py::tuple& t) {
+            return io::load_catenary(t[0].cast<std::string>(), t[1].cast<std::vector<std::string>>());
+          }))
       .def("describe", [](const io::CatenaryFile& f) { return f.catenary ? f.catenary->describe() : f.name; })
       .def("__repr__", [](const io::CatenaryFile& f) {
         return fmt::format("CatenaryFile('{}': {}, {} contact)", f.name, f.catenary ? f.catenary->describe() : "not made",

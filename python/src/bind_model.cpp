@@ -1,6 +1,7 @@
 // Models: loading with overrides, inspection, transformations, and the multibody functions that
 // work on one state (assembly, equilibrium, accelerations, energies, outputs, integration).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <fstream>
 #include <sstream>
@@ -397,6 +398,17 @@ void bind_model(py::module_& m) {
                     "joint (pantograph::Pantograph). Change parameters with with_overrides (the file is read again) "
                     "and transform it with with_options, with_suspension, release_head, without_joint: each returns "
                     "a new Model.")
+      .def(py::pickle(  // the file's text and overrides, read again in the other process (Dask workers)
+          [](const Model& h) {
+            if (h.text.empty() || !h.transforms.empty())
+              throw py::type_error(fmt::format(
+                  "model '{}' cannot be sent to another process: {}; load it from a file and change it with overrides",
+                  h.model().name, h.text.empty() ? "it was not read from a file" : "it was transformed (" + fmt::format("{}", fmt::join(h.history, ", ")) + ")"));
+            return py::make_tuple(h.text, h.source, h.override_list());
+          },
+          [](const py::tuple& t) {
+            return parse_model_handle(t[0].cast<std::string>(), t[1].cast<std::string>(), t[2].cast<std::vector<std::string>>());
+          }))
       .def_property_readonly("name", [](const Model& h) { return h.model().name; })
       .def_property_readonly("source", [](const Model& h) { return h.source; }, "the file it was read from")
       .def_property_readonly("text", [](const Model& h) { return h.text; }, "the file's text ('' if not from a file)")

@@ -4,6 +4,7 @@
 
 #include "common.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/io/json.hpp"
 #include "inerta/io/study_file.hpp"
 #include "inerta/io/study_report.hpp"
@@ -76,6 +77,16 @@ Study make_study(const Model& pantograph, const py::object& catenaries, const py
 }  // namespace
 
 void bind_optim(py::module_& m) {
+  py::class_<optim::ContactLimits>(m, "ContactLimits", "Hard limits of a study over every catenary and speed; NaN: none.")
+      .def_readonly("mean_min", &optim::ContactLimits::mean_min, "N")
+      .def_readonly("mean_max", &optim::ContactLimits::mean_max, "N")
+      .def_readonly("loss_max", &optim::ContactLimits::loss_max, "%")
+      .def_readonly("statistical_min", &optim::ContactLimits::statistical_min, "N, F_m − 3σ at least")
+      .def_readonly("uplift_max", &optim::ContactLimits::uplift_max, "m, support uplift at most")
+      .def("any", &optim::ContactLimits::any);
+  py::class_<optim::ElementBounds>(m, "ElementBounds", "The physical range [lo, hi] of one kind of element, SI.")
+      .def_readonly("lo", &optim::ElementBounds::lo)
+      .def_readonly("hi", &optim::ElementBounds::hi);
   py::class_<Study>(m, "Study",
                     "A structure-based suspension design study (spec/07): a pantograph, catenary variants, speeds "
                     "(m/s), candidate layouts and the search options. From a file with load_study, or from Python "
@@ -99,6 +110,16 @@ void bind_optim(py::module_& m) {
       .def_readonly("lo", &Study::lo)
       .def_readonly("hi", &Study::hi)
       .def_readonly("harmonics", &Study::harmonics)
+      .def_property_readonly("method", [](const Study& s) { return s.method == Study::Method::Time ? "time" : "periodic"; },
+                             "how J2 is computed: 'periodic' (fast path, lumped catenary) or 'time' (time domain)")
+      .def_readonly("limits", &Study::limits)
+      .def_readonly("bounds", &Study::bounds, "per element kind ('b', 'c', 'k'): its ElementBounds")
+      .def_property_readonly("coarse", [](const Study& s) -> py::object {
+        return s.coarse ? py::cast(*s.coarse) : py::none();
+      }, "multi-fidelity: the coarse study each layout is first searched on, or None")
+      .def_readonly("refine", &Study::refine, "multi-fidelity: the refinement's search options")
+      .def_property_readonly("all_networks", [](const Study& s) { return s.all.has_value(); },
+                             "`layouts: all`: the layouts are every network the study's networks options allow")
       .def_readonly("operating_length", &Study::operating_length,
                     "m, per catenary: the actuator's length at the static equilibrium with the model's suspension")
       .def("replace", [](const Study& s, const py::object& speeds, const py::object& layouts, const py::object& search,
@@ -133,9 +154,34 @@ void bind_optim(py::module_& m) {
       .def_readonly("catenary", &optim::StudyCost::catenary, "index of the worst catenary")
       .def_readonly("unstable_speed", &optim::StudyCost::unstable_speed,
                     "> 0: the periodic solution is unstable at this speed, m/s (J = inf, infeasible)")
+      .def("penalised", &optim::StudyCost::penalised,
+           "what the search minimises and designs rank by: J within the study's limits, else 1e100 (1 + excess)")
+      .def_readonly("excess", &optim::StudyCost::excess, "Σ relative excess of the limits broken")
+      .def_readonly("feasible", &optim::StudyCost::feasible, "every limit of the study kept")
+      .def_readonly("violation", &optim::StudyCost::violation, "the worst limit broken, in words ('' if feasible)")
+      .def_readonly("mean_min", &optim::StudyCost::mean_min, "lowest mean contact force over catenaries and speeds, N")
+      .def_readonly("mean_max", &optim::StudyCost::mean_max, "highest mean contact force, N")
+      .def_readonly("loss_pct", &optim::StudyCost::loss_pct, "largest contact loss, %")
+      .def_readonly("statistical_min", &optim::StudyCost::statistical_min, "lowest F_m − 3σ, N")
+      .def_readonly("uplift", &optim::StudyCost::uplift, "largest support uplift (a finite line), m; NaN otherwise")
       .def("__repr__", [](const optim::StudyCost& c) {
-        return fmt::format("StudyCost(J={:.4f} N at {:.4g} km/h, catenary {})", c.J, c.speed * 3.6, c.catenary);
-      });
+        return fmt::format("StudyCost(J={:.4f} N at {:.4g} km/h, catenary {}{})", c.J, c.speed * 3.6, c.catenary,
+                           c.feasible ? "" : "; outside the limits: " + c.violation);
+      })
+      .def(py::pickle(  // exact (Dask workers return their layouts' results, docs/distributed.md)
+          [](const optim::StudyCost& c) {
+            return py::make_tuple(c.J, c.excess, c.feasible, c.violation, c.mean_min, c.mean_max, c.loss_pct,
+                                  c.statistical_min, c.uplift, c.speed, c.mean, c.catenary, c.unstable_speed);
+          },
+          [](const py::tuple& t) {
+            optim::StudyCost c;
+            c.J = t[0].cast<double>(), c.excess = t[1].cast<double>(), c.feasible = t[2].cast<bool>();
+            c.violation = t[3].cast<std::string>(), c.mean_min = t[4].cast<double>(), c.mean_max = t[5].cast<double>();
+            c.loss_pct = t[6].cast<double>(), c.statistical_min = t[7].cast<double>(), c.uplift = t[8].cast<double>();
+            c.speed = t[9].cast<double>(), c.mean = t[10].cast<double>(), c.catenary = t[11].cast<int>();
+            c.unstable_speed = t[12].cast<double>();
+            return c;
+          }));
   py::class_<optim::LayoutResult>(m, "LayoutResult", "The optimum of one layout.")
       .def_readonly("layout", &optim::LayoutResult::layout)
       .def_readonly("expression", &optim::LayoutResult::expression)
@@ -145,8 +191,27 @@ void bind_optim(py::module_& m) {
       .def_readonly("unstable", &optim::LayoutResult::unstable, "designs the search refused as unstable")
       .def_readonly("budget_exhausted", &optim::LayoutResult::budget_exhausted, "the search stopped at max_evaluations")
       .def_readonly("at_bounds", &optim::LayoutResult::at_bounds, "free values that ended on the search's limits")
+      .def_readonly("coarse_values", &optim::LayoutResult::coarse_values, "multi-fidelity: the coarse study's optimum")
+      .def_readonly("coarse_cost", &optim::LayoutResult::coarse_cost, "multi-fidelity: its cost on the coarse study")
+      .def_readonly("coarse_here", &optim::LayoutResult::coarse_here, "multi-fidelity: its cost here, before the refinement")
+      .def_readonly("coarse_evaluations", &optim::LayoutResult::coarse_evaluations)
       .def("network", [](const optim::LayoutResult& r) { return network::resolve(r.layout, r.values); },
            "the bound network of the optimum")
+      .def(py::pickle(
+          [](const optim::LayoutResult& r) {
+            return py::make_tuple(r.layout, r.expression, r.values, r.cost, r.evaluations, r.unstable, r.budget_exhausted,
+                                  r.at_bounds, r.coarse_values, r.coarse_cost, r.coarse_here, r.coarse_evaluations);
+          },
+          [](const py::tuple& t) {
+            optim::LayoutResult r;
+            r.layout = t[0].cast<std::string>(), r.expression = t[1].cast<std::string>();
+            r.values = t[2].cast<network::Params>(), r.cost = t[3].cast<optim::StudyCost>();
+            r.evaluations = t[4].cast<int>(), r.unstable = t[5].cast<int>(), r.budget_exhausted = t[6].cast<bool>();
+            r.at_bounds = t[7].cast<std::vector<std::string>>(), r.coarse_values = t[8].cast<network::Params>();
+            r.coarse_cost = t[9].cast<optim::StudyCost>(), r.coarse_here = t[10].cast<optim::StudyCost>();
+            r.coarse_evaluations = t[11].cast<int>();
+            return r;
+          }))
       .def("__repr__", [](const optim::LayoutResult& r) {
         return fmt::format("LayoutResult('{}', J={:.4f} N, {} evaluations)", r.layout, r.cost.J, r.evaluations);
       });
@@ -158,12 +223,18 @@ void bind_optim(py::module_& m) {
     return run(py::none(), [&](Call&) { return optim::evaluate(s, n); });
   }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
         "J2 of the pantograph with its suspension replaced by `network` (a Network, or a layout/expression with "
-        "`params`), by the periodic fast path (optim::evaluate).");
+        "`params`), by the study's method (the periodic fast path, or the time domain on a finite-element line) "
+        "with its limits (optim::evaluate).");
   m.def("evaluate_time", [](const Study& s, const py::object& net, const py::object& params) {
     const network::Network n = net_arg(net, params);
     return run(py::none(), [&](Call&) { return optim::evaluate_time(s, n); });
   }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
         "J2 by the time-domain reference (analysis::sweep per catenary; all cores).");
+  m.def("cost_of", &optim::cost_of, py::arg("study"), py::arg("sweeps"),
+        "The study's cost of one SpeedResult list per catenary (its limits applied): J2, penalised, feasible, "
+        "violation and the limited quantities.");
+  m.def("search_variables", &optim::search_variables, py::arg("study"), py::arg("layout"),
+        "The search variables of a layout's free elements (the study's range or its element kind's bounds).");
   m.def("free_parameters", &optim::free_parameters, py::arg("layout"),
         "The element names of a layout that the optimiser varies.");
   m.def("optimise_layout", [](const Study& s, const std::string& layout, const py::object& progress) {
@@ -303,6 +374,12 @@ void bind_optim(py::module_& m) {
     return io::write_study_results(path_arg(dir), study, def, results);
   }, py::arg("dir"), py::arg("study"), py::arg("default_cost"), py::arg("results"),
         "Writes DIR/results.csv and DIR/results.json (as `inerta optimise --out`).");
+  m.def("prepare_output_folder", &io::prepare_output_folder, py::arg("dir"), py::arg("owned"), py::arg("force"),
+        "Creates a study's output folder; refuses one that holds files unless force, which removes the `owned` "
+        "files in it first (io::prepare_output_folder, as `inerta optimise --out`/--force).");
+  m.def("study_output_names", &io::study_output_names, "The files `inerta optimise` may write in its --out folder.");
+  m.def("study_table", &io::study_table, py::arg("study"), py::arg("default_cost"), py::arg("results"),
+        "The table `inerta optimise` prints for named layouts (io::study_table), as text.");
   m.def("study_results_json", [](const std::string& study, const optim::StudyCost& def,
                                  const std::vector<optim::LayoutResult>& results) {
     return py::module_::import("json").attr("loads")(io::json_text(io::study_results_json(study, def, results)));

@@ -292,6 +292,13 @@ BOUND = {
     "io::write_study_report": "write_study_report",
     "io::write_study_results": "write_study_results",
     "io::study_results_json": "study_results_json",
+    "io::study_table": "study_table",
+    "io::study_output_names": "study_output_names",
+    "io::prepare_output_folder": "prepare_output_folder",
+    "optim::ContactLimits": "ContactLimits",
+    "optim::ElementBounds": "ElementBounds",
+    "optim::cost_of": "cost_of",
+    "optim::search_variables": "search_variables",
 }
 
 _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the right-hand side (about a "
@@ -359,6 +366,8 @@ EXCLUDED = {
     "catenary::FeWindowModes": "the decomposition of a window (see FeModalLine)",
     "catenary::BandInverse": "numerical kernel of the modal solve's residual flexibility",
     "catenary::Modes": "result of lowest_modes (see there)",
+    "optim::operating_length": "the operating point of `--relaxed` (CLI); Study.operating_length holds it per "
+                               "catenary",
     "catenary::ModeStore": "the on-disk store of decompositions, chosen by the environment (INERTA_CACHE), "
                            "used by every FeCatenary the module makes",
     "catenary::lowest_modes": "numerical kernel of the modal solve (Lanczos spectrum slicing), tested in C++",
@@ -373,8 +382,6 @@ EXCLUDED = {
     "numerics::FloquetBasis": "a speed sweep's reuse of one eigendecomposition (analysis/periodic.cpp); Python has floquet(A, b, r, T)",
     "io::check_output_path": "see io::OutputFile",
     "io::read_input_text": "see io::OutputFile; the loaders that use it are bound",
-    "io::study_output_names": "the CLI's `optimise --out` folder handling",
-    "io::prepare_output_folder": "the CLI's `optimise --out` folder handling",
     "io::remove_partial_outputs_on_signal": "the CLI's signal handlers (the Python module leaves SIGINT to Python)",
     "io::check_unique_keys": "internal helper of the YAML readers",
     "io::yaml_number_in": "internal helper of the YAML readers",

@@ -132,3 +132,42 @@ def test_maps_and_helpers(study, hsx):
     assert len(h) == 2 and h[0].t.shape == h[0].F.shape and h[0].stats.std > 0
     curves = inerta.sigma_curves_time(study.replace(speeds=[200 / 3.6]), base, centripetal=False)
     assert curves[0].sigma[0] > 0
+
+
+def test_limits_bounds_and_the_table(tmp_path):
+    """Studies with limits and element bounds (issue 24): the same rules as the CLI's, from Python."""
+    from conftest import SRC
+
+    p = tmp_path / "limits.yaml"
+    p.write_text(f"""name: limits
+model: {SRC}/models/hsx.yaml
+catenary: {SRC}/models/catenary.yaml
+speeds: {{from: 100, to: 300, step: 100, unit: kmh}}
+search: {{starts: 1, seed: 3, min_step: 0.2}}
+limits: {{mean: [60, 80], contact_loss: 0}}
+bounds: {{inerter: [0.1, 1000]}}
+layouts: [S2-default, S2-3]
+""")
+    s = inerta.load_study(p)
+    assert s.method == "periodic" and s.coarse is None and not s.all_networks
+    assert s.limits.mean_min == 60 and s.limits.any() and s.bounds["b"].hi == 1000
+    b, c = inerta.search_variables(s, "S2-3")
+    assert (b.name, b.hi, b.can_rigid) == ("b", 1000, False) and c.can_rigid
+    sweeps = [inerta.sweep_periodic(s.pantograph, s.catenaries[0], s.speeds).results]
+    cost = inerta.cost_of(s, sweeps)
+    assert cost.J == max(r.stats.std for r in sweeps[0]) and cost.feasible and cost.penalised() == cost.J
+    default = inerta.evaluate(s, inerta.default_suspension(s))
+    assert default.J == pytest.approx(cost.J, rel=1e-9)  # the default suspension relaxed there is the model's own
+    results = [inerta.optimise_layout(s, l) for l in s.layouts]
+    assert results[1].values["b"] <= 1000
+    table = inerta.study_table(s, default, results)
+    assert "S2-3" in table and "limits (every catenary and speed): mean 60–80 N; contact loss ≤ 0 %" in table
+    names = inerta.study_output_names()
+    assert "results.csv" in names and "checkpoint.pkl" in names
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "mine.txt").write_text("a user's file")
+    with pytest.raises(inerta.InvalidArgument):
+        inerta.prepare_output_folder(str(out), names, False)
+    inerta.prepare_output_folder(str(out), names, True)
+    assert (out / "mine.txt").exists()

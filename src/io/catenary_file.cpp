@@ -513,7 +513,7 @@ CatenaryFile read_catenary(const std::string& path, const std::vector<std::strin
     make(c, path);  // the file's own values are valid
   }
   for (const std::string& o : overrides) apply_override(c, o);
-  CatenaryFile f{c.name, make(c, overrides.empty() ? path : path + " (after --set)", make_fe), c.contact, std::nullopt};
+  CatenaryFile f{c.name, make(c, overrides.empty() ? path : path + " (after --set)", make_fe), c.contact, std::nullopt, {}, {}};
   if (c.type == Type::FiniteElement) f.fe = c.fe;
   return f;
 }
@@ -529,7 +529,9 @@ CatenaryFile guarded(const std::string& path, const std::vector<std::string>& ov
 }  // namespace
 
 CatenaryFile load_catenary(const std::string& path, const std::vector<std::string>& overrides) {
-  return guarded(path, overrides, true);
+  CatenaryFile f = guarded(path, overrides, true);
+  f.path = path, f.overrides = overrides;
+  return f;
 }
 
 CatenaryFile read_catenary_file(const std::string& path, const std::vector<std::string>& overrides) {

@@ -19,19 +19,96 @@ namespace inerta::io {
 namespace {
 constexpr double max_study_speeds = 10000;
 
-optim::Study read_study(const std::string& path) {
-  const YAML::Node loaded = yaml_load_file(path, "study file");
-  const YAML::Node& root = loaded;
+// `limits: {mean: [lo, hi], contact_loss: %, statistical_min: N, support_uplift: m}` (optim::ContactLimits).
+optim::ContactLimits read_limits(const std::string& path, const YAML::Node& n) {
+  optim::ContactLimits l;
+  if (!n.IsMap()) yaml_fail(path, n, "limits", "expected a map of mean, contact_loss, statistical_min, support_uplift");
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    const YAML::Node v = it->second;
+    if (k == "mean") {
+      if (!v.IsSequence() || v.size() != 2) yaml_fail(path, v, k, "expected [lo, hi], N");
+      l.mean_min = yaml_number(path, v[0], k), l.mean_max = yaml_number(path, v[1], k);
+      if (!(l.mean_min > 0) || !(l.mean_max > l.mean_min)) yaml_fail(path, v, k, "expected 0 < lo < hi (N)");
+    } else if (k == "contact_loss") {
+      l.loss_max = yaml_number_in(path, v, k, 0, 100, "a percentage from 0 to 100");
+    } else if (k == "statistical_min") {
+      l.statistical_min = yaml_number(path, v, k);
+    } else if (k == "support_uplift") {
+      l.uplift_max = yaml_number_in(path, v, k, 1e-6, 10, "> 0 (m)");
+    } else {
+      yaml_fail(path, it->first, k, "unknown key in limits; expected mean, contact_loss, statistical_min, support_uplift");
+    }
+  }
+  return l;
+}
+
+// `bounds: {inerter: [lo, hi], damper: [lo, hi], spring: [lo, hi]}`, SI; hi may be .inf.
+std::map<char, optim::ElementBounds> read_bounds(const std::string& path, const YAML::Node& n) {
+  std::map<char, optim::ElementBounds> b;
+  if (!n.IsMap()) yaml_fail(path, n, "bounds", "expected a map of inerter, damper, spring: [lo, hi]");
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    const YAML::Node v = it->second;
+    const char kind = k == "inerter" ? 'b' : k == "damper" ? 'c' : k == "spring" ? 'k' : 0;
+    if (!kind) yaml_fail(path, it->first, k, "unknown element kind in bounds; expected inerter (kg), damper (N·s/m), spring (N/m)");
+    if (!v.IsSequence() || v.size() != 2) yaml_fail(path, v, k, "expected [lo, hi] in SI units (hi may be .inf)");
+    optim::ElementBounds e;
+    e.lo = yaml_number(path, v[0], k);
+    const bool inf = v[1].IsScalar() && (v[1].Scalar() == ".inf" || v[1].Scalar() == "inf");
+    e.hi = inf ? INFINITY : yaml_number(path, v[1], k);
+    if (!(e.lo > 0) || !(e.hi > e.lo)) yaml_fail(path, v, k, "expected 0 < lo < hi (an element can always be left out: 0)");
+    b[kind] = e;
+  }
+  return b;
+}
+
+// The search options of `search:` (starts, seed, lo, hi, min_step, max_evaluations) or `refine:`
+// (initial_step, min_step, max_evaluations).
+void read_search(const std::string& path, const YAML::Node& se, optim::Study& s, bool refine) {
+  numerics::Options& o = refine ? s.refine : s.search;
+  if (!se.IsMap()) yaml_fail(path, se, refine ? "refine" : "search", "expected a map");
+  for (auto it = se.begin(); it != se.end(); ++it) {
+    const std::string k = it->first.as<std::string>();
+    const YAML::Node v = it->second;
+    if (k == "starts" && !refine)
+      o.starts = static_cast<int>(yaml_integer(path, v, k, 1, 10000));
+    else if (k == "seed" && !refine)
+      o.seed = static_cast<unsigned>(yaml_integer(path, v, k, 0, 4294967295L));
+    else if (k == "lo" && !refine)
+      s.lo = yaml_number(path, v, k);
+    else if (k == "hi" && !refine)
+      s.hi = yaml_number(path, v, k);
+    else if (k == "initial_step" && refine)
+      o.initial_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
+    else if (k == "min_step")
+      o.min_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
+    else if (k == "max_evaluations")
+      o.max_evaluations = static_cast<int>(yaml_integer(path, v, k, 1, 100000000));
+    else
+      yaml_fail(path, it->first, k,
+                refine ? "unknown key in refine; expected initial_step, min_step, max_evaluations"
+                       : "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
+  }
+  if (!refine && (!(s.lo > 0) || !(s.hi > s.lo))) yaml_fail(path, se, "search", "expected 0 < lo < hi (SI units)");
+  if (o.initial_step < o.min_step) {
+    if (refine) yaml_fail(path, se, "refine", "expected min_step <= initial_step (decades)");
+    o.initial_step = o.min_step;
+  }
+}
+
+optim::Study read_study(const std::string& path, const YAML::Node& root, bool coarse) {
   if (!root.IsMap()) yaml_fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string k = it->first.as<std::string>();
-    static const char* allowed[] = {"name",   "model",   "catenary", "catenaries",
-                                    "speeds", "layouts", "search",   "harmonics", "objective", "networks", "admittance"};
+    static const char* allowed[] = {"name",      "model",     "catenary", "catenaries", "speeds", "layouts",
+                                    "search",    "harmonics", "objective", "networks",  "admittance", "method",
+                                    "limits",    "bounds",    "coarse",   "refine"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
       yaml_fail(path, it->first, k,
                     "unknown key; expected name, model, catenary, catenaries, speeds, layouts, networks, admittance, search, "
-                    "harmonics, objective");
+                    "harmonics, objective, method, limits, bounds, coarse, refine");
   }
   if (const YAML::Node o = root["objective"]; o.IsDefined()) {  // optional: a pantograph study's objective is J2
     if (!o.IsMap() || o.size() != 1 || !o["type"].IsDefined() || !o["type"].IsScalar() || o["type"].Scalar() != "j2")
@@ -100,31 +177,58 @@ optim::Study read_study(const std::string& path) {
     }
     s.layouts.push_back(name);
   }
-  if (const YAML::Node se = root["search"]; se.IsDefined()) {
-    for (auto it = se.begin(); it != se.end(); ++it) {
-      const std::string k = it->first.as<std::string>();
-      const YAML::Node v = it->second;
-      if (k == "starts")
-        s.search.starts = static_cast<int>(yaml_integer(path, v, k, 1, 10000));
-      else if (k == "seed")
-        s.search.seed = static_cast<unsigned>(yaml_integer(path, v, k, 0, 4294967295L));
-      else if (k == "lo")
-        s.lo = yaml_number(path, v, k);
-      else if (k == "hi")
-        s.hi = yaml_number(path, v, k);
-      else if (k == "min_step")
-        s.search.min_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
-      else if (k == "max_evaluations")
-        s.search.max_evaluations = static_cast<int>(yaml_integer(path, v, k, 1, 100000000));
-      else
-        yaml_fail(path, it->first, k,
-                      "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
-    }
-    if (!(s.lo > 0) || !(s.hi > s.lo)) yaml_fail(path, se, "search", "expected 0 < lo < hi (SI units)");
-    if (s.search.initial_step < s.search.min_step) s.search.initial_step = s.search.min_step;
-  }
+  if (const YAML::Node se = root["search"]; se.IsDefined()) read_search(path, se, s, false);
   if (root["harmonics"].IsDefined())
     s.harmonics = static_cast<int>(yaml_integer(path, root["harmonics"], "harmonics", 1, analysis::max_harmonics));
+  // The method: the periodic fast path where every catenary has a point model, else the time domain.
+  const bool periodic_possible = std::all_of(s.catenaries.begin(), s.catenaries.end(), [](const auto& c) { return c->point_model() != nullptr; });
+  s.method = periodic_possible ? optim::Study::Method::Periodic : optim::Study::Method::Time;
+  if (const YAML::Node m = root["method"]; m.IsDefined()) {
+    const std::string v = m.IsScalar() ? m.Scalar() : "";
+    if (v != "periodic" && v != "time") yaml_fail(path, m, "method", "expected periodic or time");
+    if (v == "periodic" && !periodic_possible)
+      yaml_fail(path, m, "method", "the periodic fast path needs a lumped catenary; this study's has no point model: use time");
+    s.method = v == "time" ? optim::Study::Method::Time : optim::Study::Method::Periodic;
+  }
+  if (const YAML::Node l = root["limits"]; l.IsDefined()) {
+    s.limits = read_limits(path, l);
+    if (!std::isnan(s.limits.uplift_max) && std::isinf(s.catenaries.front()->line_length()))
+      yaml_fail(path, l["support_uplift"], "support_uplift", "a support uplift needs a finite line (a finite-element catenary)");
+  }
+  if (const YAML::Node b = root["bounds"]; b.IsDefined()) s.bounds = read_bounds(path, b);
+  if (!coarse && root["refine"].IsDefined() && !root["coarse"].IsDefined())
+    yaml_fail(path, root["refine"], "refine", "refines the optimum of a coarse study: expected coarse: too");
+  if (const YAML::Node c = root["coarse"]; c.IsDefined()) {
+    if (coarse) yaml_fail(path, c, "coarse", "a coarse study has no coarse study of its own");
+    if (!c.IsMap()) yaml_fail(path, c, "coarse", "expected a map of catenary, catenaries, speeds, search, harmonics, method, limits");
+    // The coarse study: this one with the keys it gives replaced (model, layouts, networks and bounds
+    // are this study's); this study's limits unless it has its own (a support uplift only on a finite line).
+    YAML::Node merged(YAML::NodeType::Map);
+    for (auto it = root.begin(); it != root.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      if (k != "coarse" && k != "refine" && k != "method" && k != "admittance") merged[k] = it->second;
+    }
+    for (auto it = c.begin(); it != c.end(); ++it) {
+      const std::string k = it->first.as<std::string>();
+      static const char* allowed[] = {"catenary", "catenaries", "speeds", "search", "harmonics", "method", "limits"};
+      if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) == std::end(allowed))
+        yaml_fail(path, it->first, k, "unknown key in coarse; expected catenary, catenaries, speeds, search, harmonics, method, limits");
+      merged[k] = it->second;
+    }
+    if (!c["catenaries"].IsDefined() && c["catenary"].IsDefined()) merged.remove("catenaries");
+    if (!c["limits"].IsDefined() && root["limits"].IsDefined() && root["limits"].IsMap() && root["limits"]["support_uplift"].IsDefined()) {
+      YAML::Node l(YAML::NodeType::Map);
+      for (auto it = root["limits"].begin(); it != root["limits"].end(); ++it)
+        if (it->first.as<std::string>() != "support_uplift") l[it->first] = it->second;
+      merged["limits"] = l;
+    }
+    auto sub = std::make_shared<optim::Study>(read_study(path, merged, true));
+    sub->name = s.name + " (coarse)";
+    s.refine.starts = 0;
+    s.refine.initial_step = 0.25, s.refine.min_step = 0.02, s.refine.max_evaluations = 60;
+    if (const YAML::Node r = root["refine"]; r.IsDefined()) read_search(path, r, s, true);
+    s.coarse = std::move(sub);
+  }
   try {
     s.operating_length = optim::operating_lengths(s);
   } catch (const ModelError& e) {
@@ -136,7 +240,7 @@ optim::Study read_study(const std::string& path) {
 
 optim::Study load_study(const std::string& path) {
   try {
-    return read_study(path);
+    return read_study(path, yaml_load_file(path, "study file"), false);
   } catch (const YAML::Exception& e) {  // a wrong node type (a map where a layout name belongs, ...)
     throw ModelError(
         fmt::format("{}:{}: {}; expected the study file format of docs/model-format.md", path, e.mark.line + 1, e.msg));

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -43,6 +44,13 @@ Json study_results_json(const std::string& study, const optim::StudyCost& defaul
     l["v_kmh"] = r.cost.speed * 3.6;
     l["mean_N"] = r.cost.mean;
     l["evaluations"] = r.evaluations;
+    if (!r.cost.feasible) l["feasible"] = false, l["violation"] = r.cost.violation;
+    if (r.coarse_evaluations > 0) {
+      Json cv = Json::object();
+      for (const auto& [k, v] : r.coarse_values) cv[k] = value_json(v);
+      l["coarse"] = Json{{"values", std::move(cv)}, {"J2", r.coarse_cost.J}, {"J2_here", r.coarse_here.J},
+                         {"evaluations", r.coarse_evaluations}};
+    }
     layouts.push_back(std::move(l));
   }
   Json j;
@@ -50,6 +58,42 @@ Json study_results_json(const std::string& study, const optim::StudyCost& defaul
   j["default_J2"] = default_cost.J;
   j["layouts"] = std::move(layouts);
   return j;
+}
+
+std::string study_table(const optim::Study& study, const optim::StudyCost& def,
+                        const std::vector<optim::LayoutResult>& results) {
+  std::string t = fmt::format("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network",
+                              "b [kg]", "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
+  bool marked = false;
+  for (const auto& r : results) {
+    auto v = [&](const char* k) {  // '*': ended on a bound
+      const bool at = std::find(r.at_bounds.begin(), r.at_bounds.end(), k) != r.at_bounds.end();
+      marked = marked || at;
+      return value_text(r.values, k) + (at ? "*" : "");
+    };
+    t += fmt::format("  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9.3f} {:>10.1f}% {:>10.0f} {:>10.2f}{}{}\n", r.layout,
+                     r.expression, v("b"), v("c"), v("k"), r.cost.J, reduction_pct(r.cost, def), r.cost.speed * 3.6,
+                     r.cost.mean, r.budget_exhausted ? "  budget exhausted" : "",
+                     r.cost.feasible ? "" : "  outside the limits: " + r.cost.violation);
+  }
+  if (marked) t += "  *: on a bound (the search's lo/hi, an element kind's bounds, open or rigid)\n";
+  const optim::ContactLimits& L = study.limits;
+  if (L.any())
+    t += fmt::format("  limits (every catenary and speed):{}{}{}{}\n",
+                     std::isnan(L.mean_min) ? "" : fmt::format(" mean {:g}–{:g} N;", L.mean_min, L.mean_max),
+                     std::isnan(L.loss_max) ? "" : fmt::format(" contact loss ≤ {:g} %;", L.loss_max),
+                     std::isnan(L.statistical_min) ? "" : fmt::format(" F_m − 3σ ≥ {:g} N;", L.statistical_min),
+                     std::isnan(L.uplift_max) ? "" : fmt::format(" support uplift ≤ {:g} m", L.uplift_max));
+  if (study.coarse) {
+    t += fmt::format("\n  multi-fidelity: J2 [N] of the coarse optimum on the coarse study and here, and after the refinement\n"
+                     "  {:<12} {:>12} {:>12} {:>12} {:>9} {:>12}\n",
+                     "layout", "coarse", "coarse here", "refined", "change", "evaluations");
+    for (const auto& r : results)
+      t += fmt::format("  {:<12} {:>12.3f} {:>12.3f} {:>12.3f} {:>8.1f}% {:>5} + {:<5}\n", r.layout, r.coarse_cost.J,
+                       r.coarse_here.J, r.cost.J, 100 * (r.cost.J - r.coarse_here.J) / r.coarse_here.J,
+                       r.coarse_evaluations, r.evaluations);
+  }
+  return t;
 }
 
 std::vector<std::string> write_study_results(const std::string& dir, const std::string& study,

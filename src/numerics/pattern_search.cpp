@@ -44,7 +44,8 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
   Result best;
   best.cost = INFINITY;
   int total = 0;
-  const int random_starts = std::max(1, o.starts);
+  // At least one random start (the box centre), unless warm starts are given and starts is 0.
+  const int random_starts = o.initial_values.empty() ? std::max(1, o.starts) : std::max(0, o.starts);
   for (const auto& w : o.initial_values)
     if (w.size() != n) throw std::invalid_argument("pattern search: an initial point needs one value per variable");
   // The grid's best point (a start after the warm ones), evaluated up front.

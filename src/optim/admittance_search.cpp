@@ -120,6 +120,13 @@ AdmittanceResult optimise_admittance(int degree, const NetworkCost& cost, const 
 }
 
 AdmittanceResult admittance_bound(const Study& study, int degree, const Network& warm, const numerics::Progress& progress) {
+  auto cost = [&](const Network& net) {
+    try {
+      return evaluate(study, net).penalised();
+    } catch (const NumericalError&) {
+      return static_cast<double>(INFINITY);
+    }
+  };
   auto J = [&](const Network& net) {
     try {
       return evaluate(study, net).J;
@@ -127,7 +134,7 @@ AdmittanceResult admittance_bound(const Study& study, int degree, const Network&
       return static_cast<double>(INFINITY);
     }
   };
-  return optimise_admittance(degree, J, J, warm, study.search, progress);
+  return optimise_admittance(degree, cost, J, warm, study.search, progress);
 }
 
 AdmittanceResult admittance_bound(const ModelStudy& study, int degree, const Network& warm, const numerics::Progress& progress) {

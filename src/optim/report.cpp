@@ -40,6 +40,7 @@ pantograph::Pantograph candidate(const Study& study, const network::Network& net
 }  // namespace
 
 std::vector<SpeedCurve> sigma_curves(const Study& study, const network::Network& net) {
+  if (study.method == Study::Method::Time) return sigma_curves_time(study, net);
   std::vector<SpeedCurve> curves;
   for (std::size_t i = 0; i < study.catenaries.size(); ++i)
     curves.push_back(
@@ -161,7 +162,7 @@ int best_with(const std::vector<LayoutResult>& results, const std::string& x, co
     const auto free = free_parameters(results[i].layout);
     const bool both =
         std::find(free.begin(), free.end(), x) != free.end() && std::find(free.begin(), free.end(), y) != free.end();
-    if (both && (best < 0 || results[i].cost.J < results[static_cast<std::size_t>(best)].cost.J))
+    if (both && (best < 0 || results[i].cost.penalised() < results[static_cast<std::size_t>(best)].cost.penalised()))
       best = static_cast<int>(i);
   }
   return best;
@@ -189,11 +190,12 @@ Report make_report(const Study& study, const std::vector<LayoutResult>& results,
   r.baseline = {"default", "", {}, default_suspension(study)};
   std::size_t b = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
-    if (results[i].cost.J < results[b].cost.J) b = i;
+    if (results[i].cost.penalised() < results[b].cost.penalised()) b = i;  // within the limits first
   r.best = {"best (" + results[b].layout + ")", results[b].layout, results[b].values,
             network::resolve(results[b].layout, results[b].values)};
 
-  step(1, "σ(v) of the default and the best design (periodic)");
+  step(1, study.method == Study::Method::Time ? "σ(v) of the default and the best design (time domain)"
+                                               : "σ(v) of the default and the best design (periodic)");
   r.sigma_default = sigma_curves(study, r.baseline.net);
   r.sigma_best = sigma_curves(study, r.best.net);
   r.default_cost = worst_of(r.sigma_default);
@@ -218,6 +220,9 @@ Report make_report(const Study& study, const std::vector<LayoutResult>& results,
   const int m = best_with(results, "b", "k");
   if (options.map_size < 2) {
     r.map_note = "no J2 map requested";
+  } else if (study.method == Study::Method::Time) {
+    r.map_note = fmt::format("no J2 map for a time-domain study ({} × {} runs of every catenary and speed)",
+                             options.map_size, options.map_size);
   } else if (m < 0) {
     r.map_note = "no layout of the study has free b and k";
   } else {

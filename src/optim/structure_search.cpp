@@ -240,7 +240,7 @@ std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<Layo
         LayoutResult& r = results[i];
         try {
           r = optimise_layout(study, expression, {}, warm);
-          const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).J; });
+          const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).penalised(); });
           if (pruned != r.values) r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
         } catch (const NumericalError&) {  // the best point's final evaluation failed: no design
           r = LayoutResult{};
@@ -251,7 +251,8 @@ std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<Layo
           r.layout = r.expression = expression;
           r.cost.J = INFINITY;
         }
-        return StructureOutcome{r.values, r.cost.J, r.cost.J, std::isfinite(r.cost.J), r.evaluations, r.unstable};
+        return StructureOutcome{r.values, r.cost.J, r.cost.penalised(), r.cost.feasible && std::isfinite(r.cost.J),
+                                r.evaluations, r.unstable};
       },
       progress);
 }

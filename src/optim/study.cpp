@@ -3,6 +3,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
 #include <cmath>
 
 #include "inerta/analysis/contact_statistics.hpp"
@@ -16,19 +19,25 @@
 
 namespace inerta::optim {
 
-std::vector<double> operating_lengths(const Study& s) {
+double operating_length(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
+                        const catenary::Contact& contact) {
   int act = -1;
-  for (std::size_t k = 0; k < s.pantograph.model.forces.size(); ++k)
-    if (std::dynamic_pointer_cast<const mbs::Actuator>(s.pantograph.model.forces[k])) act = static_cast<int>(k);
-  if (act < 0)
-    throw ModelError(fmt::format("{}: the pantograph has no actuator whose suspension the study replaces", s.source));
+  for (std::size_t k = 0; k < pantograph.model.forces.size(); ++k)
+    if (std::dynamic_pointer_cast<const mbs::Actuator>(pantograph.model.forces[k])) act = static_cast<int>(k);
+  if (act < 0) throw ModelError("the pantograph has no actuator whose suspension could be replaced");
+  auto sys = catenary.couple(pantograph, contact, 1.0);
+  sys->equilibrate();
+  const catenary::ContactId c = sys->contact(0);
+  return sys->model(c).forces[static_cast<std::size_t>(act)]->length(sys->model(c), sys->state(c));
+}
+
+std::vector<double> operating_lengths(const Study& s) {
   std::vector<double> L;
-  for (const auto& cat : s.catenaries) {
-    auto sys = cat->couple(s.pantograph, s.contact, 1.0);
-    sys->equilibrate();
-    const catenary::ContactId c = sys->contact(0);
-    L.push_back(sys->model(c).forces[static_cast<std::size_t>(act)]->length(sys->model(c), sys->state(c)));
-  }
+  for (const auto& cat : s.catenaries) try {
+      L.push_back(operating_length(s.pantograph, *cat, s.contact));
+    } catch (const ModelError& e) {
+      throw ModelError(fmt::format("{}: {}", s.source, e.what()));
+    }
   return L;
 }
 
@@ -39,38 +48,89 @@ network::Network default_suspension(const Study& study) {
       fmt::format("{}: the pantograph has no actuator whose suspension the study could replace", study.source));
 }
 
-StudyCost evaluate(const Study& study, const network::Network& net) {
-  require_evaluable(net);
+StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps) {
+  const ContactLimits& lim = study.limits;
   StudyCost c;
   c.J = -1;
-  for (std::size_t i = 0; i < study.catenaries.size(); ++i) {
-    pantograph::Pantograph p = study.pantograph;
-    p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
-    auto r = analysis::sweep_periodic(p, *study.catenaries[i], study.contact, study.speeds, study.harmonics);
-    for (const auto& x : r) {
+  double excess = 0, worst = 0;
+  auto breach = [&](double rel, const std::string& what) {  // rel: relative excess > 0
+    excess += rel;
+    if (rel > worst) worst = rel, c.violation = what;
+  };
+  for (std::size_t i = 0; i < sweeps.size(); ++i) {
+    const std::string where = sweeps.size() > 1 ? fmt::format(" under {}", study.catenary_labels[i]) : "";
+    for (const analysis::SpeedResult& x : sweeps[i]) {
       if (!x.stable()) {  // no steady state: infeasible (issue 15)
-        c.J = INFINITY, c.speed = x.speed, c.mean = NAN, c.catenary = static_cast<int>(i), c.unstable_speed = x.speed;
+        c.J = INFINITY, c.speed = x.speed, c.mean = NAN, c.catenary = static_cast<int>(i);
+        c.unstable_speed = x.speed;  // J = ∞ ranks it after every design (not a limit: feasible stays)
+        c.violation = fmt::format("no stable periodic solution at {:.0f} km/h{}", x.speed * 3.6, where);
         return c;
       }
-      if (x.stats.std > c.J)
-        c.J = x.stats.std, c.speed = x.speed, c.mean = x.stats.mean, c.catenary = static_cast<int>(i);
+      const std::vector<analysis::ContactStatistics> one{x.stats};
+      const auto& contacts = x.contacts.empty() ? one : x.contacts;
+      const std::string at = fmt::format(" at {:.0f} km/h{}", x.speed * 3.6, where);
+      for (const analysis::ContactStatistics& st : contacts) {
+        if (st.std > c.J) c.J = st.std, c.speed = x.speed, c.mean = st.mean, c.catenary = static_cast<int>(i);
+        c.mean_min = std::isnan(c.mean_min) ? st.mean : std::min(c.mean_min, st.mean);
+        c.mean_max = std::isnan(c.mean_max) ? st.mean : std::max(c.mean_max, st.mean);
+        c.loss_pct = std::max(c.loss_pct, st.loss_pct);
+        c.statistical_min = std::isnan(c.statistical_min) ? st.stat_min : std::min(c.statistical_min, st.stat_min);
+        if (st.mean < lim.mean_min)
+          breach((lim.mean_min - st.mean) / std::abs(lim.mean_min), fmt::format("mean force {:.4g} N < {:.4g} N{}", st.mean, lim.mean_min, at));
+        if (st.mean > lim.mean_max)
+          breach((st.mean - lim.mean_max) / std::abs(lim.mean_max), fmt::format("mean force {:.4g} N > {:.4g} N{}", st.mean, lim.mean_max, at));
+        if (st.loss_pct > lim.loss_max)
+          breach((st.loss_pct - lim.loss_max) / std::max(1.0, lim.loss_max), fmt::format("contact loss {:.3g} % > {:.3g} %{}", st.loss_pct, lim.loss_max, at));
+        if (st.stat_min < lim.statistical_min)
+          breach((lim.statistical_min - st.stat_min) / std::max(1.0, std::abs(lim.statistical_min)),
+                 fmt::format("statistical minimum F_m − 3σ {:.4g} N < {:.4g} N{}", st.stat_min, lim.statistical_min, at));
+      }
+      for (double u : x.support_uplift) {
+        c.uplift = std::isnan(c.uplift) ? u : std::max(c.uplift, u);
+        if (u > lim.uplift_max)
+          breach((u - lim.uplift_max) / lim.uplift_max, fmt::format("support uplift {:.4g} m > {:.4g} m{}", u, lim.uplift_max, at));
+      }
     }
   }
+  c.feasible = excess == 0;
+  c.excess = excess;
   return c;
 }
 
-StudyCost evaluate_time(const Study& study, const network::Network& net) {
-  StudyCost c;
-  c.J = -1;
+StudyCost evaluate(const Study& study, const network::Network& net) {
+  if (study.method == Study::Method::Time) return evaluate_time(study, net);
+  require_evaluable(net);
+  std::vector<std::vector<analysis::SpeedResult>> sweeps;
   for (std::size_t i = 0; i < study.catenaries.size(); ++i) {
     pantograph::Pantograph p = study.pantograph;
     p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
-    auto r = analysis::sweep(p, *study.catenaries[i], study.contact, study.speeds, analysis::RunOptions{});
-    for (const auto& x : r)
-      if (x.stats.std > c.J)
-        c.J = x.stats.std, c.speed = x.speed, c.mean = x.stats.mean, c.catenary = static_cast<int>(i);
+    sweeps.push_back(analysis::sweep_periodic(p, *study.catenaries[i], study.contact, study.speeds, study.harmonics));
+    if (std::any_of(sweeps.back().begin(), sweeps.back().end(), [](const auto& x) { return !x.stable(); })) break;
   }
-  return c;
+  return cost_of(study, sweeps);
+}
+
+StudyCost evaluate_time(const Study& study, const network::Network& net) {
+  // Every (catenary, speed) run in parallel: the catenaries here, their speeds in analysis::sweep.
+  std::vector<std::vector<analysis::SpeedResult>> sweeps(study.catenaries.size());
+  tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
+    pantograph::Pantograph p = study.pantograph;
+    p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
+    sweeps[i] = analysis::sweep(p, *study.catenaries[i], study.contact, study.speeds, analysis::RunOptions{});
+  });
+  return cost_of(study, sweeps);
+}
+
+std::vector<numerics::Variable> search_variables(const Study& study, const std::string& layout) {
+  std::vector<numerics::Variable> vars;
+  for (const auto& name : free_parameters(layout)) {
+    const auto b = study.bounds.find(name.empty() ? ' ' : name[0]);
+    if (b == study.bounds.end())
+      vars.push_back({name, study.lo, study.hi, true, true});
+    else
+      vars.push_back({name, b->second.lo, std::isinf(b->second.hi) ? study.hi : b->second.hi, true, std::isinf(b->second.hi)});
+  }
+  return vars;
 }
 
 std::vector<std::string> free_parameters(const std::string& layout) {
@@ -88,8 +148,7 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   auto named = network::find_layout(layout);
   r.expression = named ? named->expression : layout;
   const network::Params fixed = named ? named->fixed : network::Params{};
-  std::vector<numerics::Variable> vars;
-  for (const auto& name : free_parameters(layout)) vars.push_back({name, study.lo, study.hi, true, true});
+  const std::vector<numerics::Variable> vars = search_variables(study, layout);
   auto params_of = [&](const std::vector<double>& values) {
     network::Params p;
     for (std::size_t i = 0; i < vars.size(); ++i) p[vars[i].name] = values[i];
@@ -103,17 +162,32 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     try {
       const StudyCost c = evaluate(study, net);
       if (c.unstable_speed > 0) ++unstable;
-      return c.J;
+      return c.penalised();
     } catch (const NumericalError&) {
       return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
     }
   };
+  numerics::Options search = study.search;
+  if (study.coarse) {  // multi-fidelity: the coarse study's optimum is the one start of the refinement
+    const LayoutResult c = optimise_layout(*study.coarse, layout, progress, warm);
+    r.coarse_values = c.values, r.coarse_cost = c.cost, r.coarse_evaluations = c.evaluations;
+    search = study.refine;
+    search.starts = 0;
+    std::vector<double> start;
+    for (const auto& v : vars) start.push_back(c.values.count(v.name) ? c.values.at(v.name) : 0.0);
+    search.initial_values = {start};
+    try {
+      r.coarse_here = evaluate(study, network::resolve(layout, params_of(start)));
+    } catch (const NumericalError&) {
+      r.coarse_here.J = INFINITY;
+    }
+  } else {
+    add_warm_starts(vars, warm, search);
+  }
   std::vector<double> best;
   if (vars.empty()) {
     r.evaluations = 1;
   } else {
-    numerics::Options search = study.search;
-    add_warm_starts(vars, warm, search);
     numerics::Result s = numerics::pattern_search(vars, J, search, progress);
     best = s.values;
     r.evaluations = s.evaluations;
@@ -123,8 +197,8 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   r.values = fixed;
   for (const auto& [k, v] : params_of(best)) r.values[k] = v;
   for (std::size_t i = 0; i < vars.size(); ++i)
-    if (const double v = best[i]; v == 0 || std::isinf(v) || std::abs(v - study.lo) <= 1e-9 * study.lo ||
-                                  std::abs(v - study.hi) <= 1e-9 * study.hi)
+    if (const double v = best[i]; v == 0 || std::isinf(v) || std::abs(v - vars[i].lo) <= 1e-9 * vars[i].lo ||
+                                  std::abs(v - vars[i].hi) <= 1e-9 * vars[i].hi)
       r.at_bounds.push_back(vars[i].name);
   r.cost = evaluate(study, network::resolve(layout, params_of(best)));
   return r;

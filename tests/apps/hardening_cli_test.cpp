@@ -137,7 +137,7 @@ TEST_F(Hardening, ExhaustedBudgetAndBoundsAreMarked) {
   // S2-1's spring optimum (≈ 9.3e4 N/m) lies below lo = 2e5: the value ends on a limit, marked '*'.
   r = run("optimise " + quote(j2_study("{starts: 1, lo: 2.0e5, hi: 1.0e6}")));
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(contains(r.out, "*: on a search limit")) << r.out;
+  EXPECT_TRUE(contains(r.out, "*: on a bound")) << r.out;
   // A model study marks its exhausted searches too.
   std::string q = text_of(std::string(INERTA_SOURCE_DIR) + "/studies/quarter_car.yaml");
   q.replace(q.find("model: ../models/"), 17, "model: " + std::string(INERTA_SOURCE_DIR) + "/models/");

@@ -21,12 +21,12 @@ TEST(StudyResults, JsonAndCsvForAwkwardNames) {
   results[0].layout = "S2-\"1\"\\";
   results[0].expression = "b-(k|c)";
   results[0].values = {{"b", 0.0}, {"c", INFINITY}, {"k", 7130.123456789012}};
-  results[0].cost = {10.000000000000002, 180 / 3.6, 120.5, 0};
+  results[0].cost.J = 10.000000000000002, results[0].cost.speed = 180 / 3.6, results[0].cost.mean = 120.5;
   results[0].evaluations = 321;
   results[1].layout = "k|c, \xc3\xa9";
   results[1].expression = "k|c";
   results[1].values = {{"c", 1.0 / 3.0}, {"k", 5e4}};
-  results[1].cost = {13.5, 250 / 3.6, 119.25, 0};
+  results[1].cost.J = 13.5, results[1].cost.speed = 250 / 3.6, results[1].cost.mean = 119.25;
   results[1].evaluations = 1;
 
   const auto dir = std::filesystem::temp_directory_path() / ("inerta_study_results_" + std::to_string(::getpid())) /

@@ -23,6 +23,8 @@ struct CatenaryFile {
   catenary::Contact contact;
   /// type: finite_element: the data the catenary was made from (checked by FeCatenaryData::validate).
   std::optional<catenary::FeCatenaryData> fe;
+  std::string path;                    ///< load_catenary: the file it was read from
+  std::vector<std::string> overrides;  ///< and the overrides applied (to read it again elsewhere)
 };
 
 /// Reads a catenary file and applies `overrides` (each "section.key=value"; lumped: catenary.kc0..kc3,

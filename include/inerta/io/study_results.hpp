@@ -6,6 +6,8 @@
 //                 (b, c, k: "open", "rigid", the value (4 digits) or "-" if the layout has none)
 //   results.json: {"study", "default_J2", "layouts": [{"layout", "network", "values" (every
 //                 element; 0 as 0, ∞ as "inf"), "J2", "v_kmh", "mean_N", "evaluations"}, …]}
+//                 and, where they apply: "feasible" and "violation" (a limit broken), "coarse":
+//                 {"values", "J2", "J2_here", "evaluations"} (multi-fidelity).
 // Units: N, km/h, SI element values.
 #include <string>
 #include <vector>
@@ -17,6 +19,13 @@ namespace inerta::io {
 
 /// The results.json document.
 Json study_results_json(const std::string& study, const optim::StudyCost& default_cost,
+                        const std::vector<optim::LayoutResult>& results);
+
+/// The table `inerta optimise` prints for named layouts (the same text from Python: inerta.study_table):
+/// a row per layout (element values, '*' on a bound, J2, change against the default, worst speed, mean
+/// force, limits broken), the study's limits and, for a multi-fidelity study, the coarse optimum's J2
+/// on both fidelities and the refinement's change.
+std::string study_table(const optim::Study& study, const optim::StudyCost& default_cost,
                         const std::vector<optim::LayoutResult>& results);
 
 /// Writes DIR/results.csv and DIR/results.json (DIR created if needed); returns their paths.

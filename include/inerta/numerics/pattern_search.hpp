@@ -29,7 +29,7 @@ double decode(const Variable& v, double u);
 std::string describe(double value);
 
 struct Options {
-  int starts = 4;  ///< random starts (the first at the box centre)
+  int starts = 4;  ///< random starts (the first at the box centre); 0 allowed with initial_values
   unsigned seed = 1;
   double initial_step = 1.0;   ///< decades
   double min_step = 1e-3;      ///< decades: stop when the mesh is finer

@@ -1,12 +1,14 @@
 #pragma once
 // Structure-based suspension design (spec/07): for each candidate layout, optimise its free element
 // values by pattern search to minimise J2 = max over catenary variants of σ_max over the speeds.
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
-#include <memory>
-#include <optional>
-
+#include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/network/enumeration.hpp"
@@ -15,8 +17,40 @@
 
 namespace inerta::optim {
 
+/// Hard limits on the contact force, over every catenary variant and speed (docs/studies.md
+/// "Limits"); NaN: no limit. Like the model studies' limits: a design that breaks one ranks after
+/// every design that keeps them all (StudyCost::penalised).
+struct ContactLimits {
+  double mean_min = NAN, mean_max = NAN;  ///< N: the mean contact force F_m within [min, max]
+  double loss_max = NAN;                  ///< %: contact loss (samples with F <= 0) at most this
+  double statistical_min = NAN;           ///< N: the statistical minimum F_m − 3σ at least this
+  double uplift_max = NAN;                ///< m: the largest support uplift (a finite line) at most this
+  bool any() const {
+    return !std::isnan(mean_min) || !std::isnan(mean_max) || !std::isnan(loss_max) || !std::isnan(statistical_min) ||
+           !std::isnan(uplift_max);
+  }
+};
+
+/// The physical range of one kind of element (inerter b, damper c, spring k), SI: the search keeps
+/// its values in [lo, hi] or open (0); rigid (∞) only if hi is ∞.
+struct ElementBounds {
+  double lo = 0.1, hi = 1e9;
+};
+
 struct Study {
   std::string name, source;
+  /// How J2 is computed: the periodic fast path (harmonic balance on a lumped catenary) or the time
+  /// domain (analysis::sweep; the method of a finite-element line, by its modal solve).
+  enum class Method { Periodic, Time };
+  Method method = Method::Periodic;
+  ContactLimits limits;
+  /// Per element kind ('b', 'c', 'k'): its bounds; a kind not listed has the search's [lo, hi], 0 and ∞.
+  std::map<char, ElementBounds> bounds;
+  /// Multi-fidelity (`coarse:` in the file): each layout is first optimised on this study (its own
+  /// catenaries, speeds and search, usually the periodic fast path on a lumped catenary), then
+  /// refined here by a pattern search from that optimum with `refine`'s options (docs/studies.md).
+  std::shared_ptr<const Study> coarse;
+  numerics::Options refine;
   pantograph::Pantograph pantograph;
   std::vector<std::shared_ptr<const catenary::Catenary>> catenaries;  ///< the variants (J1: one)
   std::vector<std::string> catenary_labels;
@@ -41,6 +75,10 @@ struct Study {
 /// Per catenary: the actuator's length at the static equilibrium of the pantograph with its own
 /// suspension under that catenary (Study::operating_length).
 std::vector<double> operating_lengths(const Study& study);
+/// The same for one pantograph under one catenary (`inerta sweep --suspension … --relaxed`). ModelError
+/// if the pantograph has no actuator.
+double operating_length(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
+                        const catenary::Contact& contact);
 
 struct StudyCost {
   double J = 0;      ///< max over catenaries of σ_max, N
@@ -50,27 +88,51 @@ struct StudyCost {
   /// > 0: the periodic solution is unstable at this speed, m/s (Floquet check, analysis/periodic.hpp):
   /// the design is infeasible and J = +∞.
   double unstable_speed = 0;
+  // The study's limits (Study::limits), set by cost_of.
+  bool feasible = true;
+  double excess = 0;      ///< Σ relative excess of the limits broken
+  std::string violation;  ///< the largest relative excess, in words ("" if feasible)
+  // The limited quantities, worst over catenaries and speeds (for the report).
+  double mean_min = NAN, mean_max = NAN, loss_pct = 0, statistical_min = NAN, uplift = NAN;
+  /// What the search minimises and designs are ranked by: J if every limit holds, else
+  /// 1e100 (1 + excess): such a design ranks after every one that keeps them, the smaller excess first.
+  double penalised() const { return feasible ? J : 1e100 * (1 + excess); }
 };
 
 /// The pantograph's own suspension network (its actuator's), the baseline of the study.
 network::Network default_suspension(const Study& study);
 
-/// J2 of the pantograph with its suspension replaced by `net` (bound), by the periodic fast path.
+/// J2 of the pantograph with its suspension replaced by `net` (bound), by the study's method (the
+/// periodic fast path, or the time domain for Method::Time), with its limits applied.
 /// A design whose periodic solution is unstable at some speed costs J = +∞ (unstable_speed set).
 StudyCost evaluate(const Study& study, const network::Network& net);
+
+/// The limits applied to the sweeps of each catenary (sets J, penalised, feasible, violation and the
+/// worst limited quantities); `sweeps[i]` under study.catenaries[i].
+StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps);
 
 struct LayoutResult {
   std::string layout, expression;
   network::Params values;  ///< all element values (fixed and optimised; 0 = open, inf = rigid)
   StudyCost cost;
+  /// Multi-fidelity: the coarse study's optimum (values, its cost there) and its cost here before
+  /// the refinement; empty/NaN otherwise.
+  network::Params coarse_values;
+  StudyCost coarse_cost, coarse_here;
+  int coarse_evaluations = 0;
   int evaluations = 0;
   int unstable = 0;                     ///< designs the search refused as unstable (Floquet multiplier ≥ 1)
   bool budget_exhausted = false;        ///< the search stopped at max_evaluations (numerics::Result::exhausted)
   std::vector<std::string> at_bounds;   ///< free values that ended on the search's limits (lo, hi, 0 or ∞)
 };
 
-/// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner.
+/// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner
+/// (with the study's limits).
 StudyCost evaluate_time(const Study& study, const network::Network& net);
+
+/// The search variables of a layout's free elements: the study's [lo, hi] (0 and ∞ reachable), or
+/// the bounds of the element's kind.
+std::vector<numerics::Variable> search_variables(const Study& study, const std::string& layout);
 
 /// The element names of a layout (name or expression) that the optimiser varies: all but those the
 /// named layout fixes, in order of appearance.

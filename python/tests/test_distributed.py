@@ -1,0 +1,144 @@
+"""Sweeps and studies on a Dask LocalCluster of 2 worker processes (issue 24, docs/distributed.md): the
+same results as the serial runs to the last bit, a worker killed mid-task, a study resumed from its
+checkpoint, and the CLI's --workers."""
+import os
+import pickle
+import signal
+import subprocess
+import time
+
+import numpy as np
+import pytest
+
+import inerta
+from conftest import CLI, SRC, model
+
+distributed = pytest.importorskip("distributed")
+
+STUDY = """name: small distributed
+model: {src}/models/hsx.yaml
+catenary: {src}/models/catenary.yaml
+speeds: {{from: 150, to: 300, step: 75, unit: kmh}}
+search: {{starts: 1, seed: 3, min_step: 0.2}}
+layouts: [S2-default, S2-5, S2-4, S2-3]
+"""
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0")
+    c = distributed.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+@pytest.fixture()
+def study_file(tmp_path):
+    p = tmp_path / "study.yaml"
+    p.write_text(STUDY.format(src=SRC))
+    return p
+
+
+def same_sweep(a, b):
+    assert len(a) == len(b)
+    for x, y in zip(a, b):
+        assert pickle.dumps(x) == pickle.dumps(y)  # every field, bit for bit
+
+
+def test_results_travel_exactly():
+    m = inerta.load_model(model("hsx.yaml"), ["k2.k=6000"])
+    m2 = pickle.loads(pickle.dumps(m))
+    assert m2.name == m.name and m2.overrides == m.overrides
+    cat = inerta.load_catenary(model("catenary.yaml"), ["catenary.kc0=5000"])
+    cat2 = pickle.loads(pickle.dumps(cat))
+    assert cat2.path == cat.path and cat2.overrides == ["catenary.kc0=5000"]
+    r = inerta.sweep(m, cat, [inerta.kmh(200)])
+    same_sweep(r, pickle.loads(pickle.dumps(r.results)))
+    s = inerta.load_study(os.path.join(SRC, "studies", "hsx-s2-demo.yaml"))
+    lr = inerta.optimise_layout(s.replace(speeds=[60.0], layouts=["S2-5"]), "S2-5")
+    lr2 = pickle.loads(pickle.dumps(lr))
+    assert (lr2.layout, lr2.values, lr2.cost.J, lr2.evaluations) == (lr.layout, lr.values, lr.cost.J, lr.evaluations)
+
+
+def test_what_cannot_travel_is_refused_with_the_reason():
+    m = inerta.load_model(model("hsx.yaml")).with_options(centripetal=False)
+    with pytest.raises(TypeError, match="transformed"):
+        pickle.dumps(m)
+    cat = inerta.load_catenary(model("catenary.yaml")).catenary
+    with pytest.raises(TypeError, match="file name or a CatenaryFile"):
+        inerta.distributed._catenary_key(cat)
+
+
+def test_sweep_equals_the_serial_sweep(client):
+    m = inerta.load_model(model("hsx.yaml"))
+    speeds = inerta.kmh([150, 200, 250, 300])
+    same_sweep(inerta.sweep(m, model("catenary.yaml"), speeds, client=client),
+               inerta.sweep(m, model("catenary.yaml"), speeds))
+    # a finite-element line (short, few modes): each worker decomposes it once and keeps it
+    fe = inerta.load_catenary(model("catenary-fe.yaml"), ["line.spans=3", "solver.cutoff=30"])
+    got = inerta.sweep(m, fe, inerta.kmh([200, 250]), client=client)
+    same_sweep(got, inerta.sweep(m, fe, inerta.kmh([200, 250])))
+    assert len(got[0].support_uplift) > 0
+
+
+def test_a_killed_worker_loses_nothing(client):
+    m = inerta.load_model(model("hsx.yaml"))
+    speeds = inerta.kmh(np.arange(100, 321, 20))
+    before = client.run(os.getpid)
+    futures = [client.submit(inerta.distributed._sweep_speed, inerta.distributed._model_key(m),
+                             inerta.distributed._catenary_key(model("catenary.yaml")), float(v), {}, pure=False)
+               for v in speeds]
+    deadline = time.time() + 30
+    while not any(f.status == "finished" for f in futures) and time.time() < deadline:
+        time.sleep(0.02)
+    victim = next(iter(before.values()))
+    os.kill(victim, signal.SIGKILL)  # mid-study: the other tasks are running or waiting
+    results = client.gather(futures)
+    same_sweep(results, inerta.sweep(m, model("catenary.yaml"), speeds).results)
+    client.wait_for_workers(2, timeout=60)
+    assert victim not in client.run(os.getpid).values()  # the nanny started a new worker process
+
+
+def test_a_study_resumes_from_its_checkpoint(client, study_file, tmp_path):
+    cp = tmp_path / "checkpoint.pkl"
+    seen = []
+
+    def stop_after_one(layout, result, done, total):
+        seen.append(layout)
+        raise KeyboardInterrupt  # as Ctrl-C after the first finished layout
+
+    with pytest.raises(KeyboardInterrupt):
+        inerta.distributed.optimise(study_file, client, checkpoint=cp, progress=stop_after_one)
+    assert cp.exists() and len(seen) == 1
+    resumed = []
+    study, default, results = inerta.distributed.optimise(
+        study_file, client, checkpoint=cp, progress=lambda layout, r, done, total: resumed.append((layout, done)))
+    assert seen[0] not in [l for l, _ in resumed] and len(resumed) == 3  # only the missing layouts ran
+    serial = [inerta.optimise_layout(study, l) for l in study.layouts]
+    assert [r.layout for r in results] == study.layouts
+    for a, b in zip(results, serial):
+        assert (a.values, a.cost.J, a.evaluations) == (b.values, b.cost.J, b.evaluations)
+    # a checkpoint of another study is refused
+    other = tmp_path / "other.yaml"
+    other.write_text(STUDY.format(src=SRC).replace("S2-3]", "S2-1]"))
+    with pytest.raises(RuntimeError, match="another study"):
+        inerta.distributed.optimise(other, client, checkpoint=cp)
+
+
+def test_cli_workers_give_the_serial_table(study_file, tmp_path):
+    if not CLI.exists():
+        pytest.skip(f"CLI not built: {CLI}")
+    serial = subprocess.run([str(CLI), "optimise", str(study_file), "--out", str(tmp_path / "a"), "--no-plots"],
+                            capture_output=True, text=True, cwd=SRC)
+    assert serial.returncode == 0, serial.stderr
+    dist = subprocess.run([str(CLI), "optimise", str(study_file), "--workers", "2", "--out", str(tmp_path / "b"),
+                           "--no-plots"], capture_output=True, text=True, cwd=SRC)
+    assert dist.returncode == 0, dist.stderr + dist.stdout
+    assert (tmp_path / "a" / "results.csv").read_bytes() == (tmp_path / "b" / "results.csv").read_bytes()
+    assert (tmp_path / "a" / "results.json").read_bytes() == (tmp_path / "b" / "results.json").read_bytes()
+    table = serial.stdout[serial.stdout.index("\n  layout"):serial.stdout.index("default suspension")]
+    assert table in dist.stdout
+    bad = subprocess.run([str(CLI), "optimise", str(study_file), "--workers", "2", "--scheduler", "tcp://x:1"],
+                         capture_output=True, text=True, cwd=SRC)
+    assert bad.returncode != 0 and "excludes" in bad.stderr
