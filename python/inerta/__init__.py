@@ -11,7 +11,6 @@ rad; speeds in m/s (``kmh`` converts km/h), frequencies in Hz.
 from ._inerta import *  # noqa: F401,F403  (the compiled bindings)
 from ._inerta import __doc__ as _bindings_doc  # noqa: F401
 from . import _inerta
-from . import distributed  # noqa: F401  (Dask is imported only when used)
 
 __version__ = "0.1.0"
 
@@ -38,6 +37,14 @@ def sweep(model, catenary, speeds, *, client=None, **kwargs):
 
 
 sweep.__doc__ += "\n\nThe library's sweep:\n" + (_inerta.sweep.__doc__ or "")
+
+
+def __getattr__(name):  # inerta.distributed on first use (PEP 562): `python3 -m inerta.distributed` stays clean
+    if name == "distributed":
+        import importlib
+
+        return importlib.import_module(".distributed", __name__)
+    raise AttributeError(f"module 'inerta' has no attribute '{name}'")
 
 
 def plot_sweep(result, ax=None, label=None, unit="kmh", **kwargs):

@@ -6,6 +6,7 @@ import numpy.typing as npt
 
 from ._inerta import *  # noqa: F401,F403
 from ._inerta import Result, SweepResult
+from . import distributed as distributed
 
 __version__: str
 

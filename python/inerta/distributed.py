@@ -214,4 +214,8 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # Run the package's module, not this __main__ copy: the tasks then travel as references to
+    # inerta.distributed's functions and its per-worker cache persists between tasks.
+    from inerta import distributed as _module
+
+    sys.exit(_module.main())
