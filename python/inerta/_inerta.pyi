@@ -1149,6 +1149,8 @@ class StudyCost:
     catenary: int
     unstable_speed: float
     excess: float
+    floquet: float
+    def settling_spans(self) -> float: ...
     feasible: bool
     violation: str
     mean_min: float

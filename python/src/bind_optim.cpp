@@ -157,6 +157,9 @@ void bind_optim(py::module_& m) {
       .def("penalised", &optim::StudyCost::penalised,
            "what the search minimises and designs rank by: J within the study's limits, else 1e100 (1 + excess)")
       .def_readonly("excess", &optim::StudyCost::excess, "Σ relative excess of the limits broken")
+      .def_readonly("floquet", &optim::StudyCost::floquet, "periodic method: the largest Floquet multiplier |μ| per span")
+      .def("settling_spans", &optim::StudyCost::settling_spans,
+           "spans for the slowest free vibration to decay to 1 % (0: not computed)")
       .def_readonly("feasible", &optim::StudyCost::feasible, "every limit of the study kept")
       .def_readonly("violation", &optim::StudyCost::violation, "the worst limit broken, in words ('' if feasible)")
       .def_readonly("mean_min", &optim::StudyCost::mean_min, "lowest mean contact force over catenaries and speeds, N")
@@ -171,7 +174,7 @@ void bind_optim(py::module_& m) {
       .def(py::pickle(  // exact (Dask workers return their layouts' results, docs/distributed.md)
           [](const optim::StudyCost& c) {
             return py::make_tuple(c.J, c.excess, c.feasible, c.violation, c.mean_min, c.mean_max, c.loss_pct,
-                                  c.statistical_min, c.uplift, c.speed, c.mean, c.catenary, c.unstable_speed);
+                                  c.statistical_min, c.uplift, c.speed, c.mean, c.catenary, c.unstable_speed, c.floquet);
           },
           [](const py::tuple& t) {
             optim::StudyCost c;
@@ -179,7 +182,7 @@ void bind_optim(py::module_& m) {
             c.violation = t[3].cast<std::string>(), c.mean_min = t[4].cast<double>(), c.mean_max = t[5].cast<double>();
             c.loss_pct = t[6].cast<double>(), c.statistical_min = t[7].cast<double>(), c.uplift = t[8].cast<double>();
             c.speed = t[9].cast<double>(), c.mean = t[10].cast<double>(), c.catenary = t[11].cast<int>();
-            c.unstable_speed = t[12].cast<double>();
+            c.unstable_speed = t[12].cast<double>(), c.floquet = t[13].cast<double>();
             return c;
           }));
   py::class_<optim::LayoutResult>(m, "LayoutResult", "The optimum of one layout.")

@@ -66,6 +66,7 @@ StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::Sp
         c.violation = fmt::format("no stable periodic solution at {:.0f} km/h{}", x.speed * 3.6, where);
         return c;
       }
+      c.floquet = std::max(c.floquet, x.floquet);
       const std::vector<analysis::ContactStatistics> one{x.stats};
       const auto& contacts = x.contacts.empty() ? one : x.contacts;
       const std::string at = fmt::format(" at {:.0f} km/h{}", x.speed * 3.6, where);

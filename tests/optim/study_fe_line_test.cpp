@@ -163,3 +163,23 @@ TEST(StudyFidelity, FileErrorsOfTheNewKeys) {
         "expected min_step <= initial_step");
   fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {starts: 3}\n", "unknown key in refine");
 }
+
+TEST(StudyFidelity, AnUndampedInternalBranchIsFlaggedAsSlowToSettle) {
+  // Issue 24 item 4: the fast path and the time domain disagree for notch networks because a spring–
+  // inerter branch without a damper (k2–b: ω = sqrt(k2/b)) is a free vibration the pantograph hardly
+  // damps; a time-domain run of a few spans measures its beating. The periodic path's largest Floquet
+  // multiplier gives the decay per span: spans to 1 % = ln 0.01 / ln |μ|.
+  optim::StudyCost c;
+  c.floquet = 0.5;
+  EXPECT_NEAR(c.settling_spans(), std::log(0.01) / std::log(0.5), 1e-12);
+  c.floquet = 0;
+  EXPECT_EQ(c.settling_spans(), 0);
+  const optim::Study s = io::load_study(write_study("settle.yaml", kLumped));
+  const double spring = optim::evaluate(s, network::resolve("k", {{"k", 9.3e4}})).settling_spans();
+  const double notch =
+      optim::evaluate(s, network::resolve("k1|(k2-b)", {{"k1", 1e5}, {"k2", 3162.28}, {"b", 29.4}})).settling_spans();
+  EXPECT_GT(spring, 1);
+  EXPECT_LT(spring, 40);        // settles within a time-domain run
+  EXPECT_GT(notch, 10 * spring);  // the undamped branch outlasts it
+  EXPECT_GT(notch, 40);
+}

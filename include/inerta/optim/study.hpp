@@ -88,6 +88,11 @@ struct StudyCost {
   /// > 0: the periodic solution is unstable at this speed, m/s (Floquet check, analysis/periodic.hpp):
   /// the design is infeasible and J = +∞.
   double unstable_speed = 0;
+  /// Periodic method: the largest Floquet multiplier |μ| (per span) over catenaries and speeds. Close
+  /// to 1 the slowest free vibration takes ln 0.01 / ln |μ| spans to decay to 1 %; a time-domain run
+  /// shorter than that measures the transient, not the steady state (settling_spans()).
+  double floquet = 0;
+  double settling_spans() const { return floquet > 0 && floquet < 1 ? std::log(0.01) / std::log(floquet) : 0; }
   // The study's limits (Study::limits), set by cost_of.
   bool feasible = true;
   double excess = 0;      ///< Σ relative excess of the limits broken
