@@ -188,6 +188,32 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   std::vector<double> best;
   if (vars.empty()) {
     r.evaluations = 1;
+  } else if (study.coarse && study.worst_speed_first && study.speeds.size() > 1 && std::isfinite(r.coarse_here.J) &&
+             r.coarse_here.speed > 0) {
+    // Fewer speeds first: the start's worst speed only, then every speed from that optimum.
+    Study one = study;
+    one.speeds = {r.coarse_here.speed};
+    one.coarse.reset();
+    auto J1 = [&](const std::vector<double>& values) {
+      const network::Network net = network::resolve(layout, params_of(values));
+      if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
+      try {
+        return evaluate(one, net).penalised();
+      } catch (const NumericalError&) {
+        return static_cast<double>(INFINITY);
+      }
+    };
+    numerics::Options first = search;
+    first.max_evaluations = std::max(1, search.max_evaluations / 2);
+    const numerics::Result s1 = numerics::pattern_search(vars, J1, first, progress);
+    numerics::Options second = search;
+    second.initial_values = {s1.values};
+    second.initial_step = std::max(search.min_step, 0.5 * search.initial_step);
+    second.max_evaluations = std::max(1, search.max_evaluations - s1.evaluations);
+    const numerics::Result s2 = numerics::pattern_search(vars, J, second, progress);
+    best = s2.values;
+    r.evaluations = s1.evaluations + s2.evaluations;
+    r.budget_exhausted = s2.exhausted;
   } else {
     numerics::Result s = numerics::pattern_search(vars, J, search, progress);
     best = s.values;
@@ -197,11 +223,19 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   r.unstable = unstable;
   r.values = fixed;
   for (const auto& [k, v] : params_of(best)) r.values[k] = v;
+  r.cost = evaluate(study, network::resolve(layout, params_of(best)));
+  if (study.coarse && !vars.empty() && r.coarse_here.penalised() < r.cost.penalised()) {
+    // The worst-speed stage led elsewhere: the refinement never ends worse than its start.
+    best = search.initial_values.front();
+    r.values = fixed;
+    for (const auto& [k, v] : params_of(best)) r.values[k] = v;
+    r.cost = r.coarse_here;
+  }
+  r.at_bounds.clear();
   for (std::size_t i = 0; i < vars.size(); ++i)
     if (const double v = best[i]; v == 0 || std::isinf(v) || std::abs(v - vars[i].lo) <= 1e-9 * vars[i].lo ||
                                   std::abs(v - vars[i].hi) <= 1e-9 * vars[i].hi)
       r.at_bounds.push_back(vars[i].name);
-  r.cost = evaluate(study, network::resolve(layout, params_of(best)));
   return r;
 }
 

@@ -123,6 +123,15 @@ TEST(StudyFidelity, ACoarseStudyIsRefinedFromItsOptimumAndNeverEndsWorse) {
   EXPECT_EQ(r.coarse_here.J, optim::evaluate(s, network::resolve("S2-5", c.values)).J);
   EXPECT_LE(r.cost.J, r.coarse_here.J);
   EXPECT_LE(r.evaluations, 12);
+  // Fewer speeds first: half the budget at the start's worst speed, then every speed; never worse.
+  const optim::Study w = io::load_study(write_study("fidelity_w.yaml", fine.replace(fine.find("max_evaluations: 12}"), 20,
+                                                                                  "max_evaluations: 12, worst_speed_first: true}")));
+  EXPECT_TRUE(w.worst_speed_first);
+  const optim::LayoutResult rw = optim::optimise_layout(w, "S2-5");
+  EXPECT_EQ(rw.coarse_here.J, r.coarse_here.J);
+  EXPECT_LE(rw.cost.J, rw.coarse_here.J);
+  EXPECT_LE(rw.evaluations, 12);
+  EXPECT_GE(rw.evaluations, 2);
 }
 
 TEST(StudyFidelity, AFiniteElementLineIsStudiedInTheTimeDomainWithItsSupportUplift) {
@@ -162,6 +171,8 @@ TEST(StudyFidelity, FileErrorsOfTheNewKeys) {
   fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {initial_step: 0.01, min_step: 0.1}\n",
         "expected min_step <= initial_step");
   fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {starts: 3}\n", "unknown key in refine");
+  fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {worst_speed_first: maybe}\n",
+        "expected true or false");
 }
 
 TEST(StudyFidelity, AnUndampedInternalBranchIsFlaggedAsSlowToSettle) {

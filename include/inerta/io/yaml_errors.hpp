@@ -53,6 +53,15 @@ inline YAML::Node yaml_load_file(const std::string& path, const std::string& wha
   }
 }
 
+/// true or false (yaml-cpp's spellings: true/false, yes/no, on/off).
+inline bool yaml_bool(const std::string& file, const YAML::Node& n, const std::string& key) {
+  try {
+    if (n.IsScalar()) return n.as<bool>();
+  } catch (const YAML::Exception&) {
+  }
+  yaml_fail(file, n, key, fmt::format("'{}': expected true or false", n.IsScalar() ? n.Scalar() : std::string("a list or map")));
+}
+
 /// A finite number (.nan and .inf are refused; a missing key is "missing; expected a number").
 inline double yaml_number(const std::string& file, const YAML::Node& n, const std::string& key) {
   if (!n.IsDefined() || n.IsNull()) yaml_fail(file, n, key, "missing; expected a number");

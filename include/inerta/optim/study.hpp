@@ -51,6 +51,10 @@ struct Study {
   /// refined here by a pattern search from that optimum with `refine`'s options (docs/studies.md).
   std::shared_ptr<const Study> coarse;
   numerics::Options refine;
+  /// Multi-fidelity, `refine: {worst_speed_first: true}`: the refinement first searches at the speed
+  /// of the coarse optimum's worst σ on this study only (half the budget), then at every speed from
+  /// that optimum on a finer mesh (the rest).
+  bool worst_speed_first = false;
   pantograph::Pantograph pantograph;
   std::vector<std::shared_ptr<const catenary::Catenary>> catenaries;  ///< the variants (J1: one)
   std::vector<std::string> catenary_labels;
