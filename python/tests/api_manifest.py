@@ -389,4 +389,5 @@ EXCLUDED = {
     "io::yaml_fail": "internal helper of the YAML readers (their errors are bound as ModelError)",
     "io::yaml_load_file": "internal helper of the YAML readers",
     "io::yaml_number": "internal helper of the YAML readers",
+    "io::yaml_bool": "internal helper of the YAML readers",
 }
