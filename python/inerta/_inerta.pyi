@@ -1133,6 +1133,7 @@ class Study:
     @property
     def coarse(self) -> Optional[Study]: ...
     refine: SearchOptions
+    worst_speed_first: bool
     @property
     def all_networks(self) -> bool: ...
     def replace(self, *, speeds: Optional[ArrayLike] = None, layouts: Optional[Sequence[str]] = None,

@@ -118,6 +118,8 @@ void bind_optim(py::module_& m) {
         return s.coarse ? py::cast(*s.coarse) : py::none();
       }, "multi-fidelity: the coarse study each layout is first searched on, or None")
       .def_readonly("refine", &Study::refine, "multi-fidelity: the refinement's search options")
+      .def_readonly("worst_speed_first", &Study::worst_speed_first,
+                    "multi-fidelity: the refinement first at the start's worst speed only")
       .def_property_readonly("all_networks", [](const Study& s) { return s.all.has_value(); },
                              "`layouts: all`: the layouts are every network the study's networks options allow")
       .def_readonly("operating_length", &Study::operating_length,
