@@ -963,6 +963,9 @@ struct OptimiseArgs {
 // `optimise --workers N | --scheduler ADDRESS`: the study on Dask, by the Python module's driver
 // (python/inerta/distributed.py), which this process becomes (exit code and Ctrl-C are its).
 int run_distributed(const OptimiseArgs& a) {
+  if (io::is_model_study(a.study))
+    throw InvalidArgument(fmt::format("--workers/--scheduler: {} is a model study; only J2 studies (catenary:) are "
+                                      "distributed so far — run it without", a.study));
   if (a.map != 15) throw InvalidArgument("--map: not available with --workers/--scheduler (the report uses the default map)");
   std::vector<std::string> args{INERTA_PYTHON, "-m", "inerta.distributed", "optimise", a.study};
   if (a.workers > 0) args.insert(args.end(), {"--workers", std::to_string(a.workers)});

@@ -155,6 +155,22 @@ def _client(args):
 
 
 def main(argv=None):
+    """The command line; errors as the CLI reports them (docs/cli.md "Exit codes"): `error: …` and exit
+    code 2 for a file error, `numerical failure: …` and 3, `error: …` and 1 otherwise."""
+    try:
+        return _main(argv)
+    except _inerta.ModelError as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 2
+    except _inerta.NumericalError as e:
+        print(f"numerical failure: {e}", file=sys.stderr)
+        return 3
+    except (_inerta.InvalidArgument, _inerta.Error, RuntimeError, ValueError, OSError) as e:
+        print(f"error: {e}", file=sys.stderr)
+        return 1
+
+
+def _main(argv=None):
     p = argparse.ArgumentParser(prog="python3 -m inerta.distributed",
                                 description="Inerta design studies on a Dask cluster (docs/distributed.md)")
     sub = p.add_subparsers(dest="command", required=True)

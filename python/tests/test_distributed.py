@@ -142,3 +142,9 @@ def test_cli_workers_give_the_serial_table(study_file, tmp_path):
     bad = subprocess.run([str(CLI), "optimise", str(study_file), "--workers", "2", "--scheduler", "tcp://x:1"],
                          capture_output=True, text=True, cwd=SRC)
     assert bad.returncode != 0 and "excludes" in bad.stderr
+    model_study = subprocess.run([str(CLI), "optimise", os.path.join(SRC, "studies", "tmd.yaml"), "--workers", "1"],
+                                 capture_output=True, text=True, cwd=SRC)
+    assert model_study.returncode != 0 and "is a model study" in model_study.stderr
+    missing = subprocess.run([str(CLI), "optimise", str(tmp_path / "none.yaml"), "--workers", "1"],
+                             capture_output=True, text=True, cwd=SRC)
+    assert missing.returncode == 2 and missing.stderr.startswith("error: ") and "Traceback" not in missing.stderr
