@@ -147,6 +147,7 @@ class FeCoupled final : public Coupled {
   }
   std::vector<double> support_x() const override { return line_->support_x(); }
   std::vector<double> support_uplift() const override {
+    start_line();
     return fe_->support_uplift();
   }
 
@@ -188,12 +189,15 @@ class FeCoupled final : public Coupled {
           "finite-element catenary: the static uplift of the pantographs against the line did not converge (last "
           "change {:.3g} m)",
           change));
-    fe_->start(xs, F, 0.0);
+    // The line's dynamic solve starts at the first advance: a static state alone (a study's operating
+    // length) needs no modes.
+    start_x_ = xs, start_F_ = F;
+    line_started_ = false;
     for (std::size_t k = 0; k < n; ++k) {
       Part& p = *parts_[k];
       p.stepper.reset();  // made by the first advance, with its options
-      p.y_wire = fe_->height(xs[k]);
-      p.v_wire = fe_->height_rate(xs[k], v_);
+      p.y_wire = y[k];
+      p.v_wire = 0;
       p.acc_y = 0;
       p.F = F[k];
     }
@@ -204,6 +208,7 @@ class FeCoupled final : public Coupled {
   solve::RunStats advance(double t_end, double dt, const solve::IntegratorOptions& options,
                           const SampleObserver& observer, bool accelerations) override {
     if (!(dt > 0)) throw InvalidArgument("advance: the sample interval must be > 0 s");
+    start_line();
     const double h = fe_->dt();
     if (!started_ || options.method != options_.method || options.rtol != options_.rtol ||
         options.atol != options_.atol || options.max_step != options_.max_step) {
@@ -298,6 +303,17 @@ class FeCoupled final : public Coupled {
     return *parts_[static_cast<std::size_t>(c.index)];
   }
   static const mbs::State& state_of(const Part& p) { return p.stepper ? p.stepper->state() : p.x; }
+  // The line at rest in the static state equilibrate() found (the modal solve's windows are made here).
+  void start_line() const {
+    if (line_started_) return;
+    fe_->start(start_x_, start_F_, 0.0);
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      Part& p = *parts_[k];
+      p.y_wire = fe_->height(start_x_[k]);
+      p.v_wire = fe_->height_rate(start_x_[k], v_);
+    }
+    line_started_ = true;
+  }
 
   std::shared_ptr<const FeLine> line_;
   std::unique_ptr<FeLineSolver> fe_;
@@ -306,6 +322,8 @@ class FeCoupled final : public Coupled {
   std::vector<std::unique_ptr<Part>> parts_;
   solve::IntegratorOptions options_;
   bool sampled_start_ = false, started_ = false;
+  std::vector<double> start_x_, start_F_;
+  mutable bool line_started_ = false;
 };
 
 }  // namespace

@@ -479,12 +479,12 @@ class ModalSolver final : public FeLineSolver {
     c0_ = 1 / (beta_ * h_ * h_), c1_ = gamma_ / (beta_ * h_), c2_ = 1 / (beta_ * h_);
     c3_ = 1 / (2 * beta_) - 1, c4_ = gamma_ / beta_ - 1, c5_ = h_ * (gamma_ / (2 * beta_) - 1);
     slack_.assign(L_.droppers().size(), 0);
-    if (W_ < L_.data().spans) ml_->prepare(W_);
   }
   double dt() const override { return h_; }
   double time() const override { return t_; }
 
   void start(const std::vector<double>& x, const std::vector<double>& F, double t) override {
+    if (W_ < L_.data().spans) ml_->prepare(W_);
     t_ = t;
     std::vector<char> slack;
     const Eigen::VectorXd u = L_.static_displacement(x, F, &slack);

@@ -336,3 +336,29 @@ TEST(FeModalStore, TheEnvironmentChoosesTheDirectoryOrNone) {
   if (xdg) ::setenv("XDG_CACHE_HOME", keep_xdg.c_str(), 1); else ::unsetenv("XDG_CACHE_HOME");
   if (saved) ::setenv("INERTA_CACHE", keep.c_str(), 1);
 }
+
+TEST(FeModal, TheStaticStateNeedsNoModesAndIsTheDirectSolvesOne) {
+  // Coupling and equilibrating (what a study's operating length needs) decomposes nothing; the
+  // pantograph's static state is the direct solve's; the first step makes the windows' modes.
+  FeCatenaryData d = line_data(8);
+  d.solver = FeCatenaryData::Solver::Modal;
+  const catenary::FeCatenary modal_line(d);
+  d.solver = FeCatenaryData::Solver::Direct;
+  const catenary::FeCatenary direct_line(d);
+  const auto panto = io::load_pantograph(INERTA_SOURCE_DIR "/models/hsx.yaml");
+  const auto contact = io::load_catenary(INERTA_SOURCE_DIR "/models/catenary-fe.yaml").contact;
+  const std::vector<catenary::PantographOnLine> train{{panto, 30.0, contact}};
+  auto m = modal_line.couple(train, 250 / 3.6);
+  auto r = direct_line.couple(train, 250 / 3.6);
+  EXPECT_EQ(modal_line.modal()->decompositions() + modal_line.modal()->loaded(), 0);
+  const catenary::ContactId c = m->contact(0);
+  ASSERT_EQ(m->state(c).q.size(), r->state(c).q.size());
+  for (Eigen::Index i = 0; i < m->state(c).q.size(); ++i) EXPECT_EQ(m->state(c).q[i], r->state(c).q[i]) << i;
+  std::vector<double> Fm, Fr;
+  m->advance(0.01, 0.002, {}, [&](const catenary::Sample& s) { Fm.push_back(s.force); }, false);
+  r->advance(0.01, 0.002, {}, [&](const catenary::Sample& s) { Fr.push_back(s.force); }, false);
+  EXPECT_GT(modal_line.modal()->decompositions() + modal_line.modal()->loaded(), 0);
+  ASSERT_EQ(Fm.size(), Fr.size());
+  EXPECT_EQ(Fm.front(), Fr.front());  // the static contact force; then the first 10 ms (σ: the tests above)
+  for (std::size_t k = 0; k < Fm.size(); ++k) EXPECT_NEAR(Fm[k], Fr[k], 0.05 * Fr[k]) << k;
+}
