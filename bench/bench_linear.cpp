@@ -9,12 +9,9 @@
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/optim/model_study.hpp"
 #include "inerta/pantograph/suspension.hpp"
+#include "source.hpp"
 
 using namespace inerta;
-
-namespace {
-std::string src(const std::string& rel) { return std::string(INERTA_SOURCE_DIR) + "/" + rel; }
-}  // namespace
 
 static void BM_QuarterCarRmsEvaluation(benchmark::State& state) {
   const mbs::Model m = io::load_model(src("models/quarter_car.yaml"));

@@ -10,12 +10,9 @@
 #include "inerta/network/positive_real.hpp"
 #include "inerta/network/synthesis.hpp"
 #include "inerta/optim/structure_search.hpp"
+#include "source.hpp"
 
 using namespace inerta;
-
-namespace {
-std::string src(const std::string& rel) { return std::string(INERTA_SOURCE_DIR) + "/" + rel; }
-}  // namespace
 
 static void BM_EnumerateNetworks(benchmark::State& state) {
   network::EnumerationOptions o;

@@ -753,6 +753,9 @@ void bind_model(py::module_& m) {
     return py::cast(h).attr("with_suspension")(net, params, l).cast<Model>();
   }, py::arg("model"), py::arg("network"), py::arg("params") = py::none(), py::arg("reference_length") = -1.0,
         "Same as Model.with_suspension.");
+  m.def("suspension_index", [](const Model& h) { return pantograph::suspension_index(h.model()); }, py::arg("model"),
+        "Index in the model's force elements of its single actuator, the suspension that with_suspension replaces "
+        "(pantograph::suspension_index); ModelError if the model has none or more than one.");
   m.def("release_head", [](const Model& h) { return py::cast(h).attr("release_head")(); }, py::arg("model"),
         "Same as Model.release_head: (model, static contact force N).");
 }

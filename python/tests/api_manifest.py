@@ -149,6 +149,7 @@ BOUND = {
     "solve::method_name": "IntegratorOptions.method",
     # pantograph
     "pantograph::with_suspension": "with_suspension",
+    "pantograph::suspension_index": "suspension_index",
     "pantograph::release_head": "release_head",
     # catenary
     "catenary::Catenary": "Catenary",
@@ -386,6 +387,7 @@ EXCLUDED = {
     "io::check_unique_keys": "internal helper of the YAML readers",
     "io::yaml_number_in": "internal helper of the YAML readers",
     "io::yaml_integer": "internal helper of the YAML readers",
+    "io::yaml_whole": "internal helper of the YAML readers",
     "io::yaml_fail": "internal helper of the YAML readers (their errors are bound as ModelError)",
     "io::yaml_load_file": "internal helper of the YAML readers",
     "io::yaml_number": "internal helper of the YAML readers",

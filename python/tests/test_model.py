@@ -88,6 +88,10 @@ def test_transformations(hsx):
         hsx.without_joint("nope")
     with pytest.raises(inerta.ModelError):
         inerta.load_model(model("twobar.yaml")).with_suspension("k", {"k": 1})  # no actuator
+    with pytest.raises(inerta.ModelError, match="no actuator"):
+        inerta.suspension_index(inerta.load_model(model("twobar.yaml")))
+    i = inerta.suspension_index(hsx)
+    assert hsx.forces[i].type == "actuator"
     built = inerta.modal_analysis(hsx).model
     with pytest.raises(inerta.ModelError, match="not read from a file"):
         built.with_overrides({"head.mass": 1})

@@ -150,10 +150,11 @@ void strut_network(const ForceSite& s, bool act) {
                                       act ? "only the actuator's constant force, friction and piston mass" : "no force"));
     net = network::Network{network::Network::Kind::Damper, "c", 0.0, {}, 0};  // exerts no force
   }
-  if (act)
+  if (act) {
+    model.actuators.push_back(static_cast<int>(model.forces.size()));
     model.forces.push_back(
         std::make_shared<mbs::Actuator>(s.name, t.bi, t.ui.u.head<2>(), t.bj, t.uj.u.head<2>(), net, l_ref, ap, corr));
-  else
+  } else
     model.forces.push_back(std::make_shared<mbs::NetworkStrut>(s.name, t.bi, t.ui, t.bj, t.uj, net, l_ref, corr));
 }
 void network_strut(const ForceSite& s) { strut_network(s, false); }

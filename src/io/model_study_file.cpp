@@ -41,12 +41,6 @@ double positive(const std::string& path, const YAML::Node& n, const std::string&
   return v;
 }
 
-int whole(const std::string& path, const YAML::Node& n, const std::string& key, int lo, int hi) {
-  const double v = yaml_number(path, n, key);
-  if (!(v >= lo && v <= hi) || v != std::floor(v))
-    yaml_fail(path, n, key, fmt::format("expected a whole number from {} to {}, got {}", lo, hi, n.Scalar()));
-  return static_cast<int>(v);
-}
 
 std::vector<std::string> names(const std::string& path, const YAML::Node& n, const std::string& key) {
   if (!is_seq(n) || n.size() == 0) yaml_fail(path, n, key, "expected a list of names, e.g. [road]");
@@ -129,7 +123,7 @@ optim::Objective read_objective(const std::string& path, const YAML::Node& o, co
           r.delays.push_back(v);
         }
       }
-      if (road["pade_order"].IsDefined()) r.pade_order = whole(path, road["pade_order"], "pade_order", 1, 20);
+      if (road["pade_order"].IsDefined()) r.pade_order = yaml_whole(path, road["pade_order"], "pade_order", 1, 20);
       obj.road = r;
     } else {
       if (!is_map(noise) || noise.size() == 0)
@@ -160,7 +154,7 @@ optim::Objective read_objective(const std::string& path, const YAML::Node& o, co
     only_keys(path, b, "band", {"from", "to", "points", "spacing"});
     const double f0 = positive(path, b["from"], "from", "Hz"), f1 = positive(path, b["to"], "to", "Hz");
     if (!(f1 > f0)) yaml_fail(path, b, "band", "expected from < to");
-    const int n = b["points"].IsDefined() ? whole(path, b["points"], "points", 2, 100000) : 500;
+    const int n = b["points"].IsDefined() ? yaml_whole(path, b["points"], "points", 2, 100000) : 500;
     const std::string sp = b["spacing"].IsDefined() ? b["spacing"].Scalar() : "linear";
     if (sp != "linear" && sp != "log") yaml_fail(path, b["spacing"], "spacing", "expected linear or log");
     for (int k = 0; k < n; ++k) {
@@ -236,12 +230,12 @@ optim::ModelStudy read(const std::string& path) {
   if (const YAML::Node se = root["search"]; se.IsDefined()) {
     if (!is_map(se)) yaml_fail(path, se, "search", "expected {starts, seed, lo, hi, min_step, max_evaluations}");
     only_keys(path, se, "search", {"starts", "seed", "lo", "hi", "min_step", "max_evaluations"});
-    if (se["starts"].IsDefined()) s.search.starts = whole(path, se["starts"], "starts", 1, 1000);
-    if (se["seed"].IsDefined()) s.search.seed = static_cast<unsigned>(whole(path, se["seed"], "seed", 0, 2147483647));
+    if (se["starts"].IsDefined()) s.search.starts = yaml_whole(path, se["starts"], "starts", 1, 1000);
+    if (se["seed"].IsDefined()) s.search.seed = static_cast<unsigned>(yaml_whole(path, se["seed"], "seed", 0, 2147483647));
     if (se["lo"].IsDefined()) s.lo = positive(path, se["lo"], "lo", "SI");
     if (se["hi"].IsDefined()) s.hi = positive(path, se["hi"], "hi", "SI");
     if (se["min_step"].IsDefined()) s.search.min_step = positive(path, se["min_step"], "min_step", "decades");
-    if (se["max_evaluations"].IsDefined()) s.search.max_evaluations = whole(path, se["max_evaluations"], "max_evaluations", 1, 100000000);
+    if (se["max_evaluations"].IsDefined()) s.search.max_evaluations = yaml_whole(path, se["max_evaluations"], "max_evaluations", 1, 100000000);
     if (!(s.hi > s.lo)) yaml_fail(path, se, "search", "expected lo < hi");
   }
   // The baseline must evaluate: unknown inputs, an output with infinite variance, ... fail here.

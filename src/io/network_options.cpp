@@ -9,15 +9,6 @@
 
 namespace inerta::io {
 
-namespace {
-int whole(const std::string& path, const YAML::Node& n, const std::string& key, int lo, int hi) {
-  const double v = yaml_number(path, n, key);
-  if (!(v >= lo && v <= hi) || v != std::floor(v))
-    yaml_fail(path, n, key, fmt::format("expected a whole number from {} to {}, got {}", lo, hi, n.Scalar()));
-  return static_cast<int>(v);
-}
-}  // namespace
-
 std::optional<network::EnumerationOptions> read_all_layouts(const std::string& path, const YAML::Node& root) {
   const YAML::Node ls = root["layouts"], nw = root["networks"];
   const bool all = ls.IsDefined() && ls.IsScalar() && ls.Scalar() == "all";
@@ -35,10 +26,10 @@ std::optional<network::EnumerationOptions> read_all_layouts(const std::string& p
     const std::string k = it->first.Scalar();
     const YAML::Node v = it->second;
     if (k == "max_elements") {
-      o.max_elements = whole(path, v, k, 1, network::max_enumerated_elements), have_max = true;
+      o.max_elements = yaml_whole(path, v, k, 1, network::max_enumerated_elements), have_max = true;
     } else if (k == "max_springs" || k == "max_dampers" || k == "max_inerters") {
       (k == "max_springs" ? o.max_springs : k == "max_dampers" ? o.max_dampers : o.max_inerters) =
-          whole(path, v, k, 0, network::max_enumerated_elements);
+          yaml_whole(path, v, k, 0, network::max_enumerated_elements);
     } else if (k == "elements") {
       if (!v.IsSequence() || v.size() == 0) yaml_fail(path, v, k, "expected a list of element types, e.g. [k, c, b]");
       o.springs = o.dampers = o.inerters = false;
@@ -71,7 +62,7 @@ std::vector<int> read_admittance_degrees(const std::string& path, const YAML::No
   if (!a.IsSequence() || a.size() == 0)
     yaml_fail(path, a, "admittance", "expected a list of degrees, e.g. [2, 3] (biquadratic, bicubic)");
   for (const auto& d : a) {
-    const int n = whole(path, d, "admittance", 1, 4);
+    const int n = yaml_whole(path, d, "admittance", 1, 4);
     if (std::find(out.begin(), out.end(), n) != out.end()) yaml_fail(path, d, "admittance", fmt::format("degree {} is given twice", n));
     out.push_back(n);
   }

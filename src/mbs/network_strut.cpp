@@ -147,18 +147,19 @@ std::shared_ptr<const ForceElement> NetworkStrut::with_state_offset(int offset) 
   c->state_offset_ = offset;
   return c;
 }
-void NetworkStrut::replace_network(const network::Network& net) {
+void NetworkStrut::replace_network(const network::Network& net, double reference_length) {
   net_ = realisable({"network strut", name()}, net);
   r_ = network::realise(net_);
+  if (!std::isnan(reference_length)) l_ref_ = check::nonnegative({"network strut", name()}, "free_length", reference_length, "m");
 }
-std::shared_ptr<const ForceElement> NetworkStrut::with_network(const network::Network& net) const {
+std::shared_ptr<const ForceElement> NetworkStrut::with_network(const network::Network& net, double reference_length) const {
   auto c = std::make_shared<NetworkStrut>(*this);
-  c->replace_network(net);
+  c->replace_network(net, reference_length);
   return c;
 }
-std::shared_ptr<const ForceElement> Actuator::with_network(const network::Network& net) const {
+std::shared_ptr<const ForceElement> Actuator::with_network(const network::Network& net, double reference_length) const {
   auto c = std::make_shared<Actuator>(*this);
-  c->replace_network(net);
+  c->replace_network(net, reference_length);
   return c;
 }
 std::shared_ptr<const ForceElement> Actuator::with_state_offset(int offset) const {

@@ -35,10 +35,13 @@ mbs::Model with_strut_network(const mbs::Model& model, int strut, const network:
   if (net.kind == network::Network::Kind::Rigid)
     throw ModelError(fmt::format("network '{}' of '{}' is rigid with these values", network::to_string(bound, true), f->name()));
   mbs::Model m = model;
-  if (net.kind == network::Network::Kind::Open)
+  if (net.kind == network::Network::Kind::Open) {
     m.forces.erase(m.forces.begin() + strut);
-  else
-    m.forces[static_cast<std::size_t>(strut)] = f->with_network(net);
+    std::erase(m.actuators, strut);
+    for (int& a : m.actuators) a -= a > strut;
+  } else {
+    m.forces[static_cast<std::size_t>(strut)] = f->with_network(net, NAN);
+  }
   m.finalize();
   return m;
 }

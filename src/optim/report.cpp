@@ -15,7 +15,6 @@
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/error.hpp"
 #include "inerta/mbs/assembly.hpp"
-#include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
 
@@ -86,12 +85,9 @@ pantograph::Pantograph rig_model(const Study& study, const network::Network& net
   const mbs::Model& p = study.pantograph.model;
   mbs::State x = mbs::assemble(p, 0.0);
   mbs::static_equilibrium(p, 0.0, x);
-  for (const auto& f : p.forces)
-    if (std::dynamic_pointer_cast<const mbs::Actuator>(f)) {
-      rig.model = pantograph::with_suspension(p, net, f->length(p, x));
-      return rig;
-    }
-  throw ModelError(fmt::format("{}: the pantograph has no actuator", study.source));
+  const auto& f = p.forces[static_cast<std::size_t>(pantograph::suspension_index(p))];
+  rig.model = pantograph::with_suspension(p, net, f->length(p, x));
+  return rig;
 }
 
 std::vector<ForceHistory> contact_histories(const Study& study, const network::Network& net, double speed) {

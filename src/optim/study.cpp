@@ -11,7 +11,6 @@
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/error.hpp"
-#include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/pantograph/suspension.hpp"
 #include "evaluable.hpp"
@@ -21,10 +20,7 @@ namespace inerta::optim {
 
 double operating_length(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                         const catenary::Contact& contact) {
-  int act = -1;
-  for (std::size_t k = 0; k < pantograph.model.forces.size(); ++k)
-    if (std::dynamic_pointer_cast<const mbs::Actuator>(pantograph.model.forces[k])) act = static_cast<int>(k);
-  if (act < 0) throw ModelError("the pantograph has no actuator whose suspension could be replaced");
+  const int act = pantograph::suspension_index(pantograph.model);
   auto sys = catenary.couple(pantograph, contact, 1.0);
   sys->equilibrate();
   const catenary::ContactId c = sys->contact(0);
@@ -42,10 +38,12 @@ std::vector<double> operating_lengths(const Study& s) {
 }
 
 network::Network default_suspension(const Study& study) {
-  for (const auto& f : study.pantograph.model.forces)
-    if (auto a = std::dynamic_pointer_cast<const mbs::Actuator>(f)) return a->network();
-  throw ModelError(
-      fmt::format("{}: the pantograph has no actuator whose suspension the study could replace", study.source));
+  const mbs::Model& m = study.pantograph.model;
+  try {
+    return *m.forces[static_cast<std::size_t>(pantograph::suspension_index(m))]->strut_network();
+  } catch (const ModelError& e) {
+    throw ModelError(fmt::format("{}: {}", study.source, e.what()));
+  }
 }
 
 StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps) {

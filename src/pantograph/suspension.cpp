@@ -2,13 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "inerta/error.hpp"
 #include "inerta/mbs/applied_forces.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
-#include "inerta/mbs/network_strut.hpp"
 
 namespace inerta::pantograph {
+
+int suspension_index(const mbs::Model& model) {
+  if (model.actuators.empty())
+    throw ModelError(fmt::format("{}: the model has no actuator whose suspension could be replaced", model.source));
+  if (model.actuators.size() > 1)
+    throw ModelError(fmt::format("{}: more than one actuator; the suspension is ambiguous", model.source));
+  return model.actuators.front();
+}
 
 mbs::Model with_suspension(const mbs::Model& model, const network::Network& bound, double reference_length) {
   using network::Network;
@@ -22,18 +31,8 @@ mbs::Model with_suspension(const mbs::Model& model, const network::Network& boun
                                   network::to_string(bound, true)));
     net = Network{Network::Kind::Damper, "c", 0.0, {}, 0};
   }
-  bool found = false;
-  for (auto& f : m.forces) {
-    if (auto a = std::dynamic_pointer_cast<const mbs::Actuator>(f)) {
-      if (found) throw ModelError(fmt::format("{}: more than one actuator; the suspension is ambiguous", m.source));
-      found = true;
-      f = std::make_shared<mbs::Actuator>(a->name(), a->body_i(), a->u_i(), a->body_j(), a->u_j(), net,
-                                          reference_length > 0 ? reference_length : a->reference_length(),
-                                          a->params(), a->centripetal_switch());
-    }
-  }
-  if (!found)
-    throw ModelError(fmt::format("{}: the model has no actuator whose suspension could be replaced", m.source));
+  auto& f = m.forces[static_cast<std::size_t>(suspension_index(m))];
+  f = f->with_network(net, reference_length > 0 ? reference_length : NAN);
   m.finalize();  // places the internal states of the new network and of every element after it
   return m;
 }

@@ -5,10 +5,12 @@
 #include <fmt/format.h>
 
 #include "inerta/analysis/simulate.hpp"
+#include "inerta/error.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
+#include "inerta/optim/model_study.hpp"
 #include "inerta/pantograph/suspension.hpp"
 
 using namespace inerta;
@@ -82,4 +84,42 @@ TEST(Transform, FinalizeRelocatesElementsWhoseOffsetsWentStale) {
   EXPECT_EQ(m.forces[a]->state_offset(), 0);
   EXPECT_EQ(m.forces[t]->state_offset(), 1);
   EXPECT_EQ(tail->state_offset(), 1);  // the original element is untouched (shared by other models)
+}
+
+TEST(Transform, TheSuspensionIsTheLoadersActuatorHandle) {
+  // The loader records the actuator's index (mbs::Model::actuators); the suspension is found by it,
+  // a model with two actuators is ambiguous, and a strut removed before it moves the handle along.
+  const mbs::Model m = io::parse_model(model("network: S2-default"), "m.yaml");
+  ASSERT_EQ(m.actuators, std::vector<int>{m.find_force("act")});
+  EXPECT_EQ(pantograph::suspension_index(m), m.find_force("act"));
+  const mbs::Model s = pantograph::with_suspension(m, network::resolve("k|c", {{"k", 5000}, {"c", 300}}), 0.75);
+  EXPECT_EQ(s.actuators, m.actuators);
+  const auto& act = s.forces[static_cast<std::size_t>(pantograph::suspension_index(s))];
+  EXPECT_EQ(act->name(), "act");
+  EXPECT_EQ(network::to_string(*act->strut_network(), false), "k|c");
+  // An open tail strut before the actuator: removed, the actuator's index follows.
+  std::string two = model("network: S2-default");
+  const std::string line = "  - {name: act,";
+  const auto at = two.find(line);
+  ASSERT_NE(at, std::string::npos);
+  two.insert(at, "  - {name: pre, type: network, markers: [ground.B, head.cm], network: \"c\", params: {c: 0}}\n");
+  const mbs::Model pre = io::parse_model(two, "pre.yaml");
+  const int p = pre.find_force("pre"), a = pre.find_force("act");
+  ASSERT_EQ(a, p + 1);
+  ASSERT_EQ(pre.actuators, std::vector<int>{a});
+  const mbs::Model cut = optim::with_strut_network(pre, p, network::resolve("c", {{"c", 0}}));
+  EXPECT_EQ(cut.forces.size(), pre.forces.size() - 1);
+  EXPECT_EQ(cut.actuators, std::vector<int>{p});
+  EXPECT_EQ(cut.forces[static_cast<std::size_t>(p)]->name(), "act");
+  // Two actuators: the suspension is ambiguous.
+  std::string both = model("network: S2-default");
+  both.insert(both.find(line), "  - {name: act2, type: actuator, markers: [ground.B, head.cm], network: \"k\", params: {k: 1}}\n");
+  const mbs::Model ambiguous = io::parse_model(both, "two.yaml");
+  EXPECT_EQ(ambiguous.actuators.size(), 2u);
+  try {
+    (void)pantograph::with_suspension(ambiguous, network::resolve("k", {{"k", 1}}));
+    ADD_FAILURE() << "two actuators accepted";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than one actuator"), std::string::npos) << e.what();
+  }
 }

@@ -92,4 +92,12 @@ inline long yaml_integer(const std::string& file, const YAML::Node& n, const std
   return static_cast<long>(v);
 }
 
+/// A whole number in [lo, hi] ("expected a whole number from lo to hi, got v": the study files' words).
+inline int yaml_whole(const std::string& file, const YAML::Node& n, const std::string& key, int lo, int hi) {
+  const double v = yaml_number(file, n, key);
+  if (!(v >= lo && v <= hi) || v != std::floor(v))
+    yaml_fail(file, n, key, fmt::format("expected a whole number from {} to {}, got {}", lo, hi, n.Scalar()));
+  return static_cast<int>(v);
+}
+
 }  // namespace inerta::io

@@ -49,10 +49,12 @@ class ForceElement {
   /// The value of such a load at t (NaN for other elements).
   virtual double load_value(double) const;
   /// A network strut (network, actuator): its network, and the same strut with another network
-  /// (simplified, neither open nor rigid; same markers and reference length), for design studies.
-  /// Null for every other element.
+  /// (simplified, neither open nor rigid; same markers) relaxed at `reference_length` (m; NaN: the
+  /// strut's own), for design studies. Null for every other element.
   virtual const network::Network* strut_network() const { return nullptr; }
-  virtual std::shared_ptr<const ForceElement> with_network(const network::Network&) const { return nullptr; }
+  virtual std::shared_ptr<const ForceElement> with_network(const network::Network&, double /*reference_length*/) const {
+    return nullptr;
+  }
   /// A strut: its terminal vector r = r_Pj − r_Pi (z = 0 in 2D) at x, so that the integrator can
   /// stop a strut that passes through zero length between two steps (r reverses). False otherwise.
   virtual bool strut_vector(const Model&, const State&, Eigen::Vector3d&) const { return false; }

@@ -64,6 +64,9 @@ struct Model {
   std::vector<Marker> markers;
   std::vector<Joint> joints;
   std::vector<std::shared_ptr<const ForceElement>> forces;
+  /// Indices in `forces` of the actuators (a pantograph's suspension, spec/04 §4.2), in file order:
+  /// written by the loader, kept by the transformations that move force elements.
+  std::vector<int> actuators;
   std::vector<Output> outputs;
   std::vector<int> held;           ///< coordinates held fixed during assembly
   std::vector<std::string> notes;  ///< things the loader decided that a user should read (printed by the CLI)

@@ -31,11 +31,12 @@ class NetworkStrut : public Strut {
   std::shared_ptr<const ForceElement> with_state_offset(int offset) const override;
   void relax(const Model& model, State& x) const override;
   const network::Network* strut_network() const override { return &net_; }
-  std::shared_ptr<const ForceElement> with_network(const network::Network& net) const override;
+  std::shared_ptr<const ForceElement> with_network(const network::Network& net, double reference_length) const override;
 
  protected:
-  /// Replaces the network (checked as by the constructor); for with_network of this and derived classes.
-  void replace_network(const network::Network& net);
+  /// Replaces the network (checked as by the constructor) and, unless NaN, the reference length (m);
+  /// for with_network of this and derived classes.
+  void replace_network(const network::Network& net, double reference_length);
   /// Tension without the d2·l̈ part, i.e. d1 l̇ + d0 u + C z, and (into zd) ż.
   double network_tension(const StrutKinematics& s, const State& x) const;
 
@@ -65,7 +66,7 @@ class Actuator : public NetworkStrut {
            bool centripetal = true);
   const Params& params() const { return p_; }
   std::shared_ptr<const ForceElement> with_state_offset(int offset) const override;
-  std::shared_ptr<const ForceElement> with_network(const network::Network& net) const override;
+  std::shared_ptr<const ForceElement> with_network(const network::Network& net, double reference_length) const override;
 
   void add(const Model& model, double t, const State& x, Workspace& ws) const override;
   double energy(const Model& model, double t, const State& x) const override;  // + F_c l, + piston ½ m v², − m_p g·r

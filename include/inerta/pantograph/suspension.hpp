@@ -7,6 +7,10 @@
 
 namespace inerta::pantograph {
 
+/// The suspension: the index in model.forces of the model's single actuator (mbs::Model::actuators).
+/// ModelError naming the model if it has none, or more than one (the suspension is ambiguous).
+int suspension_index(const mbs::Model& model);
+
 /// The model with its (single) actuator's network replaced by `net` (bound, not yet simplified).
 /// Internal-state offsets of the following network struts are renumbered. Throws ModelError if the
 /// model has no actuator, or if `net` is rigid.
