@@ -1240,12 +1240,12 @@ int main(int argc, char** argv) {
   sim->add_option("--sample", sa.sample, "Output sampling interval, s (default: options.sample)")->check(number_rule(analysis::sample_rule));
   sim->add_option("--out", sa.out, "CSV file to write (default: standard output)");
   sim->add_flag("--no-centripetal", sa.no_centripetal, "Switch off the inerter centripetal correction (eq. 3.8)");
-  sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str()->check(number_in(1e-14, 1, "1e-14 … 1"));
-  sim->add_option("--atol", sa.atol, "Absolute tolerance (m, rad, m/s, rad/s)")->capture_default_str()->check(positive(""));
+  sim->add_option("--rtol", sa.rtol, "Relative tolerance")->capture_default_str()->check(number_rule(solve::rtol_rule));
+  sim->add_option("--atol", sa.atol, "Absolute tolerance (m, rad, m/s, rad/s)")->capture_default_str()->check(number_rule(solve::atol_rule));
   sim->add_option("--integrator", sa.integrator, "rk (explicit Dormand-Prince) or bdf (CVODE BDF, stiff)")
       ->check(CLI::IsMember({"rk", "bdf"}))
       ->capture_default_str();
-  sim->add_option("--max-step", sa.max_step, "Largest integrator step, s (0 = unlimited)")->check(number_in(0, 1e7, ">= 0 s"));
+  sim->add_option("--max-step", sa.max_step, "Largest integrator step, s (0 = unlimited)")->check(number_rule(solve::max_step_rule));
   sim->add_flag("--from-equilibrium", sa.from_equilibrium, "Start from the static equilibrium under all loads");
   sim->add_option("--steady-from", sa.steady_from, "Print min/max/peak-to-peak/mean of every output for t >= T")
       ->check(number_in(0, 1e7, ">= 0 s"));
@@ -1274,8 +1274,8 @@ int main(int argc, char** argv) {
   swp->add_option("--integrator", wa.integrator, "rk or bdf")
       ->check(CLI::IsMember({"rk", "bdf"}))
       ->capture_default_str();
-  swp->add_option("--rtol", wa.rtol, "Relative tolerance")->capture_default_str()->check(number_in(1e-14, 1, "1e-14 … 1"));
-  swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str()->check(positive(""));
+  swp->add_option("--rtol", wa.rtol, "Relative tolerance")->capture_default_str()->check(number_rule(solve::rtol_rule));
+  swp->add_option("--atol", wa.atol, "Absolute tolerance")->capture_default_str()->check(number_rule(solve::atol_rule));
   swp->add_flag("--no-centripetal", wa.no_centripetal, "Switch off the inerter centripetal correction");
   swp->add_option("--method", wa.method, "time (simulation, the reference) or periodic (harmonic balance, fast)")
       ->check(CLI::IsMember({"time", "periodic"}))

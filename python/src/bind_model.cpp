@@ -129,9 +129,15 @@ solve::IntegratorOptions integrator_arg(const py::object& base, const py::object
                                         const py::object& atol, const py::object& max_step) {
   solve::IntegratorOptions o = base.is_none() ? solve::IntegratorOptions{} : base.cast<solve::IntegratorOptions>();
   if (!method.is_none()) o.method = solve::parse_method(method.cast<std::string>());
-  if (!rtol.is_none()) o.rtol = rtol.cast<double>();
-  if (!atol.is_none()) o.atol = atol.cast<double>();
-  if (!max_step.is_none()) o.max_step = max_step.cast<double>();
+  // Given or from `base`: the CLI's rule and words (--rtol, --atol, --max-step).
+  auto rule = [](const py::object& v, double& x, const char* name, const NumberRule& r) {
+    if (!v.is_none()) x = v.cast<double>();
+    const std::string text = v.is_none() ? fmt::format("{}", x) : py::str(v).cast<std::string>();
+    if (const std::string e = r.check(x, text); !e.empty()) throw InvalidArgument(std::string(name) + ": " + e);
+  };
+  rule(rtol, o.rtol, "rtol", solve::rtol_rule);
+  rule(atol, o.atol, "atol", solve::atol_rule);
+  rule(max_step, o.max_step, "max_step", solve::max_step_rule);
   return o;
 }
 

@@ -142,12 +142,16 @@ def test_ctrl_c_stops_a_long_run(twobar):
 
 @pytest.mark.parametrize("arg,option,value", [("t_end", "--t-end", 0), ("t_end", "--t-end", -1),
                                               ("t_end", "--t-end", float("nan")), ("t_end", "--t-end", 1e8),
-                                              ("sample", "--sample", 0), ("sample", "--sample", float("inf"))])
+                                              ("sample", "--sample", 0), ("sample", "--sample", float("inf")),
+                                              ("rtol", "--rtol", 0), ("rtol", "--rtol", 2),
+                                              ("rtol", "--rtol", float("nan")), ("atol", "--atol", 0),
+                                              ("atol", "--atol", -1), ("max_step", "--max-step", -1),
+                                              ("max_step", "--max-step", float("inf"))])
 def test_run_length_refused_as_by_the_cli(twobar, arg, option, value):
-    """t_end and sample follow the CLI's rule (analysis::t_end_rule, sample_rule) with its message; not
-    given (None), the model's options apply."""
+    """t_end, sample, rtol, atol and max_step follow the CLI's rule (analysis::t_end_rule, sample_rule,
+    solve::rtol_rule, atol_rule, max_step_rule) with its message; not given (None), the model's options apply."""
     from conftest import run_cli
-    text = {0: "0", -1: "-1", 1e8: "1e8"}.get(value, str(value))
+    text = {0: "0", -1: "-1", 1e8: "1e8", 2: "2"}.get(value, str(value))
     r = run_cli("simulate", model("twobar.yaml"), option, text, check=False)
     assert r.returncode == 105
     cli_message = r.stderr.splitlines()[0].split(": ", 1)[1]  # after "--t-end: "

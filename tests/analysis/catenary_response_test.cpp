@@ -5,6 +5,9 @@
 
 #include <algorithm>
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_catenary_response {
+
 using namespace inerta;
 
 TEST(CatenaryResponse, ResonanceWhenThePumpingFrequencyMeetsTheNaturalFrequency) {
@@ -36,3 +39,4 @@ TEST(CatenaryResponse, ParametricResonanceIsFlaggedNotReportedAsSteady) {
   auto r = analysis::catenary_response(cat, 70, {1.98}, 40.0, 8);
   EXPECT_FALSE(r[0].stable());
 }
+}  // namespace test_analysis_catenary_response

@@ -10,6 +10,9 @@
 
 #include "inerta/error.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_contact_quality {
+
 using namespace inerta;
 using std::numbers::pi;
 
@@ -195,3 +198,4 @@ TEST(SupportUplift, MaximumAndTimeAtEachSupportInTheSection) {
   EXPECT_THROW(analysis::support_uplift(std::vector<double>(t.begin(), t.end() - 1), xs, u, 0, 200), InvalidArgument);
   EXPECT_THROW(analysis::support_uplift(t, xs, u, 200, 0), InvalidArgument);
 }
+}  // namespace test_analysis_contact_quality

@@ -18,6 +18,9 @@
 #include "support/run.hpp"
 #include "support/temp.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_contact_statistics {
+
 using namespace inerta;
 
 namespace {
@@ -156,3 +159,4 @@ TEST(CatenaryFile, WrongNodeTypeIsAModelErrorWithTheLine) {
     EXPECT_NE(std::string(e.what()).find(bad + ":7: "), std::string::npos) << e.what();
   }
 }
+}  // namespace test_analysis_contact_statistics

@@ -8,6 +8,9 @@
 
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_frf {
+
 using namespace inerta;
 
 TEST(Frf, LinearEqualsSteppedSineAtSmallAmplitude) {
@@ -46,3 +49,4 @@ TEST(Frf, HeadPeakNearTheHeadModeAndFlexiblePeakNearTenHz) {
   EXPECT_GT(peak(1), 8.0);
   EXPECT_LT(peak(1), 14.0);
 }
+}  // namespace test_analysis_frf

@@ -15,6 +15,9 @@
 #include "support/run.hpp"
 #include "support/synthetic.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_identification {
+
 using namespace inerta;
 using inerta::testing::cd;
 
@@ -268,3 +271,4 @@ TEST(ActuatorDynamic, ShortOrSparseTestsAreInputErrors) {
     EXPECT_NE(std::string(e.what()).find("less than one period"), std::string::npos) << e.what();
   }
 }
+}  // namespace test_analysis_identification

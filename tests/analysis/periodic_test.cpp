@@ -12,6 +12,9 @@
 #include "inerta/pantograph/suspension.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_periodic {
+
 using namespace inerta;
 
 namespace {
@@ -93,3 +96,4 @@ TEST(Periodic, UnstableSpeedGrowsInTheTimeDomain) {
   EXPECT_GT(r.stats.std, 3 * s_first) << "σ " << r.stats.std << " vs " << s_first;
   EXPECT_GT(r.stats.loss_pct, 10.0);
 }
+}  // namespace test_analysis_periodic

@@ -17,6 +17,9 @@
 #include "inerta/numerics/lyapunov.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_analysis_state_space {
+
 using namespace inerta;
 using std::numbers::pi;
 using cd = std::complex<double>;
@@ -345,3 +348,4 @@ TEST(RandomResponse, QuarterCarLyapunovRmsEqualsALongSeededRoadRun) {
     EXPECT_NEAR(rms, r.rms[o], 0.05 * r.rms[o]) << ss.outputs[static_cast<std::size_t>(o)];
   }
 }
+}  // namespace test_analysis_state_space

@@ -7,6 +7,9 @@
 
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_catenary_cli {
+
 using inerta::testing::contains;
 using inerta::testing::quote;
 using inerta::testing::read_file;
@@ -80,3 +83,4 @@ TEST_F(CatenaryCli, CheckReductionComparesTheModalAndDirectSolves) {
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_TRUE(contains(r.err, "needs a finite-element catenary")) << r.err;
 }
+}  // namespace test_apps_catenary_cli

@@ -9,6 +9,9 @@
 
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_check_cli {
+
 using inerta::testing::contains;
 using inerta::testing::quote;
 
@@ -97,3 +100,4 @@ TEST_F(CheckCli, TheThreeMassPantographRunsUnderTheLumpedCatenaryAndTakesItsOver
   EXPECT_EQ(bad.code, 2);
   EXPECT_TRUE(contains(bad.err, "override 'lumped_pantograph.uplift=90': unknown key")) << bad.err;
 }
+}  // namespace test_apps_check_cli

@@ -17,6 +17,9 @@
 #include <string>
 #include <vector>
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_cli {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -327,3 +330,4 @@ TEST_F(Cli, ModesOfOneDofAndLinearModelExport) {
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_TRUE(contains(lines[0], "mode,f_hz,f_damped_hz,zeta,re_lambda,im_lambda,mass.x,mass.y,mass.theta")) << lines[0];
 }
+}  // namespace test_apps_cli

@@ -17,6 +17,9 @@
 
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_hardening_cli {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -320,3 +323,4 @@ TEST_F(Hardening, OptimiseOutNeedsForceForANonEmptyFolder) {
 }
 
 }  // namespace
+}  // namespace test_apps_hardening_cli

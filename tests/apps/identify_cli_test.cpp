@@ -16,6 +16,9 @@
 #include "support/cli.hpp"
 #include "support/synthetic.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_identify_cli {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -219,3 +222,4 @@ TEST_F(Identify, ActuatorDynamicErrors) {
 }
 
 }  // namespace
+}  // namespace test_apps_identify_cli

@@ -8,6 +8,9 @@
 
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_json_cli {
+
 namespace {
 
 using inerta::testing::contains;
@@ -47,3 +50,4 @@ TEST_F(JsonCli, ModesExportIsValidJsonForAnAwkwardModelName) {
   EXPECT_EQ(j["q_e"].size(), 1u);
   EXPECT_EQ(j["q_e"][0].size(), 3u);
 }
+}  // namespace test_apps_json_cli

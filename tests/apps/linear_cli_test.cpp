@@ -8,6 +8,9 @@
 #include "inerta/io/model_file.hpp"
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_linear_cli {
+
 namespace {
 
 using inerta::testing::contains;
@@ -111,3 +114,4 @@ TEST_F(LinearCli, AModelStudyWritesItsTableAndFiles) {
   EXPECT_EQ(b.code, 2);
   EXPECT_TRUE(contains(b.err, "bad.yaml:3: 'objective': a study with catenary: optimises J2")) << b.err;
 }
+}  // namespace test_apps_linear_cli

@@ -9,6 +9,9 @@
 #include "inerta/network/enumeration.hpp"
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_networks_cli {
+
 namespace {
 
 using inerta::testing::contains;
@@ -73,3 +76,4 @@ TEST_F(NetworksCli, AStudyOverAllNetworksWritesTheRankingAndTheParetoFront) {
   EXPECT_TRUE(contains(pareto, "elements,inerters,J,vs_default_pct,pareto,network\n")) << pareto;
   EXPECT_TRUE(contains(read_file(out / "results.csv"), "layout,expression,J")) << read_file(out / "results.csv");
 }
+}  // namespace test_apps_networks_cli

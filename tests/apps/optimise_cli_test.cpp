@@ -13,6 +13,9 @@
 #include <string>
 #include <vector>
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_optimise_cli {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -81,3 +84,4 @@ TEST(OptimiseCli, TinyStudyWritesTheTableResultsAndFigureData) {
   }
   fs::remove_all(dir);
 }
+}  // namespace test_apps_optimise_cli

@@ -13,6 +13,9 @@
 #include "inerta/io/model_file.hpp"
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_apps_overrides_cli {
+
 namespace {
 
 using inerta::testing::contains;
@@ -138,3 +141,4 @@ TEST(SplitOverrides, ModelNamesGoToTheModelTheRestToTheCatenary) {
 }
 
 }  // namespace
+}  // namespace test_apps_overrides_cli

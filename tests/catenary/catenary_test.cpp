@@ -8,6 +8,9 @@
 #include "inerta/mbs/applied_forces.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_catenary_catenary {
+
 using namespace inerta;
 using namespace inerta::catenary;
 
@@ -174,3 +177,4 @@ TEST(Coupling, PenaltyConvergesToBilateralAsContactStiffens) {
   }
   EXPECT_LT(previous, 0.01);
 }
+}  // namespace test_catenary_catenary

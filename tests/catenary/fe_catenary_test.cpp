@@ -14,6 +14,9 @@
 #include "inerta/io/model_file.hpp"
 #include "support/fe_line.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_catenary_fe_catenary {
+
 using namespace inerta;
 using catenary::FeCatenaryData;
 using catenary::FeLine;
@@ -391,3 +394,4 @@ TEST(FeCoupled, ContactLossIsSimulatedAndReported) {
   EXPECT_EQ(r.stats.min, 0.0);
   EXPECT_NEAR(r.stats.mean, 20.0, 2.0) << "the mean contact force is the static one";
 }
+}  // namespace test_catenary_fe_catenary

@@ -20,6 +20,9 @@
 #include "inerta/io/model_file.hpp"
 #include "support/fe_line.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_catenary_fe_modal {
+
 using namespace inerta;
 using catenary::FeCatenaryData;
 using catenary::FeLine;
@@ -362,3 +365,4 @@ TEST(FeModal, TheStaticStateNeedsNoModesAndIsTheDirectSolvesOne) {
   EXPECT_EQ(Fm.front(), Fr.front());  // the static contact force; then the first 10 ms (σ: the tests above)
   for (std::size_t k = 0; k < Fm.size(); ++k) EXPECT_NEAR(Fm[k], Fr[k], 0.05 * Fr[k]) << k;
 }
+}  // namespace test_catenary_fe_modal

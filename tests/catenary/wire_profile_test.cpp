@@ -18,6 +18,9 @@
 #include "support/run.hpp"
 #include "support/temp.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_catenary_wire_profile {
+
 using namespace inerta;
 using std::numbers::pi;
 
@@ -283,3 +286,4 @@ TEST(WireProfileFile, AnOpenPeriodicProfileOrAMissingSpanNamesTheLineAndKey) {
   const std::string no_span = message("type: wire_profile\nprofile:\n  periodic: false\n  heights: [[0, 0], [10, 0.01]]\n");
   EXPECT_NE(no_span.find(yaml + ":3: 'span': missing"), std::string::npos) << no_span;
 }
+}  // namespace test_catenary_wire_profile

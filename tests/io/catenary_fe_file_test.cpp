@@ -11,6 +11,9 @@
 #include "support/run.hpp"
 #include "support/temp.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_catenary_fe_file {
+
 using namespace inerta;
 
 namespace {
@@ -273,3 +276,4 @@ TEST(FeCatenaryFile, SolverSectionAndItsErrors) {
   e = error_of(kLine, {"solver.cutoff=-5"});
   EXPECT_NE(e.find("cutoff"), std::string::npos) << e;
 }
+}  // namespace test_io_catenary_fe_file

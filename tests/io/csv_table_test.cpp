@@ -5,6 +5,9 @@
 
 #include "inerta/error.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_csv_table {
+
 using namespace inerta;
 
 namespace {
@@ -49,3 +52,4 @@ TEST(CsvTable, RequireRows) {
     EXPECT_EQ(std::string(e.what()), "data.csv: 1 data row(s); the fit needs at least 4");
   }
 }
+}  // namespace test_io_csv_table

@@ -14,6 +14,9 @@
 #include "io/model_forces.hpp"
 #include "io/model_joints.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_element_registry {
+
 namespace {
 
 using inerta::ModelError;
@@ -123,3 +126,4 @@ TEST(ElementRegistry, ProgrammingErrorsAreRefused) {
 }
 
 }  // namespace
+}  // namespace test_io_element_registry

@@ -14,6 +14,9 @@
 
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_json {
+
 using inerta::io::Json;
 
 namespace {
@@ -111,3 +114,4 @@ TEST(Json, WriteJsonReplacesTheFileOrSaysWhyNot) {
   }
   std::filesystem::remove_all(dir);
 }
+}  // namespace test_io_json

@@ -10,6 +10,9 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_linear_model_file {
+
 using namespace inerta;
 
 namespace {
@@ -61,3 +64,4 @@ TEST(LinearModelFile, ReadsBackExactlyWithAnAwkwardName) {
   expect_rows(j["C"], lin.C, "C");
   expect_rows(j["K"], lin.K, "K");
 }
+}  // namespace test_io_linear_model_file

@@ -11,6 +11,9 @@
 #include "support/run.hpp"
 #include "support/temp.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_lumped_pantograph_file {
+
 using namespace inerta;
 
 namespace {
@@ -158,3 +161,4 @@ TEST(LumpedPantographFile, EveryErrorNamesTheFileLineAndKey) {
          "options: {t_end: -1}\n",
          "lp.yaml:7: 't_end': must be > 0 (s)");
 }
+}  // namespace test_io_lumped_pantograph_file

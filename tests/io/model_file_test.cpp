@@ -24,6 +24,9 @@
 #include "inerta/mbs/struts.hpp"
 #include "inerta/network/network.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_model_file {
+
 namespace {
 
 using inerta::ModelError;
@@ -920,3 +923,4 @@ TEST(ModelFile, NonFiniteVectorsAndAnglesAreRefusedAtTheirLine) {
   expect_error(with("    position: [0.5, 0]", "    position: [0.5, 0]\n    angle: .nan   # <-- here"), "angle",
                "expected finite numbers");
 }
+}  // namespace test_io_model_file

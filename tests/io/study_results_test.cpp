@@ -11,6 +11,9 @@
 
 #include "support/cli.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_study_results {
+
 using namespace inerta;
 
 TEST(StudyResults, JsonAndCsvForAwkwardNames) {
@@ -74,3 +77,4 @@ TEST(StudyResults, JsonAndCsvForAwkwardNames) {
             "\"k|c, \xc3\xa9\",k|c,-,0.3333,5e+04,13.5,9.35,250,119.25,1\n");
   std::filesystem::remove_all(dir.parent_path());
 }
+}  // namespace test_io_study_results

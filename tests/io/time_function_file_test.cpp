@@ -13,6 +13,9 @@
 #include "inerta/io/model_file.hpp"
 #include "support/temp.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_io_time_function_file {
+
 namespace {
 
 using inerta::ModelError;
@@ -279,3 +282,4 @@ TEST(TimeFunctionFile, LargeAssemblyCorrectionIsAWarningNamingTheBody) {
 }
 
 }  // namespace
+}  // namespace test_io_time_function_file

@@ -8,6 +8,9 @@
 #include "inerta/mbs/network_strut.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_actuator {
+
 using namespace inerta;
 
 namespace {
@@ -79,3 +82,4 @@ TEST(Actuator, FrictionIsRegularisedCoulomb) {
   // It only dissipates.
   EXPECT_LT(model.forces[1]->power(model, 0.0, x), 0.0);
 }
+}  // namespace test_mbs_actuator

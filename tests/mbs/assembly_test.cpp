@@ -7,6 +7,9 @@
 #include "inerta/error.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_assembly {
+
 using namespace inerta;
 
 TEST(Assembly, CorrectsGapsAndHonoursHeldCoordinates) {
@@ -147,3 +150,4 @@ forces:
   EXPECT_NEAR(ws.qdd[0], 0, 1e-10);
   EXPECT_NEAR(ws.qdd[2], 0, 1e-10);
 }
+}  // namespace test_mbs_assembly

@@ -14,6 +14,9 @@
 #include "inerta/mbs/assembly.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_driving {
+
 namespace {
 
 using namespace inerta;
@@ -174,3 +177,4 @@ TEST(Driving, DriftBeyondTheBoundFailsWithTimeAndJoint) {
 }
 
 }  // namespace
+}  // namespace test_mbs_driving

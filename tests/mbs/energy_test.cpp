@@ -4,6 +4,9 @@
 
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_energy {
+
 using namespace inerta;
 
 namespace {
@@ -80,3 +83,4 @@ TEST(Energy, WithoutCorrectionTheInerterIsNotConservative) {
   });
   EXPECT_GT(drift, 1e-3);
 }
+}  // namespace test_mbs_energy

@@ -7,6 +7,9 @@
 #include "inerta/mbs/struts.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_inerter {
+
 using namespace inerta;
 using namespace inerta::mbs;
 
@@ -124,3 +127,4 @@ TEST(Inerter, PerElementSwitchTurnsCorrectionOff) {
   auto s = inerta::testing::run(model, 0.5, 0.1);
   EXPECT_NEAR(s[0].back(), -20 * 9 * 0.5, 1e-6);
 }
+}  // namespace test_mbs_inerter

@@ -9,6 +9,9 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/mbs/dynamics.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_kinematics {
+
 using namespace inerta;
 using namespace inerta::mbs;
 
@@ -131,3 +134,4 @@ TEST(Constraints, JacobianCtAndGammaAgainstFiniteDifferences) {
     }
   }
 }
+}  // namespace test_mbs_kinematics

@@ -9,6 +9,9 @@
 #include "support/reference_models.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_linearisation {
+
 using namespace inerta;
 
 TEST(Linearisation, OneDofMassStiffnessAndFrequencyAreAnalytic) {
@@ -109,3 +112,4 @@ TEST(Linearisation, JacobianPredictsTheNonlinearRightHandSide) {
   EXPECT_LT((lin.M - lin.M.transpose()).norm(), 1e-9 * lin.M.norm());
   EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(lin.M).info(), Eigen::Success);
 }
+}  // namespace test_mbs_linearisation

@@ -10,6 +10,9 @@
 #include "inerta/io/model_file.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_model_check {
+
 using namespace inerta;
 
 namespace {
@@ -42,3 +45,4 @@ TEST(ModelCheck, RedundantJointIsCountedAndTheSingularSystemRefused) {
   EXPECT_EQ(m.dof(), 0);  // counting equations
   EXPECT_THROW(mbs::check_model(m), NumericalError);  // eq. 4.12 is singular, as `inerta check` reports
 }
+}  // namespace test_mbs_model_check

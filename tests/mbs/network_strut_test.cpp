@@ -12,6 +12,9 @@
 #include "inerta/network/layouts.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_network_strut {
+
 using namespace inerta;
 using inerta::testing::run;
 
@@ -296,3 +299,4 @@ TEST(NetworkStrut, TwoBarWithNetworkStrutEqualsPlainTwoBar) {
     EXPECT_LT(e, 10 * rtol) << "max |C_y(plain) − C_y(network)| at rtol " << rtol;
   }
 }
+}  // namespace test_mbs_network_strut

@@ -8,6 +8,9 @@
 #include "support/reference_models.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_onedof {
+
 using namespace inerta;
 using inerta::testing::run;
 
@@ -76,3 +79,4 @@ TEST(OneDof, CorrectionLowersFrequencyAndShiftsMeanDown) {
   EXPECT_LT(m_on - 1.0, 0.0);
   EXPECT_GT(m_off - 1.0, m_on - 1.0);
 }
+}  // namespace test_mbs_onedof

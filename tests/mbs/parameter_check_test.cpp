@@ -19,6 +19,9 @@
 #include "inerta/mbs/time_function.hpp"
 #include "inerta/network/network.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_parameter_check {
+
 namespace {
 
 using inerta::InvalidArgument;
@@ -239,3 +242,4 @@ TEST(ParameterCheck, ModelFinalizeChecksEveryBody) {
 }
 
 }  // namespace
+}  // namespace test_mbs_parameter_check

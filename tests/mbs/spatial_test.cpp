@@ -13,6 +13,9 @@
 #include "inerta/mbs/struts.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_spatial {
+
 using namespace inerta;
 using namespace inerta::mbs;
 using inerta::testing::run;
@@ -370,3 +373,4 @@ TEST(Spatial, BlockSolveSatisfiesTheDenseSystem) {
     }
   }
 }
+}  // namespace test_mbs_spatial

@@ -11,6 +11,9 @@
 #include "inerta/error.hpp"
 #include "inerta/numerics/signal.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_time_function {
+
 namespace {
 
 using inerta::mbs::TimeFunction;
@@ -252,3 +255,4 @@ TEST(Road, SeedDelayAndSmoothness) {
 }
 
 }  // namespace
+}  // namespace test_mbs_time_function

@@ -8,6 +8,9 @@
 #include "support/reference_models.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_mbs_twobar {
+
 using namespace inerta;
 using inerta::testing::run;
 using inerta::testing::window;
@@ -107,3 +110,4 @@ TEST(Integrator, FailureStopsWithSimulatedTime) {
     }
   }
 }
+}  // namespace test_mbs_twobar

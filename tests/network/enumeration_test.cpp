@@ -9,6 +9,9 @@
 #include <map>
 #include <set>
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_network_enumeration {
+
 using namespace inerta::network;
 using K = Network::Kind;
 
@@ -142,3 +145,4 @@ TEST(Enumeration, RefusesOptionsOutOfRange) {
   o.max_inerters = -2;
   EXPECT_THROW(enumerate(o), NetworkError);
 }
+}  // namespace test_network_enumeration

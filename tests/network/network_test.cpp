@@ -10,6 +10,9 @@
 #include "inerta/network/layouts.hpp"
 #include "inerta/network/realisation.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_network_network {
+
 using namespace inerta::network;
 using cd = std::complex<double>;
 
@@ -129,3 +132,4 @@ TEST(Realisation, StatesAndDirectTerms) {
   Eigen::VectorXcd ev = t.A.eigenvalues();
   for (int i = 0; i < 2; ++i) EXPECT_NEAR(std::abs(10.0 * ev[i] * ev[i] + 100.0 * ev[i] + 100.0), 0.0, 1e-9);
 }
+}  // namespace test_network_network

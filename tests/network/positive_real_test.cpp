@@ -12,6 +12,9 @@
 #include "inerta/error.hpp"
 #include "network_random.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_network_positive_real {
+
 using namespace inerta::network;
 using cd = std::complex<double>;
 
@@ -155,3 +158,4 @@ TEST(PositiveReal, BadArgumentsThrow) {
   EXPECT_THROW(biquadratic_positive_real(-1, 1, 1, 1, 1, 1), inerta::InvalidArgument);
   EXPECT_THROW(biquadratic_positive_real(0, 0, 0, 1, 1, 1), inerta::InvalidArgument);
 }
+}  // namespace test_network_positive_real

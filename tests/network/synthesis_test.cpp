@@ -12,6 +12,9 @@
 #include "inerta/network/positive_real.hpp"
 #include "network_random.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_network_synthesis {
+
 using namespace inerta::network;
 using cd = std::complex<double>;
 
@@ -146,3 +149,4 @@ TEST(Synthesis, NonPositiveRealThrows) {
     EXPECT_NE(std::string(e.what()).find("not positive real"), std::string::npos);
   }
 }
+}  // namespace test_network_synthesis

@@ -7,6 +7,9 @@
 
 #include "inerta/error.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_numerics_cubic_spline {
+
 using inerta::numerics::CubicSpline;
 using std::numbers::pi;
 
@@ -71,3 +74,4 @@ TEST(CubicSpline, RejectsBadTables) {
   EXPECT_THROW(CubicSpline({0, 1}, {1, NAN}), inerta::InvalidArgument);
   EXPECT_THROW(CubicSpline({0, 1, 2}, {0, 1, 2}, CubicSpline::Ends::Periodic), inerta::InvalidArgument);
 }
+}  // namespace test_numerics_cubic_spline

@@ -7,6 +7,9 @@
 #include <cmath>
 #include <stdexcept>
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_numerics_finite_difference {
+
 using namespace inerta::numerics;
 
 namespace {
@@ -103,3 +106,4 @@ TEST(FiniteDifference, RejectsBadArguments) {
   auto ragged = [&](const Eigen::VectorXd&) { return Eigen::VectorXd::Zero(++calls > 2 ? 3 : 2).eval(); };
   EXPECT_THROW(central_difference_jacobian(ragged, x, 1e-6, Step::Absolute), std::invalid_argument);
 }
+}  // namespace test_numerics_finite_difference

@@ -9,6 +9,9 @@
 
 #include "inerta/error.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_numerics_floquet {
+
 namespace {
 
 using inerta::numerics::floquet;
@@ -144,3 +147,4 @@ TEST(Floquet, SharedBasisWithFixedRowsAgreesWithRungeKutta) {
   EXPECT_THROW(inerta::numerics::monodromy(basis, m.b, R, [](double) { return Eigen::VectorXd(Eigen::Vector3d(1, 2, 3)); }, T, 16),
                inerta::InvalidArgument);
 }
+}  // namespace test_numerics_floquet

@@ -98,6 +98,9 @@ TEST(PatternSearch, TunedInerterDamperRecoversTheH2Optimum) {
 
 #include <stdexcept>
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_numerics_pattern_search {
+
 TEST(PatternSearch, ACostOfInfinityIsAvoidedButAnExceptionPropagates) {
   // One decade variable x ∈ [1e-2, 1e8], search from the box centre x = 1e3, optimum at x = 10.
   // Above x = 3e3 the cost cannot be evaluated: reported as +∞ the search goes round it; thrown
@@ -163,3 +166,4 @@ TEST(PatternSearch, ReportsAnExhaustedBudget) {
   o.max_evaluations = 5000;
   EXPECT_FALSE(pattern_search({{"k", 1e-3, 1e3, false, false}}, bowl, o).exhausted);
 }
+}  // namespace test_numerics_pattern_search

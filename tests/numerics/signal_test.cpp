@@ -9,6 +9,9 @@
 
 #include "inerta/error.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_numerics_signal {
+
 using namespace inerta::numerics;
 using std::numbers::pi;
 
@@ -259,3 +262,4 @@ TEST(Welch, AutomaticSegmentAndRefusals) {
   EXPECT_THROW(welch(x, 100, {.segment = 256, .overlap = 1.0}), inerta::InvalidArgument);
   EXPECT_THROW(welch(x, -1), inerta::InvalidArgument);
 }
+}  // namespace test_numerics_signal

@@ -13,6 +13,9 @@
 #include "inerta/network/layouts.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_model_study {
+
 using namespace inerta;
 
 namespace {
@@ -188,3 +191,4 @@ TEST(ModelStudyFile, LayoutsAllAndItsNetworkOptions) {
          "'networks': no network satisfies these options");
   expect("layouts: everything\n", "'layouts': expected a list of layouts (network expressions or names), or all");
 }
+}  // namespace test_optim_model_study

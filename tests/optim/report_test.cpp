@@ -17,6 +17,9 @@
 #include "support/run.hpp"
 #include "support/temp.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_report {
+
 using namespace inerta;
 
 namespace {
@@ -163,3 +166,4 @@ TEST(Report, ReportDataAndCsvFiles) {
   EXPECT_EQ(j["best_cost"]["J2"].get<double>(), r.best_cost.J);  // full precision
   EXPECT_EQ(j["catenaries"].size(), r.catenaries.size());
 }
+}  // namespace test_optim_report

@@ -16,6 +16,9 @@
 #include "inerta/optim/admittance_search.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_structure_search {
+
 using namespace inerta;
 
 namespace {
@@ -219,3 +222,4 @@ TEST(StructureSearch, AnIllConditionedNetworkIsRefusedNotEvaluated) {
   const double stiff = optim::evaluate(s, network::resolve("k|(c-b)", {{"k", 4500}, {"c", 1e5}, {"b", 1}})).J;
   EXPECT_NEAR(stiff, rigid, 1e-3 * rigid);
 }
+}  // namespace test_optim_structure_search

@@ -12,6 +12,9 @@
 #include "inerta/optim/study.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_study_errors {
+
 using namespace inerta;
 
 namespace {
@@ -48,3 +51,4 @@ TEST(StudyErrors, AnErrorThatIsNotNumericalStopsTheSearchAtOnce) {
   EXPECT_THROW(optim::optimise_layout(s, "b|k", [&](int, int, double) { ++polls; }), ModelError);
   EXPECT_EQ(polls, 0);
 }
+}  // namespace test_optim_study_errors

@@ -12,6 +12,9 @@
 #include "inerta/optim/study.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_study_fe_line {
+
 using namespace inerta;
 using inerta::testing::write_study;
 
@@ -194,3 +197,4 @@ TEST(StudyFidelity, AnUndampedInternalBranchIsFlaggedAsSlowToSettle) {
   EXPECT_GT(notch, 10 * spring);  // the undamped branch outlasts it
   EXPECT_GT(notch, 40);
 }
+}  // namespace test_optim_study_fe_line

@@ -13,6 +13,9 @@
 #include "inerta/network/layouts.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_study {
+
 using namespace inerta;
 
 namespace {
@@ -110,3 +113,4 @@ TEST(Study, UnstableDesignsAreInfeasibleAndCounted) {
   EXPECT_GT(entries[0].unstable, 0);
   EXPECT_EQ(entries[0].unstable, all[0].unstable);
 }
+}  // namespace test_optim_study

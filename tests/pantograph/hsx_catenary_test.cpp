@@ -12,6 +12,9 @@
 #include "inerta/mbs/network_strut.hpp"
 #include "support/run.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_pantograph_hsx_catenary {
+
 using namespace inerta;
 
 namespace {
@@ -78,3 +81,4 @@ TEST(HsxCatenary, StatisticsAreConvergedOverTheWindow) {
     EXPECT_LT(std::abs(last(4) - last(2)) / last(2), 0.01) << "v = " << v * 3.6 << " km/h";
   }
 }
+}  // namespace test_pantograph_hsx_catenary

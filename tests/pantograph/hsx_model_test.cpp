@@ -12,6 +12,9 @@
 #include "inerta/mbs/model.hpp"
 #include "inerta/mbs/output.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_pantograph_hsx_model {
+
 using namespace inerta;
 
 namespace {
@@ -92,3 +95,4 @@ TEST(HsxModel, StaticContactForceIs70N) {
   mbs::accelerations(model, 0.0, x, ws);
   EXPECT_LT(ws.qdd.cwiseAbs().maxCoeff(), 1e-6);
 }
+}  // namespace test_pantograph_hsx_model

@@ -17,6 +17,9 @@
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_pantograph_lumped {
+
 using namespace inerta;
 
 namespace {
@@ -243,3 +246,4 @@ TEST(LumpedPantograph, ThePeriodicMethodTakesTheAerodynamicUpliftOfEachSpeed) {
   EXPECT_NEAR(r[1].stats.mean, 70 + 21, 0.01);
   EXPECT_GT(r[1].stats.std, 0);
 }
+}  // namespace test_pantograph_lumped

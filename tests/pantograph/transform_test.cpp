@@ -13,6 +13,9 @@
 #include "inerta/optim/model_study.hpp"
 #include "inerta/pantograph/suspension.hpp"
 
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_pantograph_transform {
+
 using namespace inerta;
 
 namespace {
@@ -123,3 +126,4 @@ TEST(Transform, TheSuspensionIsTheLoadersActuatorHandle) {
     EXPECT_NE(std::string(e.what()).find("more than one actuator"), std::string::npos) << e.what();
   }
 }
+}  // namespace test_pantograph_transform

@@ -8,6 +8,7 @@
 #include <memory>
 #include <string>
 
+#include "inerta/error.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/mbs/state.hpp"
 
@@ -29,6 +30,12 @@ struct IntegratorOptions {
   double stiff_step = 1e-6;
   long stiff_after = 20000;
 };
+
+/// The rules of rtol, atol and max_step: the CLI's --rtol, --atol, --max-step and Python's
+/// arguments of the same names check them with the same words (issue 25).
+inline constexpr NumberRule rtol_rule{1e-14, 1, "1e-14 … 1"};
+inline constexpr NumberRule atol_rule{1e-300, 1e300, "> 0"};
+inline constexpr NumberRule max_step_rule{0, 1e7, ">= 0 s"};
 
 struct RunStats {
   long steps = 0;
