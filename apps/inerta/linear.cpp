@@ -20,6 +20,8 @@
 #include "inerta/io/json.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/model_study_file.hpp"
+#include "inerta/io/model_study_results.hpp"
+#include "inerta/optim/model_study_run.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
@@ -228,50 +230,15 @@ int run_rms() {
 
 // ---- optimise (model study) -------------------------------------------------------------------
 
-int run_model_study(const std::string& path, const std::string& out, bool plots) {
-  const optim::ModelStudy study = io::load_model_study(path);
+namespace {
+// The table of a model study after its searches (the default, each layout, the best; the structure
+// summary for layouts: all).
+void print_model_study(const optim::ModelStudyResult& run) {
+  const optim::ModelStudy& study = run.study;
   const optim::Objective& o = study.objective;
-  const bool tty = isatty(STDOUT_FILENO);
-  fmt::print("study {}: model {}, strut '{}', objective {}, {} layouts, {} starts (seed {})\n", study.name, study.model.name,
-             study.model.forces[static_cast<std::size_t>(study.strut)]->name(), optim::Objective::name(o.kind), study.layouts.size(),
-             study.search.starts, study.search.seed);
-  const auto wall0 = std::chrono::steady_clock::now();
-  const network::Network baseline = optim::default_network(study);
-  const optim::ModelCost def = optim::evaluate(study, baseline);
-  std::vector<optim::ModelLayoutResult> results;
-  // Warm starts: the default's values and every earlier layout's optimum (optim::optimise_layout).
-  std::vector<network::Params> warm;
-  {
-    network::Params p;
-    std::function<void(const network::Network&)> collect = [&](const network::Network& n) {
-      if (n.is_element()) p[n.name] = n.value;
-      for (const auto& c : n.children) collect(c);
-    };
-    collect(baseline);
-    warm.push_back(p);
-  }
-  std::vector<optim::StructureEntry> entries;
-  if (study.all) {
-    fmt::print("every network of up to {} elements ({} networks), each also started from its best sub-network\n",
-               study.all->max_elements, study.layouts.size());
-    std::vector<optim::ModelLayoutResult> all;
-    entries = optim::optimise_all(study, all, structure_progress(""));
-    for (std::size_t i : optim::ranking(entries)) results.push_back(all[i]);  // ranked: best first
-  }
-  for (std::size_t l = 0; l < (study.all ? 0 : study.layouts.size()); ++l) {
-    const std::string& layout = study.layouts[l];
-    results.push_back(optim::optimise_layout(study, layout, [&](int start, int evals, double best) {
-      if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(), layout,
-                          start + 1, evals, best);
-      std::fflush(stdout);
-    }, warm));
-    warm.push_back(results.back().values);
-    if (tty) fmt::print("\r{:90}\r", "");
-    const auto& r = results.back();
-    fmt::print("  [{}/{}] {:<14} J = {:.6g}{} after {} evaluations\n", l + 1, study.layouts.size(), layout, r.cost.J,
-               r.cost.feasible ? "" : " (a limit is exceeded)", r.evaluations);
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  const network::Network& baseline = run.baseline;
+  const optim::ModelCost& def = run.baseline_cost;
+  const auto& results = run.results;
   fmt::print("\n  {:<14} {:<14} {:>12} {:>10}", "layout", "network", "J", "vs default");
   for (const auto& w : o.outputs) fmt::print(" {:>12}", w.name);
   for (const auto& lim : o.limits) fmt::print(" {:>12}", lim.output + "≤" + fmt::format("{:g}", lim.limit));
@@ -285,7 +252,6 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
                exhausted ? "  budget exhausted (max_evaluations reached before min_step)" : "");
   };
   row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "", false);
-  std::size_t best = 0;
   const std::size_t shown = study.all ? 25 : results.size();
   for (std::size_t i = 0; i < results.size(); ++i) {
     const auto& r = results[i];
@@ -294,123 +260,58 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
     for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
     for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
     if (i < shown) row(r.layout, r.expression, r.cost, values, bounds, r.budget_exhausted);
-    const bool better = (r.cost.feasible && !results[best].cost.feasible) ||
-                        (r.cost.feasible == results[best].cost.feasible && r.cost.J < results[best].cost.J);
-    if (better) best = i;
   }
-  fmt::print("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n", network::to_string(baseline, true), def.J,
-             results[best].layout, results[best].expression, results[best].cost.J, 100 * (results[best].cost.J - def.J) / def.J, wall);
+  const auto& best = results[run.best];
+  fmt::print("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n", network::to_string(baseline, true),
+             def.J, best.layout, best.expression, best.cost.J, 100 * (best.cost.J - def.J) / def.J, run.seconds);
   if (study.all) {
-    print_structure(entries, def.J, "", 0);
+    print_structure(run.entries, def.J, "", 0);
     int evaluations = 0;
-    for (const auto& e : entries) evaluations += e.evaluations;
-    fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", entries.size(), evaluations, wall,
-               evaluations / wall);
+    for (const auto& e : run.entries) evaluations += e.evaluations;
+    fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", run.entries.size(), evaluations,
+               run.seconds, evaluations / run.seconds);
   }
-  if (!study.admittance_degrees.empty()) {
-    std::vector<Candidate> cands{{"default " + network::to_string(baseline, true), baseline, def.penalised, def.J}};
-    for (const auto& r : results) try {
-        cands.push_back({r.layout + " " + network::to_string(network::resolve(r.layout, r.values), true),
-                         network::resolve(r.layout, r.values), r.cost.penalised, r.cost.J});
-      } catch (const network::NetworkError&) {
-      }
-    run_admittance_bounds(study.admittance_degrees, cands, def.J, "", out,
-                          [&](int d, const network::Network& w) { return optim::admittance_bound(study, d, w); });
-  }
+}
+}  // namespace
+
+int run_model_study(const std::string& path, const std::string& out, bool plots) {
+  const optim::ModelStudy study = io::load_model_study(path);
+  const bool tty = isatty(STDOUT_FILENO);
+  fmt::print("study {}: model {}, strut '{}', objective {}, {} layouts, {} starts (seed {})\n", study.name, study.model.name,
+             study.model.forces[static_cast<std::size_t>(study.strut)]->name(), optim::Objective::name(study.objective.kind),
+             study.layouts.size(), study.search.starts, study.search.seed);
+  if (study.all)
+    fmt::print("every network of up to {} elements ({} networks), each also started from its best sub-network\n",
+               study.all->max_elements, study.layouts.size());
+  optim::ModelStudyProgress progress;
+  progress.structure = structure_progress("");
+  progress.searching = [&](std::size_t l, int start, int evals, double best) {
+    if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(),
+                        study.layouts[l], start + 1, evals, best);
+    std::fflush(stdout);
+  };
+  progress.finished = [&](std::size_t l, const optim::ModelLayoutResult& r) {
+    if (tty) fmt::print("\r{:90}\r", "");
+    fmt::print("  [{}/{}] {:<14} J = {:.6g}{} after {} evaluations\n", l + 1, study.layouts.size(), study.layouts[l], r.cost.J,
+               r.cost.feasible ? "" : " (a limit is exceeded)", r.evaluations);
+  };
+  std::function<void(const optim::AdmittanceBound&)> print_bound;
+  progress.searched = [&](const optim::ModelStudyResult& r) {
+    print_model_study(r);
+    print_bound = print_admittance_bound(r.baseline_cost.J, "");
+  };
+  progress.bound = [&](const optim::AdmittanceBound& b) { print_bound(b); };
+  const optim::ModelStudyResult run = optim::run_model_study(study, progress);
   if (out.empty()) return 0;
-  std::filesystem::create_directories(out);
-  if (study.all) write_structure(out, study.name, optim::Objective::name(o.kind), "", def.J, entries, plots);
-  // Table: a column per element name of any layout.
-  std::vector<std::string> elements;
-  for (const auto& r : results)
-    for (const auto& [k, v] : r.values)
-      if (std::find(elements.begin(), elements.end(), k) == elements.end()) elements.push_back(k);
-  {
-    File f(out + "/results.csv");
-    fmt::print(f.get(), "layout,expression,J,vs_default_pct,feasible,evaluations");
-    for (const auto& w : o.outputs) fmt::print(f.get(), ",{}", io::csv_field(w.name));
-    for (const auto& lim : o.limits) fmt::print(f.get(), ",{}", io::csv_field(lim.output));
-    for (const auto& e : elements) fmt::print(f.get(), ",{}", io::csv_field(e));
-    fmt::print(f.get(), "\n");
-    auto line = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, int evals, const network::Params& p) {
-      fmt::print(f.get(), "{},{},{:.10g},{:.6g},{},{}", io::csv_field(layout), io::csv_field(expr), c.J, 100 * (c.J - def.J) / def.J, c.feasible ? 1 : 0, evals);
-      for (double v : c.values) fmt::print(f.get(), ",{:.10g}", v);
-      for (double v : c.limit_values) fmt::print(f.get(), ",{:.10g}", v);
-      for (const auto& e : elements) {
-        const auto it = p.find(e);
-        fmt::print(f.get(), ",{}", it == p.end() ? std::string("") : fmt::format("{:.10g}", it->second));
-      }
-      fmt::print(f.get(), "\n");
-    };
-    line("default", network::to_string(baseline, true), def, 1, {});
-    for (const auto& r : results) line(r.layout, r.expression, r.cost, r.evaluations, r.values);
-    f.commit();
-  }
-  {
-    io::Json j;
-    j["study"] = study.name;
-    j["objective"] = optim::Objective::name(o.kind);
-    j["default"] = {{"network", network::to_string(baseline, true)}, {"J", def.J}, {"values", def.values}, {"limits", def.limit_values}};
-    io::Json rows = io::Json::array();
-    for (const auto& r : results) {
-      io::Json v = io::Json::object();
-      for (const auto& [k, x] : r.values) v[k] = std::isinf(x) ? io::Json("inf") : io::Json(x);
-      rows.push_back({{"layout", r.layout}, {"expression", r.expression}, {"J", r.cost.J}, {"feasible", r.cost.feasible},
-                      {"outputs", r.cost.values}, {"limits", r.cost.limit_values}, {"values", v}, {"at_limits", r.at_bounds},
-                      {"evaluations", r.evaluations}});
-    }
-    j["layouts"] = rows;
-    j["best"] = results[best].layout;
-    io::write_json(out + "/results.json", j);
-  }
-  std::vector<std::string> written = {"results.csv", "results.json"};
-  // FRF default vs best, and the objective over two elements of the best layout.
-  if (o.kind != optim::Objective::Kind::Peak) {
-    std::vector<double> f = o.frequencies;
-    if (f.empty())
-      for (int k = 0; k < 400; ++k) f.push_back(0.1 * std::pow(500.0, k / 399.0));  // 0.1 … 50 Hz
-    const auto fd = optim::study_frf(study, baseline, f);
-    const auto fb = optim::study_frf(study, network::resolve(results[best].layout, results[best].values), f);
-    File file(out + "/frf.csv");
-    fmt::print(file.get(), "f_hz");
-    for (const auto& n : fd.outputs) fmt::print(file.get(), ",{0}_default,{0}_best", n);
-    fmt::print(file.get(), "\n");
-    for (std::size_t k = 0; k < f.size(); ++k) {
-      fmt::print(file.get(), "{:.10g}", f[k]);
-      for (std::size_t i = 0; i < fd.outputs.size(); ++i) fmt::print(file.get(), ",{:.10g},{:.10g}", fd.magnitude[i][k], fb.magnitude[i][k]);
-      fmt::print(file.get(), "\n");
-    }
-    file.commit();
-    written.push_back("frf.csv");
-  }
-  {
-    std::vector<std::string> finite;
-    for (const auto& [k, v] : results[best].values)
-      if (v > 0 && std::isfinite(v)) finite.push_back(k);
-    if (finite.size() >= 2) {
-      const auto map = optim::objective_map(study, results[best].layout, results[best].values, finite[0], finite[1]);
-      File file(out + "/map.csv");
-      fmt::print(file.get(), "# {} of layout {} over {} (rows) and {} (columns)\n{}", optim::Objective::name(o.kind), map.layout,
-                 map.x_name, map.y_name, map.x_name + "\\" + map.y_name);
-      for (double y : map.y) fmt::print(file.get(), ",{:.6g}", y);
-      fmt::print(file.get(), "\n");
-      for (std::size_t i = 0; i < map.x.size(); ++i) {
-        fmt::print(file.get(), "{:.6g}", map.x[i]);
-        for (double v : map.J[i]) fmt::print(file.get(), ",{:.8g}", v);
-        fmt::print(file.get(), "\n");
-      }
-      file.commit();
-      written.push_back("map.csv");
-    }
-  }
+  const auto written = io::write_model_study_results(out, run, optim::model_study_figures(run));
   fmt::print("wrote");
-  for (const auto& w : written) fmt::print(" {}", w);
+  for (const auto& w : written) fmt::print(" {}", std::filesystem::path(w).filename().string());
   fmt::print(" in {}\n", out);
   if (plots) {
-    const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / "plot-model-study";
     std::fflush(stdout);
-    const std::string cmd = "'" + script.string() + "' '" + out + "'";
-    if (!std::filesystem::exists(script) || std::system(cmd.c_str()) != 0)
+    if (study.all && !run_script("plot-structure", out))
+      fmt::print("note: no pareto.png (scripts/plot-structure needs /usr/bin/python3 with matplotlib); pareto.csv is complete\n");
+    if (!run_script("plot-model-study", out))
       fmt::print("note: no plots (scripts/plot-model-study needs /usr/bin/python3 with matplotlib); the CSV files in {} are complete\n", out);
   }
   return 0;

@@ -38,6 +38,7 @@
 #include "inerta/io/linear_model_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/study_file.hpp"
+#include "inerta/io/structure_results.hpp"
 #include "inerta/io/study_report.hpp"
 #include "inerta/io/study_results.hpp"
 #include "inerta/io/files.hpp"
@@ -990,19 +991,7 @@ int run_distributed(const OptimiseArgs& a) {
 // Draws the PNGs of an `optimise --out DIR` with scripts/plot-study (python3 + matplotlib); without
 // them, a note: the CSV files are complete either way.
 void draw_plots(const std::string& dir) {
-  const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / "plot-study";
-  auto q = [](const std::string& s) {
-    std::string r = "'";
-    for (char c : s) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return r + "'";
-  };
-  if (!std::filesystem::exists(script)) {
-    fmt::print("note: no plots: {} not found; the CSV files in {} are complete\n", script.string(), dir);
-    return;
-  }
-  std::fflush(stdout);
-  const int status = std::system((q(script.string()) + " " + q(dir)).c_str());
-  if (status != 0)
+  if (!inerta::cli::run_script("plot-study", dir))
     fmt::print(
         "note: no plots (scripts/plot-study needs python3 with matplotlib and numpy: Debian's python3-matplotlib, "
         "python3-numpy, installed by scripts/install-deps); the CSV files in {} are complete, draw them later with "
@@ -1147,15 +1136,19 @@ int cmd_optimise(const OptimiseArgs& a) {
   fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n",
              network::to_string(baseline, true), def.J, def.speed * 3.6, wall);
   if (!study.admittance_degrees.empty()) {
-    std::vector<inerta::cli::Candidate> cands{{"default " + network::to_string(baseline, true), baseline, def.J, def.J}};
+    std::vector<optim::BoundCandidate> cands{{"default " + network::to_string(baseline, true), baseline, def.J, def.J}};
     for (const auto& r : results) try {  // a layout without a design (values missing) is skipped
         cands.push_back({r.layout + " " + network::to_string(network::resolve(r.layout, r.values), true),
                          network::resolve(r.layout, r.values), r.cost.J, r.cost.J});
       } catch (const network::NetworkError&) {
       }
-    inerta::cli::run_admittance_bounds(study.admittance_degrees, cands, def.J, "N", a.out, [&](int d, const network::Network& w) {
-      return optim::admittance_bound(study, d, w);
-    });
+    const auto bounds = optim::admittance_bounds(
+        study.admittance_degrees, cands, [&](int d, const network::Network& w) { return optim::admittance_bound(study, d, w); },
+        inerta::cli::print_admittance_bound(def.J, "N"));
+    if (!a.out.empty()) {
+      io::write_admittance_results(a.out, bounds, def.J);
+      fmt::print("wrote admittance.csv admittance.json in {}\n", a.out);
+    }
   }
   // after the bounds: pareto.png draws them (admittance.csv)
   if (study.all && !a.out.empty()) inerta::cli::write_structure(a.out, study.name, "J2", "N", def.J, entries, !a.no_plots);

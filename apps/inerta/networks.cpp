@@ -140,6 +140,18 @@ void print_structure(const std::vector<optim::StructureEntry>& entries, double d
                p.network, p.pareto ? "  *" : "");
 }
 
+bool run_script(const std::string& name, const std::string& dir) {
+  const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / name;
+  if (!std::filesystem::exists(script)) return false;
+  auto q = [](const std::string& x) {
+    std::string r = "'";
+    for (char c : x) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return r + "'";
+  };
+  std::fflush(stdout);
+  return std::system((q(script.string()) + " " + q(dir)).c_str()) == 0;
+}
+
 void write_structure(const std::string& dir, const std::string& study, const std::string& objective,
                      const std::string& unit, double default_J, const std::vector<optim::StructureEntry>& entries,
                      bool plots) {
@@ -147,57 +159,24 @@ void write_structure(const std::string& dir, const std::string& study, const std
   fmt::print("wrote");
   for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
   fmt::print(" in {}\n", dir);
-  if (!plots) return;
-  const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / "plot-structure";
-  std::fflush(stdout);
-  auto q = [](const std::string& x) {
-    std::string r = "'";
-    for (char c : x) r += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return r + "'";
-  };
-  const std::string cmd = q(script.string()) + " " + q(dir);
-  if (!std::filesystem::exists(script) || std::system(cmd.c_str()) != 0)
+  if (plots && !run_script("plot-structure", dir))
     fmt::print("note: no pareto.png (scripts/plot-structure needs /usr/bin/python3 with matplotlib); pareto.csv is complete\n");
 }
 
-void run_admittance_bounds(const std::vector<int>& degrees, const std::vector<Candidate>& candidates, double default_J,
-                           const std::string& unit, const std::string& dir,
-                           const std::function<optim::AdmittanceResult(int, const network::Network&)>& bound) {
-  if (degrees.empty()) return;
-  const std::string u = unit.empty() ? "" : " " + unit;
-  fmt::print("\npositive-real admittance bound (degree d: any network with at most d springs and inerters):\n");
-  io::Json rows = io::Json::array();
-  std::string csv = "degree,J,vs_default_pct,best_network,best_network_J,gap_pct,num,den,pr_re_min,realised,realised_elements,"
-                    "realised_reactive,minimal_reactive,method,realised_J,evaluations\n";
-  std::vector<int> order = degrees;
-  std::sort(order.begin(), order.end());  // a lower degree's bound is a start of the next: never worse
-  std::vector<Candidate> pool = candidates;
-  for (int d : order) {
-    auto best_of = [&](const std::vector<Candidate>& from) {
-      const Candidate* b = nullptr;
-      for (const auto& c : from)
-        if (optim::reactive_elements(c.net) <= d && std::isfinite(c.cost) && (!b || c.cost < b->cost)) b = &c;
-      return b;
-    };
-    const Candidate* best = best_of(candidates);  // the best network of this degree (the gap's reference)
-    const Candidate* start = best_of(pool);       // it, or a lower degree's bound if better
-    const auto t0 = std::chrono::steady_clock::now();
-    const optim::AdmittanceResult r = bound(d, start ? start->net : network::assign(network::parse("c"), {{"c", 1000.0}}));
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    auto poly = [](const network::Poly& p) {
-      std::string t;
-      for (double c : p) t += fmt::format("{}{:.8g}", t.empty() ? "" : " ", c);
-      return t;
-    };
-    const double gap = best ? 100 * (best->J - r.J) / r.J : NAN;
-    const bool feasible = r.cost <= r.J * (1 + 1e-12);  // the cost is J itself unless a limit is exceeded
-    fmt::print("  degree {}: J = {:.6g}{} ({:+.2f} % vs default){} after {} evaluations, {:.1f} s; started from {}\n", d, r.J,
-               u, 100 * (r.J - default_J) / default_J, feasible ? "" : ", a limit is EXCEEDED", r.evaluations, s, r.warm_from);
+std::function<void(const optim::AdmittanceBound&)> print_admittance_bound(double default_J, const std::string& unit) {
+  return [default_J, u = unit.empty() ? std::string() : " " + unit, first = true](const optim::AdmittanceBound& b) mutable {
+    if (first) fmt::print("\npositive-real admittance bound (degree d: any network with at most d springs and inerters):\n");
+    first = false;
+    const auto& r = b.result;
+    fmt::print("  degree {}: J = {:.6g}{} ({:+.2f} % vs default){} after {} evaluations, {:.1f} s; started from {}\n", r.degree,
+               r.J, u, 100 * (r.J - default_J) / default_J, b.feasible() ? "" : ", a limit is EXCEEDED", r.evaluations,
+               b.seconds, r.warm_from);
     fmt::print("    {}\n", network::to_string(network::admittance_leaf(r.y.num, r.y.den)));
     fmt::print("    positive real: {} (min Re Y(jω) = {:.4g} at ω = {:.4g} rad/s)\n", r.pr.positive_real ? "yes" : "NO: " + r.pr.reason,
                r.pr.re_min, r.pr.omega_min);
-    if (best)
-      fmt::print("    best network with ≤ {} springs+inerters: {} J = {:.6g}{}, {:.2f} % above the bound\n", d, best->label, best->J, u, gap);
+    if (b.best)
+      fmt::print("    best network with ≤ {} springs+inerters: {} J = {:.6g}{}, {:.2f} % above the bound\n", r.degree, b.best->label,
+                 b.best->J, u, b.gap_pct());
     if (r.synthesis)
       fmt::print("    realised ({}): {} — {} elements, {} reactive{}; {}\n", r.synthesis->method,
                  network::to_string(r.synthesis->network, true), r.synthesis->elements, r.synthesis->reactive,
@@ -206,27 +185,7 @@ void run_admittance_bounds(const std::vector<int>& degrees, const std::vector<Ca
                                              : std::string("not evaluable (a pole beyond 1e6 rad/s: elements too small or large)"));
     else
       fmt::print("    not realised: {}\n", r.synthesis_error);
-    csv += fmt::format("{},{:.10g},{:.4g},{},{:.10g},{:.4g},{},{},{:.6g},{},{},{},{},{},{:.10g},{}\n", d, r.J,
-                       100 * (r.J - default_J) / default_J, best ? "\"" + best->label + "\"" : "", best ? best->J : NAN, gap,
-                       poly(r.y.num), poly(r.y.den), r.pr.re_min,
-                       r.synthesis ? "\"" + network::to_string(r.synthesis->network, true) + "\"" : "",
-                       r.synthesis ? r.synthesis->elements : 0, r.synthesis ? r.synthesis->reactive : 0,
-                       r.synthesis && r.synthesis->minimal_reactive ? 1 : 0, r.synthesis ? r.synthesis->method : "",
-                       r.J_realised, r.evaluations);
-    if (std::isfinite(r.cost))
-      pool.push_back({fmt::format("the degree-{} bound", d), network::admittance_leaf(r.y.num, r.y.den), r.cost, r.J});
-    rows.push_back({{"degree", d}, {"feasible", feasible}, {"J", r.J}, {"num", r.y.num}, {"den", r.y.den}, {"positive_real", r.pr.positive_real},
-                    {"re_min", r.pr.re_min}, {"best_network", best ? best->label : ""}, {"best_network_J", best ? best->J : NAN},
-                    {"realised", r.synthesis ? network::to_string(r.synthesis->network, true) : ""},
-                    {"realised_elements", r.synthesis ? r.synthesis->elements : 0},
-                    {"minimal_reactive", r.synthesis && r.synthesis->minimal_reactive}, {"realised_J", r.J_realised},
-                    {"evaluations", r.evaluations}});
-  }
-  if (dir.empty()) return;
-  std::filesystem::create_directories(dir);
-  io::write_text_file(dir + "/admittance.csv", csv);
-  io::write_json(dir + "/admittance.json", rows);
-  fmt::print("wrote admittance.csv admittance.json in {}\n", dir);
+  };
 }
 
 }  // namespace inerta::cli

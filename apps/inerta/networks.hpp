@@ -22,24 +22,17 @@ optim::StructureProgressFn structure_progress(const std::string& unit);
 void print_structure(const std::vector<optim::StructureEntry>& entries, double default_J, const std::string& unit,
                      std::size_t rows = 25);
 
+/// Runs scripts/NAME DIR of the source tree (a plotting script); false if it is missing or fails.
+bool run_script(const std::string& name, const std::string& dir);
+
 /// Writes structure.csv/json and pareto.csv in `dir` and draws pareto.png (scripts/plot-structure)
 /// unless !plots; prints what it wrote.
 void write_structure(const std::string& dir, const std::string& study, const std::string& objective,
                      const std::string& unit, double default_J, const std::vector<optim::StructureEntry>& entries,
                      bool plots);
 
-/// A design of a study for the admittance bound's warm start and comparison.
-struct Candidate {
-  std::string label;
-  network::Network net;  ///< bound
-  double cost = 0, J = 0;
-};
-
-/// For each degree: the best candidate with at most `degree` springs and inerters starts
-/// `bound(degree, warm)`; prints the bound, the gap of that candidate to it and the realisation,
-/// and writes admittance.csv/json in `dir` (if not empty).
-void run_admittance_bounds(const std::vector<int>& degrees, const std::vector<Candidate>& candidates, double default_J,
-                           const std::string& unit, const std::string& dir,
-                           const std::function<optim::AdmittanceResult(int, const network::Network&)>& bound);
+/// Prints one degree's admittance bound (optim::admittance_bounds' `done`): the bound, the gap of the
+/// best network to it and the realisation; a heading before the first.
+std::function<void(const optim::AdmittanceBound&)> print_admittance_bound(double default_J, const std::string& unit);
 
 }  // namespace inerta::cli

@@ -1280,8 +1280,11 @@ class Report:
 def make_report(study: Study, results: Sequence[LayoutResult], options: Optional[ReportOptions] = None, *,
                 progress: Optional[Callable[[int, int, str, int, int], None]] = None) -> Report: ...
 def write_study_report(report: Report, dir: PathLike) -> list[str]: ...
+@overload
 def write_study_results(dir: PathLike, study: str, default_cost: StudyCost,
                         results: Sequence[LayoutResult]) -> list[str]: ...
+@overload
+def write_study_results(result: ModelStudyResult, dir: PathLike) -> list[str]: ...
 def study_results_json(study: str, default_cost: StudyCost, results: Sequence[LayoutResult]) -> dict[str, Any]: ...
 
 # ---- identification ----------------------------------------------------------------------------------
@@ -1492,6 +1495,7 @@ def optimise_model_layout(study: ModelStudy, layout: str, warm: Sequence[dict[st
 def with_strut_network(model: Model, strut: int, layout: str, params: dict[str, float] = ...) -> Model: ...
 
 class ObjectiveMap:
+    layout: str
     x_name: str
     y_name: str
     x: list[float]
@@ -1546,6 +1550,26 @@ def optimise_all(study: Study, *, progress: Optional[Callable[[int, int, float, 
 def optimise_all(study: ModelStudy, *, progress: Optional[Callable[[int, int, float, float, float], None]] = None
                  ) -> Tuple[list[StructureEntry], list[ModelLayoutResult]]: ...
 
+class ModelStudyResult:
+    study: ModelStudy
+    baseline: Network
+    baseline_cost: ModelCost
+    results: list[ModelLayoutResult]
+    entries: list[StructureEntry]
+    best: int
+    admittance: list[AdmittanceBound]
+    seconds: float
+
+def run_model_study(study: ModelStudy, *, progress: Optional[Callable[[int, int, float], None]] = None
+                    ) -> ModelStudyResult: ...
+
+class ModelStudyFigures:
+    frf_default: Optional[StudyFrf]
+    frf_best: Optional[StudyFrf]
+    map: Optional[ObjectiveMap]
+
+def model_study_figures(result: ModelStudyResult) -> ModelStudyFigures: ...
+
 class AdmittanceResult:
     degree: int
     y: Rational
@@ -1562,6 +1586,21 @@ class AdmittanceResult:
 def admittance_bound(study: Study, degree: int, warm: Network) -> AdmittanceResult: ...
 @overload
 def admittance_bound(study: ModelStudy, degree: int, warm: Network) -> AdmittanceResult: ...
+
+class BoundCandidate:
+    label: str
+    network: Network
+    cost: float
+    J: float
+
+class AdmittanceBound:
+    result: AdmittanceResult
+    best: Optional[BoundCandidate]
+    seconds: float
+    feasible: bool
+    gap_pct: float
+
+def write_admittance_results(dir: PathLike, bounds: Sequence[AdmittanceBound], default_J: float) -> list[str]: ...
 def reactive_elements(network: Network) -> int: ...
 def write_structure_results(dir: PathLike, study: str, objective: str, unit: str, default_J: float,
                             entries: Sequence[StructureEntry]) -> list[str]: ...

@@ -150,6 +150,7 @@ void bind_linear(py::module_& m) {
   }, py::arg("model"), py::arg("strut"), py::arg("layout"), py::arg("params") = network::Params{},
         "The model with force element `strut`'s network replaced.");
   py::class_<optim::ObjectiveMap>(m, "ObjectiveMap")
+      .def_readonly("layout", &optim::ObjectiveMap::layout)
       .def_readonly("x_name", &optim::ObjectiveMap::x_name)
       .def_readonly("y_name", &optim::ObjectiveMap::y_name)
       .def_readonly("x", &optim::ObjectiveMap::x)

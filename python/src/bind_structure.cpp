@@ -9,6 +9,8 @@
 #include "inerta/network/synthesis.hpp"
 #include "inerta/optim/admittance_search.hpp"
 #include "inerta/optim/structure_search.hpp"
+#include "inerta/optim/model_study_run.hpp"
+#include "inerta/io/model_study_results.hpp"
 
 namespace inerta::python {
 
@@ -140,6 +142,51 @@ void bind_structure(py::module_& m) {
     });
   }, py::arg("study"), py::kw_only(), py::arg("progress") = py::none(),
         "The same for a model study: (entries, model layout results).");
+  py::class_<optim::ModelStudyResult>(m, "ModelStudyResult", "A whole model study as `inerta optimise` runs it.")
+      .def_readonly("study", &optim::ModelStudyResult::study)
+      .def_readonly("baseline", &optim::ModelStudyResult::baseline, "the strut's own network")
+      .def_readonly("baseline_cost", &optim::ModelStudyResult::baseline_cost)
+      .def_readonly("results", &optim::ModelStudyResult::results, "study order; layouts: all: ranked, best first")
+      .def_readonly("entries", &optim::ModelStudyResult::entries, "layouts: all: the structure search's entries")
+      .def_readonly("best", &optim::ModelStudyResult::best, "index in results")
+      .def_readonly("admittance", &optim::ModelStudyResult::admittance, "the admittance bounds the study asks for")
+      .def_readonly("seconds", &optim::ModelStudyResult::seconds, "wall time, s");
+  m.def("run_model_study", [](const optim::ModelStudy& s, const py::object& progress) {
+    return run(progress, [&](Call& call) {
+      optim::ModelStudyProgress p;
+      double best = std::numeric_limits<double>::infinity();
+      p.finished = [&](std::size_t l, const optim::ModelLayoutResult& r) {
+        best = std::min(best, r.cost.J);
+        call.post([done = static_cast<int>(l) + 1, total = static_cast<int>(s.layouts.size()), b = best](const py::object& cb) {
+          cb(done, total, b);
+        });
+      };
+      p.structure = [&call](const optim::StructureProgress& q) {
+        call.post([done = q.done, total = q.total, b = q.best_J](const py::object& cb) { cb(done, total, b); });
+      };
+      return optim::run_model_study(s, p);
+    });
+  }, py::arg("study"), py::kw_only(), py::arg("progress") = py::none(),
+        "Runs a model study as `inerta optimise` does (the default, then each layout warm-started, or the structure "
+        "search for layouts: all); progress(done, total, best J) after each layout or network.");
+  m.def("model_study_figures", [](const optim::ModelStudyResult& r) {
+    py::gil_scoped_release release;
+    return optim::model_study_figures(r);
+  }, py::arg("result"), "The report's FRFs (default and best) and objective map (optim::model_study_figures).");
+  py::class_<optim::ModelStudyFigures>(m, "ModelStudyFigures")
+      .def_readonly("frf_default", &optim::ModelStudyFigures::frf_default)
+      .def_readonly("frf_best", &optim::ModelStudyFigures::frf_best)
+      .def_readonly("map", &optim::ModelStudyFigures::map);
+  m.def("write_study_results", [](const optim::ModelStudyResult& r, const py::object& dir) {
+    optim::ModelStudyFigures fig;
+    {
+      py::gil_scoped_release release;
+      fig = optim::model_study_figures(r);
+    }
+    return io::write_model_study_results(path_arg(dir), r, fig);
+  }, py::arg("result"), py::arg("dir"),
+        "Writes a model study's files in DIR, the same as `inerta optimise STUDY --out DIR` (results.csv, "
+        "results.json, frf.csv, map.csv, and structure.csv/json, pareto.csv for layouts: all); returns their paths.");
 
   // ---- admittance bound ----
   py::class_<optim::AdmittanceResult>(m, "AdmittanceResult", "The best positive-real admittance of a degree, realised.")
@@ -160,6 +207,20 @@ void bind_structure(py::module_& m) {
   m.def("admittance_bound", [](const optim::ModelStudy& s, int degree, const Network& warm) {
     return run(py::none(), [&](Call&) { return optim::admittance_bound(s, degree, warm); });
   }, py::arg("study"), py::arg("degree"), py::arg("warm"), "The same for a model study.");
+  py::class_<optim::BoundCandidate>(m, "BoundCandidate", "A design an admittance bound starts from and is compared with.")
+      .def_readonly("label", &optim::BoundCandidate::label)
+      .def_readonly("network", &optim::BoundCandidate::net, "bound")
+      .def_readonly("cost", &optim::BoundCandidate::cost)
+      .def_readonly("J", &optim::BoundCandidate::J);
+  py::class_<optim::AdmittanceBound>(m, "AdmittanceBound", "One degree's bound and the best network of at most that degree.")
+      .def_readonly("result", &optim::AdmittanceBound::result)
+      .def_readonly("best", &optim::AdmittanceBound::best)
+      .def_readonly("seconds", &optim::AdmittanceBound::seconds)
+      .def_property_readonly("feasible", &optim::AdmittanceBound::feasible)
+      .def_property_readonly("gap_pct", &optim::AdmittanceBound::gap_pct, "100 (best J − J)/J");
+  m.def("write_admittance_results", [](const py::object& dir, const std::vector<optim::AdmittanceBound>& bounds, double default_J) {
+    return io::write_admittance_results(path_arg(dir), bounds, default_J);
+  }, py::arg("dir"), py::arg("bounds"), py::arg("default_J"), "Writes DIR/admittance.csv and admittance.json; returns their paths.");
   m.def("reactive_elements", &optim::reactive_elements, py::arg("network"),
         "Springs + inerters of a bound network (the degree of a given admittance).");
   m.def("write_structure_results", [](const py::object& dir, const std::string& study, const std::string& objective,

@@ -52,6 +52,14 @@ BOUND = {
     "optim::reactive_elements": "reactive_elements",
     "io::write_structure_results": "write_structure_results",
     "io::structure_results_json": "structure_results_json",
+    "optim::ModelStudyResult": "ModelStudyResult",
+    "optim::BoundCandidate": "BoundCandidate",
+    "optim::AdmittanceBound": "AdmittanceBound",
+    "io::write_admittance_results": "write_admittance_results",
+    "optim::ModelStudyFigures": "ModelStudyFigures",
+    "optim::run_model_study": "run_model_study",
+    "optim::model_study_figures": "model_study_figures",
+    "io::write_model_study_results": "write_study_results",
     # numerics
     "numerics::CubicSpline": "CubicSpline",
     "numerics::Options": "SearchOptions",
@@ -310,6 +318,9 @@ EXCLUDED = {
     "optim::structure_search": "the generic driver takes a C++ objective called from worker threads; Python calls "
                                "optimise_all on a study",
     "optim::StructureOutcome": "what a C++ objective returns to structure_search (not bound)",
+    "optim::ModelStudyProgress": "delivered to run_model_study's progress as (done, total, best J)",
+    "optim::admittance_bounds": "takes a C++ bound function; run_model_study returns a model study's bounds "
+                                "(ModelStudyResult.admittance), admittance_bound gives one",
     "optim::StructureProgress": "delivered to optimise_all's progress as (done, total, elapsed, remaining, best J)",
     "optim::optimise_admittance": "takes C++ objectives called from worker threads; Python calls admittance_bound "
                                   "on a study",

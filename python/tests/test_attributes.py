@@ -113,6 +113,17 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     mr = inerta.optimise_model_layout(ms, "k|c")
     out += [ms, ms.objective, ms.objective.outputs[0], mr, mr.cost]
     out += [inerta.objective_map(ms, "k|c", mr.values, "k", "c", n=2), inerta.study_frf(ms, "k|c", mr.values, [5.0])]
+    bound_study = tmp_path_factory.mktemp("study") / "tmd-bound.yaml"
+    bound_study.write_text(f"""name: one layout and the degree-1 bound
+model: {model("tmd.yaml")}
+strut: absorber
+objective: {{type: hinf, input: F, outputs: {{x: 1}}, band: {{from: 3, to: 8, points: 50}}}}
+layouts: ["k|c"]
+admittance: [1]
+search: {{starts: 1, seed: 1, min_step: 0.05}}
+""")
+    msr = inerta.run_model_study(inerta.load_model_study(bound_study))
+    out += [msr, inerta.model_study_figures(msr)]
     qs = inerta.load_model_study(pathlib.Path(model("quarter_car.yaml")).parent.parent / "studies" / "quarter_car.yaml")
     out += [qs.objective.limits[0]]
     opts = inerta.EnumerationOptions(max_elements=2, inerters=False)

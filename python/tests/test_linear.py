@@ -94,3 +94,47 @@ def test_model_study_pieces():
     assert len(mp.J) == 3 and min(min(r) for r in mp.J) <= c.J + 1e-12
     fr = inerta.study_frf(study, "k|c", {"k": 4535.147, "c": 38.32899}, [4.0, 5.0])
     assert fr.outputs == ["x"] and len(fr.magnitude[0]) == 2
+
+
+def test_a_model_studys_files_from_python_equal_the_clis(cli, tmp_path):
+    """inerta.run_model_study + inerta.write_study_results write what `inerta optimise --out` writes,
+    byte for byte (the same library writer, io::write_model_study_results)."""
+    cli("optimise", "studies/tmd.yaml", "--out", tmp_path / "cli", "--no-plots")
+    calls = []
+    r = inerta.run_model_study(inerta.load_model_study(f"{SRC}/studies/tmd.yaml"),
+                               progress=lambda done, total, best: calls.append((done, total, best)))
+    assert [c[:2] for c in calls] == [(1, 4), (2, 4), (3, 4), (4, 4)]
+    assert calls[-1][2] == min(x.cost.J for x in r.results)
+    assert r.results[r.best].cost.J == calls[-1][2] and r.baseline_cost.J > calls[-1][2]
+    paths = inerta.write_study_results(r, tmp_path / "py")
+    names = [p.rsplit("/", 1)[1] for p in paths]
+    assert names == ["results.csv", "results.json", "frf.csv", "map.csv"]
+    for n in names:
+        assert (tmp_path / "py" / n).read_bytes() == (tmp_path / "cli" / n).read_bytes(), n
+    fig = inerta.model_study_figures(r)
+    assert fig.frf_default.outputs == ["x"] and fig.map.layout == r.results[r.best].layout
+
+
+def test_a_model_studys_admittance_bounds_from_python_equal_the_clis(cli, tmp_path):
+    study = tmp_path / "tmd-bound.yaml"
+    study.write_text(f"""name: TMD, one layout and the degree-2 bound
+model: {SRC}/models/tmd.yaml
+strut: absorber
+objective: {{type: hinf, input: F, outputs: {{x: 1}}, band: {{from: 3, to: 8, points: 200}}}}
+layouts: ["k|c"]
+admittance: [2]
+search: {{starts: 2, seed: 1, lo: 0.01, hi: 1.0e7, min_step: 0.01}}
+""")
+    out = cli("optimise", study, "--out", tmp_path / "cli", "--no-plots").stdout
+    assert "degree 2: J =" in out
+    r = inerta.run_model_study(inerta.load_model_study(study))
+    (b,) = r.admittance
+    # any network of ≤ 2 springs+inerters is a degree-2 admittance: the bound is below the best such network
+    assert b.result.degree == 2 and b.feasible and b.best is not None and b.result.J <= b.best.J * (1 + 1e-9)
+    assert b.gap_pct == pytest.approx(100 * (b.best.J - b.result.J) / b.result.J)
+    paths = inerta.write_study_results(r, tmp_path / "py")
+    assert [p.rsplit("/", 1)[1] for p in paths[:2]] == ["admittance.csv", "admittance.json"]
+    for n in ["admittance.csv", "admittance.json", "results.csv", "results.json"]:
+        assert (tmp_path / "py" / n).read_bytes() == (tmp_path / "cli" / n).read_bytes(), n
+    again = inerta.write_admittance_results(tmp_path / "again", r.admittance, r.baseline_cost.J)
+    assert open(again[0], "rb").read() == (tmp_path / "cli" / "admittance.csv").read_bytes()

@@ -77,4 +77,38 @@ std::vector<std::string> write_structure_results(const std::string& dir, const s
   return {csv_path, json_path, pareto_path};
 }
 
+std::vector<std::string> write_admittance_results(const std::string& dir, const std::vector<optim::AdmittanceBound>& bounds,
+                                                  double default_J) {
+  namespace fs = std::filesystem;
+  auto poly = [](const network::Poly& p) {
+    std::string t;
+    for (double c : p) t += fmt::format("{}{:.8g}", t.empty() ? "" : " ", c);
+    return t;
+  };
+  std::string csv = "degree,J,vs_default_pct,best_network,best_network_J,gap_pct,num,den,pr_re_min,realised,realised_elements,"
+                    "realised_reactive,minimal_reactive,method,realised_J,evaluations\n";
+  Json rows = Json::array();
+  for (const auto& b : bounds) {
+    const auto& r = b.result;
+    const std::string realised = r.synthesis ? network::to_string(r.synthesis->network, true) : "";
+    csv += fmt::format("{},{:.10g},{:.4g},{},{:.10g},{:.4g},{},{},{:.6g},{},{},{},{},{},{:.10g},{}\n", r.degree, r.J,
+                       pct(r.J, default_J), b.best ? "\"" + b.best->label + "\"" : "", b.best ? b.best->J : NAN, b.gap_pct(),
+                       poly(r.y.num), poly(r.y.den), r.pr.re_min, r.synthesis ? "\"" + realised + "\"" : "",
+                       r.synthesis ? r.synthesis->elements : 0, r.synthesis ? r.synthesis->reactive : 0,
+                       r.synthesis && r.synthesis->minimal_reactive ? 1 : 0, r.synthesis ? r.synthesis->method : "",
+                       r.J_realised, r.evaluations);
+    rows.push_back({{"degree", r.degree}, {"feasible", b.feasible()}, {"J", r.J}, {"num", r.y.num}, {"den", r.y.den},
+                    {"positive_real", r.pr.positive_real}, {"re_min", r.pr.re_min},
+                    {"best_network", b.best ? b.best->label : ""}, {"best_network_J", b.best ? b.best->J : NAN},
+                    {"realised", realised}, {"realised_elements", r.synthesis ? r.synthesis->elements : 0},
+                    {"minimal_reactive", r.synthesis && r.synthesis->minimal_reactive}, {"realised_J", r.J_realised},
+                    {"evaluations", r.evaluations}});
+  }
+  fs::create_directories(dir);
+  const std::string csv_path = (fs::path(dir) / "admittance.csv").string(), json_path = (fs::path(dir) / "admittance.json").string();
+  write_text_file(csv_path, csv);
+  write_json(json_path, rows);
+  return {csv_path, json_path};
+}
+
 }  // namespace inerta::io

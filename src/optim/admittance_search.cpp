@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "inerta/error.hpp"
@@ -153,6 +154,38 @@ AdmittanceResult admittance_bound(const ModelStudy& study, int degree, const Net
     }
   };
   return optimise_admittance(degree, cost, J, warm, study.search, progress);
+}
+
+double AdmittanceBound::gap_pct() const {
+  return best ? 100 * (best->J - result.J) / result.J : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::vector<AdmittanceBound> admittance_bounds(std::vector<int> degrees, const std::vector<BoundCandidate>& candidates,
+                                               const std::function<AdmittanceResult(int, const network::Network&)>& bound,
+                                               const std::function<void(const AdmittanceBound&)>& done) {
+  std::sort(degrees.begin(), degrees.end());
+  std::vector<BoundCandidate> pool = candidates;
+  std::vector<AdmittanceBound> out;
+  for (int d : degrees) {
+    auto best_of = [&](const std::vector<BoundCandidate>& from) {
+      const BoundCandidate* b = nullptr;
+      for (const auto& c : from)
+        if (reactive_elements(c.net) <= d && std::isfinite(c.cost) && (!b || c.cost < b->cost)) b = &c;
+      return b;
+    };
+    AdmittanceBound row;
+    if (const BoundCandidate* b = best_of(candidates)) row.best = *b;  // the gap's reference
+    const BoundCandidate* start = best_of(pool);                       // it, or a lower degree's bound if better
+    const auto t0 = std::chrono::steady_clock::now();
+    row.result = bound(d, start ? start->net : network::assign(network::parse("c"), {{"c", 1000.0}}));
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (std::isfinite(row.result.cost))
+      pool.push_back({fmt::format("the degree-{} bound", d), network::admittance_leaf(row.result.y.num, row.result.y.den),
+                      row.result.cost, row.result.J});
+    out.push_back(std::move(row));
+    if (done) done(out.back());
+  }
+  return out;
 }
 
 }  // namespace inerta::optim

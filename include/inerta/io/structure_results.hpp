@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "inerta/io/json.hpp"
+#include "inerta/optim/admittance_search.hpp"
 #include "inerta/optim/structure_search.hpp"
 
 namespace inerta::io {
@@ -22,5 +23,13 @@ Json structure_results_json(const std::string& study, const std::string& objecti
 std::vector<std::string> write_structure_results(const std::string& dir, const std::string& study,
                                                  const std::string& objective, const std::string& unit, double default_J,
                                                  const std::vector<optim::StructureEntry>& entries);
+
+/// The admittance bounds (`admittance: [2, 3]`, docs/networks.md#the-admittance-bound):
+///   admittance.csv:  degree,J,vs_default_pct,best_network,best_network_J,gap_pct,num,den,pr_re_min,realised,
+///                    realised_elements,realised_reactive,minimal_reactive,method,realised_J,evaluations
+///                    (num, den: coefficients, highest power first, space-separated; SI)
+///   admittance.json: a row per degree. Returns their paths.
+std::vector<std::string> write_admittance_results(const std::string& dir, const std::vector<optim::AdmittanceBound>& bounds,
+                                                  double default_J);
 
 }  // namespace inerta::io

@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "inerta/network/positive_real.hpp"
 #include "inerta/network/synthesis.hpp"
@@ -50,6 +51,27 @@ AdmittanceResult admittance_bound(const Study& study, int degree, const network:
                                   const numerics::Progress& progress = {});
 AdmittanceResult admittance_bound(const ModelStudy& study, int degree, const network::Network& warm,
                                   const numerics::Progress& progress = {});
+
+/// A design of a study: a warm start of the admittance bounds, and the network each bound is compared with.
+struct BoundCandidate {
+  std::string label;
+  network::Network net;  ///< bound
+  double cost = 0, J = 0;  ///< what the search minimised; the objective
+};
+/// One degree's bound, with the best candidate of at most that many springs and inerters.
+struct AdmittanceBound {
+  AdmittanceResult result;
+  std::optional<BoundCandidate> best;  ///< none if no candidate has so few springs and inerters
+  double seconds = 0;                  ///< wall time of the bound's search
+  bool feasible() const { return result.cost <= result.J * (1 + 1e-12); }  ///< cost = J unless a limit is exceeded
+  double gap_pct() const;  ///< 100 (best.J − J)/J: how far the best network is above the bound; NaN without one
+};
+/// The bounds of `degrees`, lowest first: each starts from the best of the candidates and the lower
+/// degrees' bounds with at most that many springs and inerters (a lower degree's bound is a start of
+/// the next, so never worse), and is compared with the best candidate. done(bound) after each.
+std::vector<AdmittanceBound> admittance_bounds(std::vector<int> degrees, const std::vector<BoundCandidate>& candidates,
+                                               const std::function<AdmittanceResult(int, const network::Network&)>& bound,
+                                               const std::function<void(const AdmittanceBound&)>& done = {});
 
 /// Springs + inerters of the simplified network in canonical form (same-type neighbours merged): an
 /// upper bound of the McMillan degree of its admittance, the degree of an Admittance leaf itself.
