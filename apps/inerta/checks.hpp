@@ -24,6 +24,17 @@ inline CLI::Validator number_rule(const NumberRule& rule) {
       rule.what);
 }
 
+/// A count obeying a library rule (inerta::CountRule).
+inline CLI::Validator count_rule(const CountRule& rule) {
+  return CLI::Validator(
+      [=](std::string& s) {
+        double v = 0;
+        if (!CLI::detail::lexical_cast(s, v)) return fmt::format("expected a whole number, got '{}'", s);
+        return rule.check(v, s);
+      },
+      fmt::format("{} … {}", rule.lo, rule.hi));
+}
+
 /// A finite number in [lo, hi]; `what` describes the range and unit, e.g. "> 0 s".
 inline CLI::Validator number_in(double lo, double hi, const std::string& what) {
   return CLI::Validator(

@@ -881,8 +881,13 @@ int cmd_frf(const FrfArgs& a) {
     o.vc = a.vc;
     o.cycles = a.cycles;
     o.analysed = a.analysed;
-    if (!(o.analysed > 0 && o.analysed <= o.cycles))
-      throw CLI::ValidationError("--analysed", "must be between 1 and --cycles");
+    try {
+      analysis::check(o);  // the rules Python's frf_stepped_sine applies too
+    } catch (const InvalidArgument& e) {
+      const std::string m = e.what();
+      const auto colon = m.find(": ");
+      throw CLI::ValidationError("--" + m.substr(0, colon), m.substr(colon + 2));
+    }
     r = analysis::frf_stepped_sine(rig, outputs, f, o);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
@@ -1224,7 +1229,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> check_sets;
   check->add_option("--set", check_sets, "Override a value NAME.KEY=VALUE of the file (repeatable)");
 
-  using inerta::cli::count_in, inerta::cli::number_in, inerta::cli::number_rule, inerta::cli::positive;
+  using inerta::cli::count_in, inerta::cli::count_rule, inerta::cli::number_in, inerta::cli::number_rule, inerta::cli::positive;
 
   SimulateArgs sa;
   auto* sim = app.add_subcommand("simulate", "Time simulation; writes a CSV of the model's outputs");
@@ -1246,7 +1251,7 @@ int main(int argc, char** argv) {
   sim->add_option("--speed", sa.speed, "Train speed (with --catenary), in --unit")->check(number_in(0, 1e4, "0 … 1e4"));
   sim->add_option("--spans", sa.spans, "Spans to simulate under a catenary (t_end = spans · L / v)")
       ->capture_default_str()
-      ->check(count_in(1, 10000));
+      ->check(count_rule(analysis::spans_rule));
   sim->add_option("--positions", sa.positions,
                   "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200");
 
@@ -1302,16 +1307,16 @@ int main(int argc, char** argv) {
   frf->add_option("--method", fa.method, "linear or stepped-sine")
       ->check(CLI::IsMember({"linear", "stepped-sine"}))
       ->capture_default_str();
-  frf->add_option("--vc", fa.vc, "Stepped sine: mean velocity amplitude V_c, m/s")->capture_default_str()->check(positive("m/s"));
-  frf->add_option("--cycles", fa.cycles, "Stepped sine: cycles per frequency")->capture_default_str()->check(count_in(1, 100000));
-  frf->add_option("--analysed", fa.analysed, "Stepped sine: last cycles analysed")->capture_default_str()->check(count_in(1, 100000));
+  frf->add_option("--vc", fa.vc, "Stepped sine: mean velocity amplitude V_c, m/s")->capture_default_str()->check(number_rule(analysis::vc_rule));
+  frf->add_option("--cycles", fa.cycles, "Stepped sine: cycles per frequency")->capture_default_str()->check(count_rule(analysis::cycles_rule));
+  frf->add_option("--analysed", fa.analysed, "Stepped sine: last cycles analysed")->capture_default_str()->check(count_rule(analysis::analysed_rule));
   frf->add_option("--out", fa.out, "CSV file (default: standard output)");
 
   CatenaryResponseArgs ca;
   auto* crs = app.add_subcommand("catenary-response",
                                  "Lumped catenary alone under a constant upward force: acceleration amplitude vs f_p");
   crs->add_option("catenary", ca.catenary, "Catenary file (YAML)")->required();
-  crs->add_option("--force", ca.force, "Constant upward force, N")->capture_default_str()->check(number_in(-1e9, 1e9, "a force in N"));
+  crs->add_option("--force", ca.force, "Constant upward force, N")->capture_default_str()->check(number_rule(analysis::force_rule));
   crs->add_option("--fp", ca.fp, "Pumping frequencies F0:DF:F1 in Hz (f_p = v / L)")->required();
   crs->add_option("--set", ca.sets, "Override a catenary value (repeatable)");
   crs->add_option("--out", ca.out, "CSV file (default: standard output)");

@@ -1,5 +1,7 @@
 #pragma once
 // Typed errors. Every error message names what failed and the quantities involved.
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -49,5 +51,28 @@ struct NumberRule {
     return {};
   }
 };
+
+/// A count's rule (cycles, spans, points), shared like NumberRule: a whole number in [lo, hi].
+struct CountRule {
+  long lo, hi;
+  /// "" if v obeys the rule, else the message ("expected a whole number, got '2.5'",
+  /// "0 is out of range; expected 1 … 100000").
+  std::string check(double v, const std::string& text) const {
+    if (!(v == v) || v - v != 0 || v != std::floor(v))
+      return "expected a whole number, got '" + text + "'";
+    if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)))
+      return text + " is out of range; expected " + std::to_string(lo) + " … " + std::to_string(hi);
+    return {};
+  }
+};
+
+/// The library's own check of an options field by the rule its CLI option and Python argument use:
+/// InvalidArgument "name: message" (v written with up to 15 significant digits).
+template <class Rule>
+void require(const Rule& rule, double v, const char* name) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", v);
+  if (const std::string e = rule.check(v, text); !e.empty()) throw InvalidArgument(std::string(name) + ": " + e);
+}
 
 }  // namespace inerta

@@ -915,7 +915,8 @@ class CoupledResult:
 ModelsOnLine = Union[Model, Sequence[PantographOnLine]]
 
 def simulate_coupled(model: ModelsOnLine, catenary: CatenaryLike, speed: float, *, contact: ContactLike = None,
-                     positions: Optional[ArrayLike] = None, spans: int = 12, t_end: float = -1.0, sample: float = -1.0,
+                     positions: Optional[ArrayLike] = None, spans: int = 12, t_end: Optional[float] = None,
+                     sample: Optional[float] = None,
                      window_spans: int = 2, integrator: Optional[IntegratorOptions] = None,
                      method: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None,
                      max_step: Optional[float] = None,

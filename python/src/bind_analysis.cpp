@@ -281,16 +281,9 @@ void bind_analysis(py::module_& m) {
                        const py::object& rtol, const py::object& atol, const py::object& max_step,
                        const py::object& progress) {
     analysis::SimulateOptions o;
-    // Given: the CLI's rule and message (--t-end, --sample); None: the model's options.
-    auto given = [](const py::object& v, const char* name, const NumberRule& rule) {
-      if (v.is_none()) return -1.0;
-      const double x = v.cast<double>();
-      if (const std::string e = rule.check(x, py::str(v).cast<std::string>()); !e.empty())
-        throw InvalidArgument(std::string(name) + ": " + e);
-      return x;
-    };
-    o.t_end = given(t_end, "t_end", analysis::t_end_rule);
-    o.sample = given(sample, "sample", analysis::sample_rule);
+    // Given: the CLI's rule and message (--t-end, --sample); None (-1): the model's options.
+    o.t_end = t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule);
+    o.sample = sample.is_none() ? -1.0 : rule_arg(sample, "sample", analysis::sample_rule);
     o.from_equilibrium = from_equilibrium, o.steady_from = steady_from;
     o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
     return run(progress, [&](Call& call) {
@@ -358,14 +351,19 @@ void bind_analysis(py::module_& m) {
       });
 
   m.def("simulate_coupled", [](const py::object& model, const py::object& catenary, double speed,
-                               const py::object& contact, const py::object& positions, int spans, double t_end,
-                               double sample, int window_spans, const py::object& integrator, const py::object& method,
+                               const py::object& contact, const py::object& positions, const py::object& spans,
+                               const py::object& t_end, const py::object& sample, const py::object& window_spans,
+                               const py::object& integrator, const py::object& method,
                                const py::object& rtol, const py::object& atol, const py::object& max_step,
                                const py::object& progress) {
     const CatenaryArg cat = catenary_arg(catenary);
     const auto pantographs = train(model, positions, contact_arg(contact, cat));
     analysis::CoupledOptions o;
-    o.spans = spans, o.t_end = t_end, o.sample = sample, o.window_spans = window_spans;
+    // The CLI's rules and messages (--spans, --t-end, --sample); None: by spans, L/(400 v).
+    o.spans = static_cast<int>(rule_arg(spans, "spans", analysis::spans_rule));
+    o.window_spans = static_cast<int>(rule_arg(window_spans, "window_spans", analysis::window_spans_rule));
+    o.t_end = t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule);
+    o.sample = sample.is_none() ? -1.0 : rule_arg(sample, "sample", analysis::sample_rule);
     o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
     return run(progress, [&](Call& call) {
       const auto t0 = Clock::now();
@@ -376,7 +374,7 @@ void bind_analysis(py::module_& m) {
       return CoupledResult{sim, seconds_since(t0)};
     });
   }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::kw_only(), py::arg("contact") = py::none(),
-        py::arg("positions") = py::none(), py::arg("spans") = 12, py::arg("t_end") = -1.0, py::arg("sample") = -1.0,
+        py::arg("positions") = py::none(), py::arg("spans") = 12, py::arg("t_end") = py::none(), py::arg("sample") = py::none(),
         py::arg("window_spans") = 2, py::arg("integrator") = py::none(), py::arg("method") = py::none(),
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("max_step") = py::none(),
         py::arg("progress") = py::none(),
@@ -655,9 +653,10 @@ void bind_analysis(py::module_& m) {
                                const py::object& analysed) {
     const std::vector<double> fv = doubles(f);
     analysis::SteppedSine o = options.is_none() ? analysis::SteppedSine{} : options.cast<analysis::SteppedSine>();
-    if (!vc.is_none()) o.vc = vc.cast<double>();
-    if (!cycles.is_none()) o.cycles = cycles.cast<int>();
-    if (!analysed.is_none()) o.analysed = analysed.cast<int>();
+    // Given: the CLI's rules and messages (--vc, --cycles, --analysed); the rest by analysis::check.
+    if (!vc.is_none()) o.vc = rule_arg(vc, "vc", analysis::vc_rule);
+    if (!cycles.is_none()) o.cycles = static_cast<int>(rule_arg(cycles, "cycles", analysis::cycles_rule));
+    if (!analysed.is_none()) o.analysed = static_cast<int>(rule_arg(analysed, "analysed", analysis::analysed_rule));
     return run(py::none(), [&](Call&) { return analysis::frf_stepped_sine(h.p, outputs, fv, o); });
   }, py::arg("model"), py::arg("outputs"), py::arg("f"), py::kw_only(), py::arg("options") = py::none(),
         py::arg("vc") = py::none(), py::arg("cycles") = py::none(), py::arg("analysed") = py::none(),
@@ -684,11 +683,14 @@ void bind_analysis(py::module_& m) {
       .def_property_readonly("mean_uplift", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.mean_uplift; }); })
       .def_property_readonly("growth", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.growth; }); })
       .def_property_readonly("stable", [](const CatenaryResponses& c) { return column(c.r, [](auto& x) { return x.stable(); }); });
-  m.def("catenary_response", [](const py::object& catenary, const py::object& fp, double force, double settle,
-                                int periods) {
+  m.def("catenary_response", [](const py::object& catenary, const py::object& fp, const py::object& force_arg,
+                                const py::object& settle_arg, const py::object& periods_arg) {
     catenary::LumpedCatenary store;
     const catenary::LumpedCatenary& cat = lumped_arg(catenary, store);
     const std::vector<double> f = doubles(fp);
+    const double force = rule_arg(force_arg, "force", analysis::force_rule);  // as --force
+    const double settle = rule_arg(settle_arg, "settle", analysis::settle_rule);
+    const int periods = static_cast<int>(rule_arg(periods_arg, "periods", analysis::periods_rule));
     return run(py::none(), [&](Call&) { return CatenaryResponses{analysis::catenary_response(cat, force, f, settle, periods)}; });
   }, py::arg("catenary"), py::arg("fp"), py::arg("force") = 70.0, py::arg("settle") = 60.0, py::arg("periods") = 10,
         "The lumped catenary alone under a constant upward force (N): steady acceleration amplitude against the "

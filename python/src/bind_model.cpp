@@ -130,14 +130,9 @@ solve::IntegratorOptions integrator_arg(const py::object& base, const py::object
   solve::IntegratorOptions o = base.is_none() ? solve::IntegratorOptions{} : base.cast<solve::IntegratorOptions>();
   if (!method.is_none()) o.method = solve::parse_method(method.cast<std::string>());
   // Given or from `base`: the CLI's rule and words (--rtol, --atol, --max-step).
-  auto rule = [](const py::object& v, double& x, const char* name, const NumberRule& r) {
-    if (!v.is_none()) x = v.cast<double>();
-    const std::string text = v.is_none() ? fmt::format("{}", x) : py::str(v).cast<std::string>();
-    if (const std::string e = r.check(x, text); !e.empty()) throw InvalidArgument(std::string(name) + ": " + e);
-  };
-  rule(rtol, o.rtol, "rtol", solve::rtol_rule);
-  rule(atol, o.atol, "atol", solve::atol_rule);
-  rule(max_step, o.max_step, "max_step", solve::max_step_rule);
+  o.rtol = rule_arg(rtol, "rtol", solve::rtol_rule, o.rtol);
+  o.atol = rule_arg(atol, "atol", solve::atol_rule, o.atol);
+  o.max_step = rule_arg(max_step, "max_step", solve::max_step_rule, o.max_step);
   return o;
 }
 

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "inerta/catenary/catenary.hpp"
+#include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/pantograph/pantograph.hpp"
@@ -222,6 +223,25 @@ inline std::string path_arg(const py::object& o) {
 }
 /// A sequence of numbers (list, tuple, NumPy array, scalar) as a vector.
 std::vector<double> doubles(const py::object& o);
+
+/// A number argument checked by the rule of the CLI option it mirrors: the same message, after the
+/// argument's name ("t_end: 0 is out of range; expected > 0 s, at most 1e7 s"); `text` of the
+/// value as Python writes it. A count (CountRule) must be a whole number in its range.
+template <class Rule>
+double rule_arg(const py::object& v, const char* name, const Rule& rule) {
+  const double x = v.cast<double>();
+  if (const std::string e = rule.check(x, py::str(v).cast<std::string>()); !e.empty())
+    throw InvalidArgument(std::string(name) + ": " + e);
+  return x;
+}
+/// The same for an optional argument: None keeps `fallback` (which is checked as well: it may come
+/// from an options object the user filled).
+template <class Rule>
+double rule_arg(const py::object& v, const char* name, const Rule& rule, double fallback) {
+  if (!v.is_none()) return rule_arg(v, name, rule);
+  require(rule, fallback, name);
+  return fallback;
+}
 
 // ---- Registration of the parts of the module (one file each) -------------------------------------
 void bind_errors(py::module_& m);

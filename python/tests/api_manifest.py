@@ -368,7 +368,11 @@ EXCLUDED = {
                               "simulate_coupled, run_speed and sweep run it through Catenary",
     "catenary::FeLoad": "argument of FeIntegrator::step (see there)",
     "NumberRule": "an argument's rule shared by a CLI option and its Python argument; Python applies it (simulate's "
-                  "t_end, sample) and raises InvalidArgument with its message",
+                  "t_end, sample, frf's vc, catenary_response's force, …) and raises InvalidArgument with its message",
+    "CountRule": "the same for counts (cycles, analysed, spans, periods)",
+    "require": "the library's own use of a rule on an options field; Python sees its InvalidArgument",
+    "analysis::check": "applied by frf_stepped_sine and simulate_coupled to their options (SteppedSine, "
+                       "CoupledOptions) before running; Python sees its InvalidArgument",
     "catenary::FeLineSolver": "a run's structural solver of the line (a per-step workspace inside the coupling); "
                               "Python chooses it with FeCatenaryData.solver",
     "catenary::make_direct_solver": "makes an FeLineSolver (see there)",

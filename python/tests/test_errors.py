@@ -111,3 +111,65 @@ def test_network_error_has_the_column():
         inerta.assign(inerta.parse("k|c"), {"k": 1})
     with pytest.raises(ValueError):  # a NetworkError is a ValueError
         inerta.resolve("k|c-b")
+
+
+# Each Python argument that mirrors a CLI option: the CLI's rule and message (the library's rule
+# object, inerta::NumberRule/CountRule), checked before any computation.
+M3 = model("pantograph-3mass.yaml")
+CAT = model("catenary.yaml")
+MIRRORED = [
+    # (python function, keyword, value, CLI arguments up to the option, option, option's text)
+    ("frf", "vc", -1, ["frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine"], "--vc", "-1"),
+    ("frf", "vc", float("nan"), ["frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine"], "--vc", "nan"),
+    ("frf", "cycles", 0, ["frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine"], "--cycles", "0"),
+    ("frf", "cycles", 2.5, ["frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine"], "--cycles", "2.5"),
+    ("frf", "analysed", 0, ["frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine"], "--analysed", "0"),
+    ("coupled", "spans", 0, ["simulate", M3, "--catenary", CAT, "--speed", "200"], "--spans", "0"),
+    ("coupled", "spans", 10001, ["simulate", M3, "--catenary", CAT, "--speed", "200"], "--spans", "10001"),
+    ("coupled", "t_end", -1, ["simulate", M3, "--catenary", CAT, "--speed", "200"], "--t-end", "-1"),
+    ("coupled", "t_end", float("nan"), ["simulate", M3, "--catenary", CAT, "--speed", "200"], "--t-end", "nan"),
+    ("coupled", "sample", 0, ["simulate", M3, "--catenary", CAT, "--speed", "200"], "--sample", "0"),
+    ("response", "force", float("inf"), ["catenary-response", CAT, "--fp", "0.5:0.1:0.6"], "--force", "inf"),
+    ("response", "force", 2e9, ["catenary-response", CAT, "--fp", "0.5:0.1:0.6"], "--force", "2e9"),
+]
+
+
+def call(fn, kw, value, lumped):
+    m3 = inerta.load_model(M3)
+    if fn == "frf":
+        return inerta.frf_stepped_sine(m3, ["y_head"], [1.0], **{kw: value})
+    if fn == "coupled":
+        return inerta.simulate_coupled(m3, lumped, 50.0, **{kw: value})
+    return inerta.catenary_response(lumped, [0.5], **{kw: value})
+
+
+@pytest.mark.parametrize("fn,kw,value,args,option,text", MIRRORED)
+def test_an_argument_is_refused_with_its_cli_options_message(cli, lumped, fn, kw, value, args, option, text):
+    r = cli(*args, option, text, check=False)
+    assert r.returncode == 105, r.stderr
+    cli_message = r.stderr.splitlines()[0]
+    assert cli_message.startswith(option + ": ")
+    with pytest.raises(inerta.InvalidArgument) as e:
+        call(fn, kw, value, lumped)
+    assert str(e.value).startswith(kw + ": ")
+    py, cl = str(e.value).split(": ", 1)[1], cli_message.split(": ", 1)[1]
+    assert py.split("; expected")[-1] == cl.split("; expected")[-1]
+    assert ("out of range" in py) == ("out of range" in cl) and ("whole number" in py) == ("whole number" in cl)
+    assert ("finite" in py) == ("finite" in cl)
+
+
+@pytest.mark.parametrize("fn,kw,value,message", [
+    ("frf", "analysed", 200, "analysed: 200 is more than cycles (100); expected 1 … cycles"),
+    ("coupled", "window_spans", 0, "window_spans: 0 is out of range; expected 1 … 10000"),
+    ("response", "settle", -1, "settle: -1 is out of range; expected >= 0 s"),
+    ("response", "periods", 0, "periods: 0 is out of range; expected 1 … 100000"),
+])
+def test_arguments_without_a_cli_option_follow_the_library_rule(lumped, fn, kw, value, message):
+    with pytest.raises(inerta.InvalidArgument, match=re.escape(message)):
+        call(fn, kw, value, lumped)
+
+
+def test_analysed_beyond_cycles_has_the_same_words_in_the_cli(cli):
+    r = cli("frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine", "--cycles", "10", "--analysed", "20", check=False)
+    assert r.returncode == 105
+    assert r.stderr.splitlines()[0] == "--analysed: 20 is more than cycles (10); expected 1 … cycles"

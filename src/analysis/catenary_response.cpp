@@ -15,6 +15,9 @@ namespace inerta::analysis {
 
 std::vector<CatenaryResponse> catenary_response(const catenary::LumpedCatenary& cat, double force,
                                                 const std::vector<double>& fp, double settle, int periods) {
+  require(force_rule, force, "force");
+  require(settle_rule, settle, "settle");
+  require(periods_rule, periods, "periods");
   std::vector<CatenaryResponse> out(fp.size());
   tbb::parallel_for(std::size_t{0}, fp.size(), [&](std::size_t k) {
     CatenaryResponse& r = out[k];

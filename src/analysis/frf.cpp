@@ -114,8 +114,18 @@ Frf frf_linear(const pantograph::Pantograph& p, const std::vector<std::string>& 
   return out;
 }
 
+void check(const SteppedSine& o) {
+  require(vc_rule, o.vc, "vc");
+  require(cycles_rule, o.cycles, "cycles");
+  require(analysed_rule, o.analysed, "analysed");
+  if (o.analysed > o.cycles)
+    throw InvalidArgument(fmt::format("analysed: {} is more than cycles ({}); expected 1 … cycles", o.analysed, o.cycles));
+  require(samples_per_cycle_rule, o.samples_per_cycle, "samples_per_cycle");
+}
+
 Frf frf_stepped_sine(const pantograph::Pantograph& p, const std::vector<std::string>& outputs,
                      const std::vector<double>& f, const SteppedSine& o) {
+  check(o);
   const mbs::Model& rig = p.model;
   const int jr = rig_joint(p);
   const mbs::Output Fo = p.rig_force();

@@ -80,15 +80,22 @@ std::vector<OutputSummary> summarise(const TimeHistory& h, double from) {
   return out;
 }
 
+void check(const CoupledOptions& o) {
+  require(spans_rule, o.spans, "spans");
+  require(window_spans_rule, o.window_spans, "window_spans");
+  if (!(o.t_end <= 0)) require(t_end_rule, o.t_end, "t_end");
+  if (!(o.sample <= 0)) require(sample_rule, o.sample, "sample");
+}
+
 CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>& pantographs,
                                    const catenary::Catenary& catenary, double speed, const CoupledOptions& o,
                                    const TimeProgress& progress) {
+  check(o);
   auto sys = catenary.couple(pantographs, speed);
   CoupledSimulation r;
   r.speed = speed;
   r.span = sys->span();
   const double T = r.span / speed;
-  if (o.t_end <= 0 && o.spans < 1) throw InvalidArgument("simulate: at least one span (or a positive t_end)");
   const bool line = std::isfinite(sys->line_length());  // a finite line: to its end, statistics over its section
   r.t_end = o.t_end > 0 ? o.t_end : line ? sys->end_time() : o.spans * T;
   if (line && r.t_end > sys->end_time() + 1e-9)

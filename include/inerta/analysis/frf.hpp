@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "inerta/error.hpp"
+
 #include "inerta/mbs/model.hpp"
 #include "inerta/pantograph/pantograph.hpp"
 #include "inerta/solve/integrator.hpp"
@@ -31,6 +33,15 @@ struct SteppedSine {
   int samples_per_cycle = 100;
   solve::IntegratorOptions integrator;
 };
+
+/// The rules of SteppedSine's fields (the CLI's --vc, --cycles, --analysed and Python's vc, cycles, analysed).
+inline constexpr NumberRule vc_rule{1e-300, 1e300, "> 0 m/s"};
+inline constexpr CountRule cycles_rule{1, 100000};
+inline constexpr CountRule analysed_rule{1, 100000};
+inline constexpr CountRule samples_per_cycle_rule{4, 100000};  ///< 4: a sine is still resolved
+/// InvalidArgument "vc: …", "cycles: …", "analysed: …" (also "analysed: 60 is more than cycles (50)"),
+/// "samples_per_cycle: …".
+void check(const SteppedSine& options);
 
 /// Stepped-sine FRF by time simulation of the nonlinear model (frequencies in parallel, oneTBB).
 Frf frf_stepped_sine(const pantograph::Pantograph& rig, const std::vector<std::string>& outputs, const std::vector<double>& f,

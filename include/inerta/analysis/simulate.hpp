@@ -72,6 +72,12 @@ struct CoupledOptions {
   int window_spans = 2;  ///< contact statistics over the last window_spans spans
   solve::IntegratorOptions integrator;
 };
+/// The rules of CoupledOptions (the CLI's --spans, --t-end, --sample; Python's simulate_coupled).
+inline constexpr CountRule spans_rule{1, 10000};
+inline constexpr CountRule window_spans_rule{1, 10000};
+/// InvalidArgument "spans: …", "window_spans: …", and "t_end: …", "sample: …" for a value that is
+/// set (not ≤ 0) but breaks t_end_rule, sample_rule (NaN is not unset).
+void check(const CoupledOptions& options);
 
 /// Contact-force statistics of one contact over the window, and where contact was first lost.
 struct ContactSummary {
