@@ -137,9 +137,13 @@ MIRRORED = [
 def call(fn, kw, value, lumped):
     m3 = inerta.load_model(M3)
     if fn == "frf":
+        if kw == "f":
+            return inerta.frf_stepped_sine(m3, ["y_head"], [1.0, value])
         return inerta.frf_stepped_sine(m3, ["y_head"], [1.0], **{kw: value})
     if fn == "coupled":
         return inerta.simulate_coupled(m3, lumped, 50.0, **{kw: value})
+    if kw == "fp":
+        return inerta.catenary_response(lumped, [0.5, value])
     return inerta.catenary_response(lumped, [0.5], **{kw: value})
 
 
@@ -163,6 +167,8 @@ def test_an_argument_is_refused_with_its_cli_options_message(cli, lumped, fn, kw
     ("coupled", "window_spans", 0, "window_spans: 0 is out of range; expected 1 … 10000"),
     ("response", "settle", -1, "settle: -1 is out of range; expected >= 0 s"),
     ("response", "periods", 0, "periods: 0 is out of range; expected 1 … 100000"),
+    ("frf", "f", 0.0, "f: 0 is out of range; expected > 0 Hz, at most 1e6 Hz"),
+    ("response", "fp", float("nan"), "fp: expected a finite number, got 'nan'"),
 ])
 def test_arguments_without_a_cli_option_follow_the_library_rule(lumped, fn, kw, value, message):
     with pytest.raises(inerta.InvalidArgument, match=re.escape(message)):
@@ -173,3 +179,16 @@ def test_analysed_beyond_cycles_has_the_same_words_in_the_cli(cli):
     r = cli("frf", M3, "--outputs", "y_head", "--freq", "1:1:2", "--method", "stepped-sine", "--cycles", "10", "--analysed", "20", check=False)
     assert r.returncode == 105
     assert r.stderr.splitlines()[0] == "--analysed: 20 is more than cycles (10); expected 1 … cycles"
+
+
+@pytest.mark.parametrize("field,value,message", [
+    ("max_spans", 0, "max_spans: 0 is out of range; expected 1 … 10000"),
+    ("window_spans", 0, "window_spans: 0 is out of range; expected 1 … 10000"),
+    ("samples_per_span", 1, "samples_per_span: 1 is out of range; expected 10 … 1000000"),
+])
+def test_run_options_are_refused_before_the_run_not_crashed_on(lumped, field, value, message):
+    m3 = inerta.load_model(M3)
+    o = inerta.RunOptions(**{field: value})
+    for run in (lambda: inerta.run_speed(m3, lumped, 50.0, options=o), lambda: inerta.sweep(m3, lumped, [50.0], options=o)):
+        with pytest.raises(inerta.InvalidArgument, match=re.escape(message)):
+            run()

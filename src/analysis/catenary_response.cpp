@@ -1,4 +1,5 @@
 #include "inerta/analysis/catenary_response.hpp"
+#include "inerta/analysis/frf.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -18,6 +19,7 @@ std::vector<CatenaryResponse> catenary_response(const catenary::LumpedCatenary& 
   require(force_rule, force, "force");
   require(settle_rule, settle, "settle");
   require(periods_rule, periods, "periods");
+  for (double f : fp) require(frequency_rule, f, "fp");
   std::vector<CatenaryResponse> out(fp.size());
   tbb::parallel_for(std::size_t{0}, fp.size(), [&](std::size_t k) {
     CatenaryResponse& r = out[k];

@@ -79,7 +79,20 @@ SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
 }
 }  // namespace
 
+void check(const RunOptions& o) {
+  static constexpr CountRule spans{1, 10000}, settled{1, 1000}, samples{10, 1000000};
+  require(spans, o.min_spans, "min_spans");
+  require(spans, o.max_spans, "max_spans");
+  if (o.max_spans < o.min_spans)
+    throw InvalidArgument(fmt::format("max_spans: {} is less than min_spans ({})", o.max_spans, o.min_spans));
+  require(settled, o.settled_spans, "settled_spans");
+  require(spans, o.window_spans, "window_spans");
+  require(samples, o.samples_per_span, "samples_per_span");
+  require(NumberRule{0, 1, "0 … 1"}, o.tolerance, "tolerance");
+}
+
 SpeedResult run_speed(catenary::Coupled& sys, const RunOptions& o) {
+  check(o);
   if (std::isfinite(sys.line_length())) return run_line(sys, o);
   const double T = sys.span() / sys.speed();  // one span
   const int nc = sys.n_contacts();
@@ -136,6 +149,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
   std::exception_ptr error;
   std::mutex mutex;
   int done = 0;
+  check(options);                 // before any work
   catenary.prepare(pantographs);  // once, before the runs (a finite-element line's modes)
   tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t i) {
     try {

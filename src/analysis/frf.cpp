@@ -37,6 +37,7 @@ int rig_joint(const pantograph::Pantograph& p) {
 }  // namespace
 
 Frf frf_linear(const pantograph::Pantograph& p, const std::vector<std::string>& outputs, const std::vector<double>& f) {
+  for (double fk : f) require(frequency_rule, fk, "f");
   const mbs::Model& rig = p.model;
   const int n = rig.n_coords(), m = rig.n_constraints(), nz = rig.n_states();
   const int jr = rig_joint(p), row = rig.joints[static_cast<std::size_t>(jr)].row;
@@ -126,6 +127,7 @@ void check(const SteppedSine& o) {
 Frf frf_stepped_sine(const pantograph::Pantograph& p, const std::vector<std::string>& outputs,
                      const std::vector<double>& f, const SteppedSine& o) {
   check(o);
+  for (double fk : f) require(frequency_rule, fk, "f");
   const mbs::Model& rig = p.model;
   const int jr = rig_joint(p);
   const mbs::Output Fo = p.rig_force();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "inerta/analysis/catenary_response.hpp"
+#include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
 #include "inerta/analysis/simulate.hpp"
 #include "inerta/error.hpp"
@@ -77,6 +78,26 @@ TEST(ArgumentRules, TheCatenaryResponseChecksItsArgumentsBeforeRunning) {
   EXPECT_EQ(refusal([&] { analysis::catenary_response(cat, std::nan(""), {0.5}); }), "force: expected a finite number, got 'nan'");
   EXPECT_EQ(refusal([&] { analysis::catenary_response(cat, 70, {0.5}, -1); }), "settle: -1 is out of range; expected >= 0 s");
   EXPECT_EQ(refusal([&] { analysis::catenary_response(cat, 70, {0.5}, 1, 0); }), "periods: 0 is out of range; expected 1 … 100000");
+  EXPECT_EQ(refusal([&] { analysis::catenary_response(cat, 70, {0.5, 0.0}); }), "fp: 0 is out of range; expected > 0 Hz, at most 1e6 Hz");
+}
+
+TEST(ArgumentRules, RunOptionsAreCheckedBeforeAnyRun) {
+  analysis::RunOptions o;
+  EXPECT_EQ(refusal([&] { analysis::check(o); }), "");
+  o.max_spans = 0;  // once a division by zero (a crash) in the window's statistics
+  EXPECT_EQ(refusal([&] { analysis::check(o); }), "max_spans: 0 is out of range; expected 1 … 10000");
+  o = {};
+  o.min_spans = 8, o.max_spans = 7;
+  EXPECT_EQ(refusal([&] { analysis::check(o); }), "max_spans: 7 is less than min_spans (8)");
+  o = {};
+  o.tolerance = std::nan("");
+  EXPECT_EQ(refusal([&] { analysis::check(o); }), "tolerance: expected a finite number, got 'nan'");
+  o = {};
+  o.samples_per_span = 5;
+  EXPECT_EQ(refusal([&] { analysis::check(o); }), "samples_per_span: 5 is out of range; expected 10 … 1000000");
+  o = {};
+  o.settled_spans = 0;
+  EXPECT_EQ(refusal([&] { analysis::check(o); }), "settled_spans: 0 is out of range; expected 1 … 1000");
 }
 
 }  // namespace test_analysis_argument_rules

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "inerta/catenary/catenary.hpp"
+#include "inerta/error.hpp"
 #include "inerta/mbs/model.hpp"
 #include "inerta/solve/integrator.hpp"
 
@@ -29,6 +30,9 @@ struct RunOptions {
   solve::IntegratorOptions integrator;
   bool fixed_spans = false;  ///< run exactly min_spans spans (no convergence test)
 };
+/// The rules of RunOptions: spans 1 … 10000 (max_spans ≥ min_spans), settled_spans 1 … 1000,
+/// tolerance 0 … 1, samples_per_span 10 … 1e6. InvalidArgument "max_spans: 0 is out of range; …".
+void check(const RunOptions& options);
 
 struct SpeedResult {
   double speed = 0;

@@ -34,6 +34,9 @@ struct SteppedSine {
   solve::IntegratorOptions integrator;
 };
 
+/// Each frequency of an FRF or a pumping frequency: InvalidArgument "f: 0 is out of range; …".
+inline constexpr NumberRule frequency_rule{1e-300, 1e6, "> 0 Hz, at most 1e6 Hz"};
+
 /// The rules of SteppedSine's fields (the CLI's --vc, --cycles, --analysed and Python's vc, cycles, analysed).
 inline constexpr NumberRule vc_rule{1e-300, 1e300, "> 0 m/s"};
 inline constexpr CountRule cycles_rule{1, 100000};
