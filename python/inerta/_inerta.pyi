@@ -1389,6 +1389,7 @@ class LinearSystem:
     inputs: list[str]
     outputs: list[str]
     motion: list[bool]
+    joint: list[int]
     B0: FloatArray
     B1: FloatArray
     B2: FloatArray

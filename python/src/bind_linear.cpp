@@ -18,6 +18,7 @@ void bind_linear(py::module_& m) {
       .def_readonly("inputs", &mbs::LinearSystem::inputs)
       .def_readonly("outputs", &mbs::LinearSystem::outputs)
       .def_readonly("motion", &mbs::LinearSystem::motion, "per input: a driving joint (True) or a load")
+      .def_readonly("joint", &mbs::LinearSystem::joint, "per input: its driving joint's index in model.joints, or -1 for a load")
       .def_readonly("B0", &mbs::LinearSystem::B0)
       .def_readonly("B1", &mbs::LinearSystem::B1)
       .def_readonly("B2", &mbs::LinearSystem::B2)

@@ -70,6 +70,7 @@ def test_the_linear_building_blocks_agree():
     assert inerta.state_names(qc, lin) == ["wheel.y", "body.y", "wheel.y_dot", "body.y_dot"]
     sys = inerta.linear_system(qc, x, ["road"], ["travel"])
     assert np.allclose(sys.lin.A, lin.A, rtol=1e-6, atol=1e-6)
+    assert sys.motion == [True] and sys.joint == [[j.name for j in qc.joints].index("road")]
     und = inerta.undamped_modes(qc, lin)
     # det(K − ω² M) = 0 for M = diag(m_u, m_s), K = [[k_s + k_t, −k_s], [−k_s, k_s]]
     ms, mu, ks, kt = 250.0, 35.0, 16000.0, 160000.0

@@ -41,7 +41,7 @@ StateSpace state_space(const mbs::Model& model, const mbs::State& x, const std::
   ss.outputs = outputs;
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     std::string unit = "N or N·m";
-    if (s.motion[k]) unit = model.joints[static_cast<std::size_t>(model.find_joint(inputs[k]))].component == 2 ? "rad" : "m";
+    if (s.joint[k] >= 0) unit = model.joints[static_cast<std::size_t>(s.joint[k])].component == 2 ? "rad" : "m";
     ss.input_units.push_back(unit);
   }
   ss.A = s.lin.A;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -213,7 +214,15 @@ LinearSystem linearise(const Model& model, const State& x, const std::vector<std
   }
   sys.inputs = inputs;
   sys.outputs = outputs;
-  for (const In& k : in) sys.motion.push_back(k.joint >= 0);
+  for (const In& k : in) sys.motion.push_back(k.joint >= 0), sys.joint.push_back(k.joint);
+  // A load enters linearly and is stepped by ±1 (below): its two perturbed elements are made once.
+  std::vector<std::array<std::shared_ptr<const ForceElement>, 2>> stepped(in.size());
+  for (std::size_t k = 0; k < in.size(); ++k)
+    if (in[k].force >= 0)
+      for (int sign : {0, 1}) {
+        const ForceElement& f = *model.forces[static_cast<std::size_t>(in[k].force)];
+        stepped[k][static_cast<std::size_t>(sign)] = f.with_value(TimeFunction::constant(in[k].f0 + (sign ? 1.0 : -1.0)));
+      }
 
   // F(V) = [Ẋ; y] over V = [X; u; u̇; ü].
   const int ni = static_cast<int>(in.size()), no = static_cast<int>(out.size());
@@ -222,9 +231,9 @@ LinearSystem linearise(const Model& model, const State& x, const std::vector<std
     for (int k = 0; k < ni; ++k) {
       const In& ik = in[static_cast<std::size_t>(k)];
       const double u = V[S + k], ud = V[S + ni + k], udd = V[S + 2 * ni + k];
-      if (ik.force >= 0) {
+      if (ik.force >= 0) {  // u ∈ {−1, 0, 1}: the element made for that step, or the model's own
         mw.forces[static_cast<std::size_t>(ik.force)] =
-            model.forces[static_cast<std::size_t>(ik.force)]->with_value(TimeFunction::constant(ik.f0 + u));
+            u == 0 ? model.forces[static_cast<std::size_t>(ik.force)] : stepped[static_cast<std::size_t>(k)][u > 0 ? 1 : 0];
       } else {
         const Joint& j0 = model.joints[static_cast<std::size_t>(ik.joint)];
         Joint& jw = mw.joints[static_cast<std::size_t>(ik.joint)];

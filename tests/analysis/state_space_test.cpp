@@ -70,6 +70,7 @@ TEST(StateSpace, OneDofOscillatorIsTheTextbookModel) {
   EXPECT_LT((ss.D - D).norm(), 1e-9);
   EXPECT_FALSE(ss.has_rate_feedthrough());
   EXPECT_EQ(ss.input_units[0], "N or N·m");
+  EXPECT_EQ(ss.system.joint, std::vector<int>{-1});  // a load: no driving joint
 }
 
 TEST(StateSpace, QuarterCarRoadInputMatchesTheHandDerivedMatrices) {
@@ -91,6 +92,7 @@ TEST(StateSpace, QuarterCarRoadInputMatchesTheHandDerivedMatrices) {
   EXPECT_LT((ss.D - D).norm(), 1e-6 * kt);
   EXPECT_EQ(ss.T0.norm(), 0.0);
   EXPECT_EQ(ss.input_units[0], "m");
+  EXPECT_EQ(ss.system.joint, std::vector<int>{quarter_car().find_joint("road")});  // the handle, found once
 }
 
 TEST(StateSpace, ADrivenDamperShiftsTheStateAndKeepsTheExactTransferFunction) {

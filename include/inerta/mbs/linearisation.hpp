@@ -69,6 +69,8 @@ struct LinearSystem {
   LinearModel lin;
   std::vector<std::string> inputs, outputs;
   std::vector<bool> motion;  ///< per input: a driving joint (true) or a load (false)
+  /// Per input: the index of its driving joint in model.joints, or −1 for a load.
+  std::vector<int> joint;
   Eigen::MatrixXd B0, B1, B2, Cy, D0, D1, D2;
 };
 
