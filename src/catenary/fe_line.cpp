@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/error.hpp"
@@ -133,29 +135,54 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   // the masts; then the messenger under its weight and the dropper tensions, with w_m = 0 at the masts.
   // The droppers' own weight depends on their length: iterate (converges in a few passes).
   const int nd = static_cast<int>(droppers_.size()), nm = static_cast<int>(mast_nodes.size());
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt_c(sparse(tk_alone[1])), llt_m(sparse(tk_alone[0]));
-  if (llt_c.info() != Eigen::Success || llt_m.info() != Eigen::Success)
-    throw NumericalError("finite-element catenary: the wire stiffness matrix is singular (check tensions)");
   std::vector<int> cdofs, mdofs;  // constrained w DOFs: contact wire at droppers then masts; messenger at masts
   for (const Dropper& dr : droppers_) cdofs.push_back(dr.dof_c);
   for (int n : mast_nodes) cdofs.push_back(dof(1, n, 0)), mdofs.push_back(dof(0, n, 0));
-  auto influence = [&](const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>& llt, const std::vector<int>& dofs) {
-    // No constrained DOF (a line whose masts are all its fixed ends): no columns, and no solve (Eigen's
-    // permutation of an n × 0 right-hand side offsets a null pointer: UBSan, docs/fuzzing.md).
-    if (dofs.empty()) return Eigen::MatrixXd(n_dofs_, 0);
-    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n_dofs_, static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t j = 0; j < dofs.size(); ++j) E(dofs[j], static_cast<Eigen::Index>(j)) = 1;
-    return Eigen::MatrixXd(llt.solve(E));
+  // K w = f + Σ e_j z_j with w_j prescribed at the constrained DOFs j: eliminate them (K_FF w_F =
+  // f_F − K_FC w_C, one sparse factor of K_FF, work linear in the line) and the reactions z_j are
+  // (K w − f)_j. The same solution as the influence form w = K⁻¹(f + E z), without its dense n × #j.
+  struct Constrained {
+    Eigen::SparseMatrix<double> K;  // the whole wire
+    std::vector<int> fixed, free_of;  // the constrained DOFs; per DOF its index among the free ones, or −1
+    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
+    Constrained(Eigen::SparseMatrix<double> k, std::vector<int> fx) : K(std::move(k)), fixed(std::move(fx)) {
+      free_of.assign(static_cast<std::size_t>(K.rows()), 0);
+      for (int j : fixed) free_of[static_cast<std::size_t>(j)] = -1;
+      int nf = 0;
+      for (int& i : free_of)
+        if (i == 0) i = nf++;
+      Triplets t;
+      for (int c = 0; c < K.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(K, c); it; ++it)
+          if (free_of[static_cast<std::size_t>(it.row())] >= 0 && free_of[static_cast<std::size_t>(it.col())] >= 0)
+            t.emplace_back(free_of[static_cast<std::size_t>(it.row())], free_of[static_cast<std::size_t>(it.col())], it.value());
+      Eigen::SparseMatrix<double> kff(nf, nf);
+      kff.setFromTriplets(t.begin(), t.end());
+      llt.compute(kff);
+    }
+    // w with w_j = target_j at the constrained DOFs, and the reactions z (in the order of `fixed`).
+    std::pair<Eigen::VectorXd, Eigen::VectorXd> solve(const Eigen::VectorXd& f, const Eigen::VectorXd& target) const {
+      Eigen::VectorXd w = Eigen::VectorXd::Zero(K.rows());
+      for (std::size_t j = 0; j < fixed.size(); ++j) w[fixed[j]] = target[static_cast<Eigen::Index>(j)];
+      const Eigen::VectorXd kc = K * w;
+      Eigen::VectorXd rhs(llt.rows());
+      for (Eigen::Index i = 0; i < K.rows(); ++i)
+        if (const int k = free_of[static_cast<std::size_t>(i)]; k >= 0) rhs[k] = f[i] - kc[i];
+      const Eigen::VectorXd wf = llt.solve(rhs);
+      for (Eigen::Index i = 0; i < K.rows(); ++i)
+        if (const int k = free_of[static_cast<std::size_t>(i)]; k >= 0) w[i] = wf[k];
+      const Eigen::VectorXd r = K * w - f;
+      Eigen::VectorXd z(static_cast<Eigen::Index>(fixed.size()));
+      for (std::size_t j = 0; j < fixed.size(); ++j) z[static_cast<Eigen::Index>(j)] = r[fixed[j]];
+      return {std::move(w), std::move(z)};
+    }
   };
-  auto rows = [](const Eigen::MatrixXd& G, const std::vector<int>& dofs) {
-    Eigen::MatrixXd P(dofs.size(), G.cols());
-    for (std::size_t i = 0; i < dofs.size(); ++i) P.row(static_cast<Eigen::Index>(i)) = G.row(dofs[i]);
-    return P;
-  };
-  const Eigen::MatrixXd Gc = influence(llt_c, cdofs), Gm = influence(llt_m, mdofs);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> Pc(rows(Gc, cdofs)), Pm(rows(Gm, mdofs));
+  const Constrained con_c(sparse(tk_alone[1]), cdofs), con_m(sparse(tk_alone[0]), mdofs);
+  if (con_c.llt.info() != Eigen::Success || con_m.llt.info() != Eigen::Success)
+    throw NumericalError("finite-element catenary: the wire stiffness matrix is singular (check tensions)");
   Eigen::VectorXd target = Eigen::VectorXd::Zero(nd + nm);
   for (int k = 0; k < nd; ++k) target[k] = -d_.presag[static_cast<std::size_t>(k) % d_.presag.size()];
+  const Eigen::VectorXd zero_m = Eigen::VectorXd::Zero(nm);
   std::vector<double> len(static_cast<std::size_t>(nd), d_.encumbrance);
   Eigen::VectorXd wc, wm, T;
   for (int pass = 0; pass < 20; ++pass) {
@@ -165,21 +192,11 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
       fc[droppers_[k].dof_c] -= d_.clamp_mass_contact * d_.gravity + half;
       fm[droppers_[k].dof_m] -= d_.clamp_mass_messenger * d_.gravity + half;
     }
-    const Eigen::VectorXd wc0 = llt_c.solve(fc);
-    Eigen::VectorXd rhs(nd + nm);
-    for (int i = 0; i < nd + nm; ++i) rhs[i] = target[i] - wc0[cdofs[static_cast<std::size_t>(i)]];
-    const Eigen::VectorXd z = Pc.solve(rhs);  // T_d, then registration forces
-    T = z.head(nd);
-    wc = wc0 + Gc * z;
-    Eigen::VectorXd fm2 = fm;
-    for (int k = 0; k < nd; ++k) fm2[droppers_[k].dof_m] -= T[k];
-    const Eigen::VectorXd wm0 = llt_m.solve(fm2);
-    wm = wm0;
-    if (nm > 0) {
-      Eigen::VectorXd rm(nm);
-      for (int i = 0; i < nm; ++i) rm[i] = -wm0[mdofs[static_cast<std::size_t>(i)]];
-      wm += Gm * Pm.solve(rm);
-    }
+    Eigen::VectorXd z;
+    std::tie(wc, z) = con_c.solve(fc, target);
+    T = z.head(nd);  // dropper tensions (then the registration forces)
+    for (int k = 0; k < nd; ++k) fm[droppers_[k].dof_m] -= T[k];
+    wm = con_m.solve(fm, zero_m).first;
     double change = 0;
     for (int k = 0; k < nd; ++k) {
       const double l = d_.encumbrance + wm[droppers_[k].dof_m] - wc[droppers_[k].dof_c];
