@@ -391,6 +391,16 @@ void write_line_files(std::FILE* info, const std::string& out, const analysis::C
   fmt::print(info, "wrote {0}.supports.csv (support uplift, m) and {0}.psd.csv (contact-force PSD, N²/Hz)\n", stem);
 }
 
+// A run whose estimate (Catenary::estimated_seconds) is beyond a minute says so before it starts.
+void note_long_run(double seconds, const std::string& what) {
+  if (!(seconds > 60)) return;
+  const std::string t = seconds < 3600 ? fmt::format("{:.0f} min", seconds / 60) : fmt::format("{:.1f} h", seconds / 3600);
+  fmt::print(stderr,
+             "note: {} is estimated at about {} on a 2-core machine (docs/benchmarks.md \"Run-time estimate\"); "
+             "Ctrl-C stops it and leaves no partial output file\n",
+             what, t);
+}
+
 int cmd_simulate(const SimulateArgs& a) {
   solve::IntegratorOptions opt;
   opt.method = solve::parse_method(a.integrator);
@@ -428,6 +438,7 @@ int cmd_simulate(const SimulateArgs& a) {
     co.sample = a.sample;
     co.integrator = opt;
     const double v = to_ms(a.speed, a.cat.unit);
+    note_long_run(cat.catenary->estimated_seconds(train, v, co.t_end), "this run");
     const analysis::CoupledSimulation r = analysis::simulate_coupled(train, *cat.catenary, v, co, progress);
     clear_progress();
     std::vector<const analysis::TimeHistory*> hs;
@@ -596,6 +607,9 @@ int cmd_sweep(const SweepArgs& a) {
   o.integrator.method = solve::parse_method(a.integrator);
   o.integrator.rtol = a.rtol;
   o.integrator.atol = a.atol;
+  if (a.method != "periodic")
+    note_long_run(analysis::estimated_sweep_seconds({{panto, 0.0, cat.contact}}, *cat.catenary, v),
+                  fmt::format("this sweep of {} speeds", v.size()));
   const bool tty = isatty(STDOUT_FILENO);
   const auto wall0 = std::chrono::steady_clock::now();
   fmt::print("sweep: {} speeds, {} contact, {}, suspension {}\n", v.size(), catenary::kind_name(cat.contact.kind),
@@ -1029,6 +1043,16 @@ int cmd_optimise(const OptimiseArgs& a) {
                study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed,
                study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path");
   const auto wall0 = std::chrono::steady_clock::now();
+  if (const double e = optim::estimated_evaluation_seconds(study); e > 0) {
+    // The time domain: its searches are bounded by their evaluations (refine.max_evaluations for
+    // a multi-fidelity study, search.max_evaluations per start otherwise).
+    const long evals = study.coarse ? static_cast<long>(study.refine.max_evaluations) * static_cast<long>(study.layouts.size())
+                                    : static_cast<long>(study.search.max_evaluations) * study.search.starts *
+                                          static_cast<long>(study.layouts.size());
+    if (e > 1) fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,
+                          study.catenaries.size(), study.speeds.size());
+    note_long_run(e * static_cast<double>(evals), fmt::format("this study, at its limit of {} evaluations,", evals));
+  }
   const network::Network baseline = optim::default_suspension(study);
   const optim::StudyCost def = optim::evaluate(study, baseline);
   if (def.unstable_speed > 0)

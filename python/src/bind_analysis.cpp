@@ -495,6 +495,22 @@ void bind_analysis(py::module_& m) {
         "integrator. progress(done, total) after each speed, on this thread; Ctrl-C cancels the sweep "
         "(KeyboardInterrupt once the running speeds finish).");
 
+  m.def("estimated_seconds", [](const py::object& model, const py::object& catenary, double speed, const py::object& t_end,
+                                const py::object& contact, const py::object& positions) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    return cat.catenary->estimated_seconds(train(model, positions, contact_arg(contact, cat)), speed,
+                                           t_end.is_none() ? -1.0 : t_end.cast<double>());
+  }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::arg("t_end") = py::none(), py::kw_only(),
+        py::arg("contact") = py::none(), py::arg("positions") = py::none(),
+        "A rough wall time (s) of one run (simulate_coupled) on the 2-core reference machine "
+        "(catenary::Catenary::estimated_seconds; t_end None: to the line's end); 0 for a lumped line.");
+  m.def("estimated_sweep_seconds", [](const py::object& model, const py::object& catenary, const py::object& speeds,
+                                      const py::object& contact, const py::object& positions) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    return analysis::estimated_sweep_seconds(train(model, positions, contact_arg(contact, cat)), *cat.catenary, doubles(speeds));
+  }, py::arg("model"), py::arg("catenary"), py::arg("speeds"), py::kw_only(), py::arg("contact") = py::none(),
+        py::arg("positions") = py::none(), "The same for a sweep, its speeds shared among the cores.");
+
   py::class_<analysis::RunComparison>(m, "RunComparison", "One speed run on two catenaries (inerta.compare).")
       .def_readonly("speed", &analysis::RunComparison::speed, "m/s")
       .def_readonly("reference", &analysis::RunComparison::reference)

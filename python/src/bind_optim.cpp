@@ -235,6 +235,8 @@ void bind_optim(py::module_& m) {
     return run(py::none(), [&](Call&) { return optim::evaluate_time(s, n); });
   }, py::arg("study"), py::arg("network"), py::arg("params") = py::none(),
         "J2 by the time-domain reference (analysis::sweep per catenary; all cores).");
+  m.def("estimated_evaluation_seconds", &optim::estimated_evaluation_seconds, py::arg("study"),
+        "A rough wall time (s) of one evaluation of a time-domain study (0 with the periodic fast path).");
   m.def("cost_of", &optim::cost_of, py::arg("study"), py::arg("sweeps"),
         "The study's cost of one SpeedResult list per catenary (its limits applied): J2, penalised, feasible, "
         "violation and the limited quantities.");

@@ -53,6 +53,8 @@ BOUND = {
     "io::write_structure_results": "write_structure_results",
     "io::structure_results_json": "structure_results_json",
     "optim::ModelStudyResult": "ModelStudyResult",
+    "analysis::estimated_sweep_seconds": "estimated_sweep_seconds",
+    "optim::estimated_evaluation_seconds": "estimated_evaluation_seconds",
     "optim::BoundCandidate": "BoundCandidate",
     "optim::AdmittanceBound": "AdmittanceBound",
     "io::write_admittance_results": "write_admittance_results",

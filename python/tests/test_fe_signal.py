@@ -1,12 +1,15 @@
 """The finite-element catenary, lumped pantographs, signal processing and the EN 50317 contact
 quality: the same numbers as the CLI, and round trips on synthetic signals."""
 import os
+import signal
+import subprocess
+import time
 
 import numpy as np
 import pytest
 
 import inerta
-from conftest import model, read_csv
+from conftest import CLI, SRC, model, read_csv
 
 SHORT = {"line.spans": 4}  # a short line keeps the runs fast
 
@@ -191,3 +194,49 @@ def test_modal_solver_and_compare():
     bad["solver.window_ahead"] = -2
     with pytest.raises(inerta.ModelError, match="window_ahead"):
         inerta.read_fe_catenary_data(model("catenary-fe.yaml"), bad)
+
+
+def test_run_time_estimates_follow_the_solvers_cost_laws():
+    """Catenary.estimated_seconds: the direct solve's work is the line's unknowns × steps (quadratic
+    in the spans at a speed), the modal solve's the window's (linear); lumped lines cost nothing."""
+    m3 = inerta.load_model(model("pantograph-3mass.yaml"))
+    v = 250 / 3.6
+
+    def est(spans, solver):
+        c = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": spans, "solver.type": solver})
+        return inerta.estimated_seconds(m3, c, v)
+
+    assert est(20, "direct") / est(10, "direct") == pytest.approx(4, rel=0.1)
+    first_modes = est(10, "modal") - (est(20, "modal") - est(10, "modal"))  # the constant part
+    assert (est(40, "modal") - first_modes) / (est(10, "modal") - first_modes) == pytest.approx(4, rel=0.05)
+    assert est(10, "modal") < est(10, "direct")
+    lumped = inerta.load_catenary(model("catenary.yaml"))
+    assert inerta.estimated_seconds(m3, lumped, 50.0) == 0
+    c = inerta.load_catenary(model("catenary-fe.yaml"))
+    speeds = [150 / 3.6, 200 / 3.6, 250 / 3.6, 300 / 3.6]
+    serial = sum(inerta.estimated_seconds(m3, c, s) for s in speeds)
+    assert serial / 4 <= inerta.estimated_sweep_seconds(m3, c, speeds) <= serial
+    study = inerta.load_study(f"{SRC}/studies/hsx-s2-fe-line.yaml")
+    assert inerta.estimated_evaluation_seconds(study) > 0
+    assert inerta.estimated_evaluation_seconds(inerta.load_study(f"{SRC}/studies/hsx-s2.yaml")) == 0
+
+
+def test_a_run_estimated_at_hours_says_so_first_and_ctrl_c_leaves_no_file(tmp_path):
+    """The cost guard: an FE line of 300 spans with the direct solve (hours) prints its estimate before
+    the run; SIGINT then stops it and no output file, complete or partial, is left."""
+    out = tmp_path / "long.csv"
+    p = subprocess.Popen([str(CLI), "simulate", model("pantograph-3mass.yaml"), "--catenary", model("catenary-fe.yaml"),
+                          "--speed", "250", "--unit", "kmh", "--set", "line.spans=300", "--set", "solver.type=direct",
+                          "--out", str(out)], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True, cwd=SRC)
+    try:
+        line = p.stderr.readline()
+        assert line.startswith("note: this run is estimated at about ") and "on a 2-core machine" in line, line
+        value, unit = line.split("about ")[1].split()[:2]
+        minutes = float(value) * {"min": 1, "h": 60}[unit]
+        assert 20 < minutes < 180  # 300 spans direct: 35 ns × 264k unknowns × 238k steps of 1 ms ≈ 37 min
+        time.sleep(0.5)
+        p.send_signal(signal.SIGINT)
+        assert p.wait(timeout=30) != 0
+    finally:
+        p.kill()
+    assert not out.exists() and not [f for f in os.listdir(tmp_path) if "partial" in f]

@@ -1,6 +1,7 @@
 #include "inerta/analysis/contact_statistics.hpp"
 
 #include <fmt/format.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -140,6 +141,15 @@ SpeedResult run_speed(catenary::Coupled& sys, const RunOptions& o) {
   r.stats = r.contacts.front();
   r.F = std::move(all.front());
   return r;
+}
+
+double estimated_sweep_seconds(const std::vector<catenary::PantographOnLine>& pantographs,
+                               const catenary::Catenary& catenary, const std::vector<double>& speeds) {
+  double total = 0;
+  for (double v : speeds)
+    if (v > 0) total += catenary.estimated_seconds(pantographs, v, -1);
+  const int cores = std::max(1, std::min(tbb::info::default_concurrency(), static_cast<int>(speeds.size())));
+  return total / cores;
 }
 
 std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pantographs,

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
 #include <atomic>
@@ -107,6 +108,16 @@ StudyCost evaluate(const Study& study, const network::Network& net) {
     if (std::any_of(sweeps.back().begin(), sweeps.back().end(), [](const auto& x) { return !x.stable(); })) break;
   }
   return cost_of(study, sweeps);
+}
+
+double estimated_evaluation_seconds(const Study& study) {
+  if (study.method != Study::Method::Time) return 0;
+  const std::vector<catenary::PantographOnLine> one{{study.pantograph, 0.0, study.contact}};
+  double serial = 0;  // every (catenary, speed) run, then shared among the cores
+  for (const auto& c : study.catenaries)
+    for (double v : study.speeds) serial += c->estimated_seconds(one, v, -1);
+  const auto runs = static_cast<int>(study.catenaries.size() * study.speeds.size());
+  return serial / std::max(1, std::min(tbb::info::default_concurrency(), runs));
 }
 
 StudyCost evaluate_time(const Study& study, const network::Network& net) {

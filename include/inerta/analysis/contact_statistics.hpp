@@ -63,6 +63,11 @@ struct SpeedResult {
 /// force becomes negative throws NumericalError with t and F.
 SpeedResult run_speed(catenary::Coupled& system, const RunOptions& options);
 
+/// The estimated wall time of sweep(pantographs, catenary, speeds): each run's
+/// Catenary::estimated_seconds, the speeds shared among the cores oneTBB uses. 0 for cheap lines.
+double estimated_sweep_seconds(const std::vector<catenary::PantographOnLine>& pantographs,
+                               const catenary::Catenary& catenary, const std::vector<double>& speeds);
+
 /// Speed sweep (spec/06 §6.1): couples the pantographs to the catenary at every speed and runs them
 /// in parallel (oneTBB). `progress(done, total)` is called after each speed (from worker threads,
 /// serialised). Results are in the order of `speeds`; the first failure is rethrown.

@@ -117,6 +117,14 @@ class Catenary {
   /// The work runs with these pantographs need once (a finite-element line's modes, in parallel);
   /// sweeps call it before their parallel loop. Nothing for most catenaries; couple does it too.
   virtual void prepare(const std::vector<PantographOnLine>& /*pantographs*/) const {}
+  /// A rough wall time (s) of one run with these pantographs at `speed` (m/s) for `t_end` s (≤ 0:
+  /// until the leading pantograph reaches the line's end), on the 2-core reference machine
+  /// (docs/benchmarks.md "Run-time estimate"): a guide for a warning before a long run, not a bound.
+  /// 0 for a catenary whose runs are cheap (every lumped line).
+  virtual double estimated_seconds(const std::vector<PantographOnLine>& /*pantographs*/, double /*speed*/,
+                                   double /*t_end*/) const {
+    return 0;
+  }
 
  protected:
   /// After couple's checks (count, speed, contact laws valid, contact markers present).

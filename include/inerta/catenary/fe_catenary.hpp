@@ -281,6 +281,7 @@ class FeCatenary final : public Catenary {
   /// or a study decomposes a window once); nullptr with solver: direct.
   std::shared_ptr<const class FeModalLine> modal() const { return modal_; }
   void prepare(const std::vector<PantographOnLine>& pantographs) const override;
+  double estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const override;
 
  protected:
   std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs, double speed) const override;

@@ -135,6 +135,10 @@ struct LayoutResult {
   std::vector<std::string> at_bounds;   ///< free values that ended on the search's limits (lo, hi, 0 or ∞)
 };
 
+/// The estimated wall time of one evaluation of a design (analysis::estimated_sweep_seconds of each
+/// catenary variant, the variants in parallel); 0 with the periodic fast path.
+double estimated_evaluation_seconds(const Study& study);
+
 /// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner
 /// (with the study's limits).
 StudyCost evaluate_time(const Study& study, const network::Network& net);
