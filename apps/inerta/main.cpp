@@ -600,7 +600,8 @@ int cmd_sweep(const SweepArgs& a) {
   for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
   for (double s : v_user) {
-    if (!(s > 0)) throw CLI::ValidationError("--speeds", "speeds must be > 0");
+    if (const std::string e = analysis::speed_rule.check(s, fmt::format("{:g}", s)); !e.empty())
+      throw CLI::ValidationError("--speeds", e);  // the library's rule (Python's speeds)
     v.push_back(to_ms(s, a.cat.unit));
   }
   analysis::RunOptions o;
@@ -744,7 +745,8 @@ int cmd_check_reduction(CheckReductionArgs a) {
   std::vector<double> v;
   if (a.speeds.find(':') == std::string::npos) a.speeds += ":1:" + a.speeds;  // one speed
   for (double s : frequency_range(a.speeds, "--speeds")) {
-    if (!(s > 0)) throw CLI::ValidationError("--speeds", "speeds must be > 0");
+    if (const std::string e = analysis::speed_rule.check(s, fmt::format("{:g}", s)); !e.empty())
+      throw CLI::ValidationError("--speeds", e);  // the library's rule (Python's speeds)
     v.push_back(to_ms(s, a.cat.unit));
   }
   const io::CatenaryFile probe = io::read_catenary_file(a.cat.catenary, io::split_overrides(a.model, a.cat.sets).second);
@@ -1304,7 +1306,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   swp->add_option("--harmonics", wa.harmonics, "Periodic method: harmonics of the pumping frequency")
       ->capture_default_str()
-      ->check(count_in(1, analysis::max_harmonics));
+      ->check(count_rule(analysis::harmonics_rule));
 
   ModesArgs ma;
   auto* mds =

@@ -530,10 +530,11 @@ void bind_analysis(py::module_& m) {
         "check-reduction` compares a finite-element line's direct and modal solves this way). Speeds in m/s.");
 
   m.def("sweep_periodic", [](const Model& model, const py::object& catenary, const py::object& speeds,
-                             const py::object& contact, int harmonics) {
+                             const py::object& contact, const py::object& harmonics_arg) {
     const CatenaryArg cat = catenary_arg(catenary);
     const catenary::Contact c = contact_arg(contact, cat);
     const std::vector<double> v = doubles(speeds);
+    const int harmonics = static_cast<int>(rule_arg(harmonics_arg, "harmonics", analysis::harmonics_rule));  // as --harmonics
     return run(py::none(), [&](Call&) {
       const auto t0 = Clock::now();
       auto r = analysis::sweep_periodic(model.p, *cat.catenary, c, v, harmonics);

@@ -160,6 +160,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
   std::mutex mutex;
   int done = 0;
   check(options);                 // before any work
+  for (double v : speeds) require(speed_rule, v, "speeds");
   catenary.prepare(pantographs);  // once, before the runs (a finite-element line's modes)
   tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t i) {
     try {

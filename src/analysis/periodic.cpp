@@ -27,10 +27,9 @@ constexpr int floquet_steps = 256;
 
 std::vector<SpeedResult> sweep_periodic(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                         const catenary::Contact& contact, const std::vector<double>& speeds, int H) {
-  if (H < 1 || H > max_harmonics)
-    throw InvalidArgument(fmt::format("the periodic method needs 1 to {} harmonics, got {}", max_harmonics, H));
+  require(harmonics_rule, H, "harmonics");
   for (double v : speeds)
-    if (!(v > 0) || !std::isfinite(v)) throw InvalidArgument(fmt::format("speeds must be finite and > 0 m/s, got {}", v));
+    require(speed_rule, v, "speeds");
   if (pantograph.aero.active()) {  // the aerodynamic uplift depends on the speed: one linearisation per speed
     std::vector<SpeedResult> out(speeds.size());
     tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t s) {

@@ -30,6 +30,10 @@ struct RunOptions {
   solve::IntegratorOptions integrator;
   bool fixed_spans = false;  ///< run exactly min_spans spans (no convergence test)
 };
+/// Each speed of a sweep (the CLI's --speeds, in its unit; Python's speeds, m/s): "speeds: 0 is out of
+/// range; expected > 0".
+inline constexpr NumberRule speed_rule{1e-300, 1e300, "> 0"};
+
 /// The rules of RunOptions: spans 1 … 10000 (max_spans ≥ min_spans), settled_spans 1 … 1000,
 /// tolerance 0 … 1, samples_per_span 10 … 1e6. InvalidArgument "max_spans: 0 is out of range; …".
 void check(const RunOptions& options);

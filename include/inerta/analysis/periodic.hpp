@@ -9,11 +9,14 @@
 #include <vector>
 
 #include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/error.hpp"
 
 namespace inerta::analysis {
 
 /// Largest number of harmonics H accepted (InvalidArgument above, or below 1).
 inline constexpr int max_harmonics = 256;
+/// The rule of H (the CLI's --harmonics, Python's harmonics): "harmonics: 0 is out of range; expected 1 … 256".
+inline constexpr CountRule harmonics_rule{1, max_harmonics};
 
 /// Contact statistics of the periodic steady state at each speed (m/s), H harmonics of the pumping
 /// frequency. The catenary must have a point model (Catenary::point_model: the lumped catenary),
