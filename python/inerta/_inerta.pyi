@@ -1118,6 +1118,7 @@ class Study:
                  hi: float = 1e9, harmonics: int = 8, name: str = "") -> None: ...
     name: str
     source: str
+    positions: list[float]
     @property
     def pantograph(self) -> Model: ...
     @property

@@ -100,6 +100,7 @@ void bind_optim(py::module_& m) {
            "SearchOptions; lo, hi: bounds of every free value (SI); harmonics: of the periodic fast path.")
       .def_readonly("name", &Study::name)
       .def_readonly("source", &Study::source)
+      .def_readonly("positions", &Study::positions, "the pantographs' positions along the line at t = 0, m")
       .def_property_readonly("pantograph", [](const Study& s) { return make_model(s.pantograph); })
       .def_property_readonly("catenaries", &catenaries_of)
       .def_readonly("catenary_labels", &Study::catenary_labels)

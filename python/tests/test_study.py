@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import inerta
-from conftest import model
+from conftest import SRC, model
 
 STUDY = """name: small
 model: {src}/models/hsx.yaml
@@ -171,3 +171,13 @@ layouts: [S2-default, S2-3]
         inerta.prepare_output_folder(str(out), names, False)
     inerta.prepare_output_folder(str(out), names, True)
     assert (out / "mine.txt").exists()
+
+
+def test_a_study_of_two_pantographs_keeps_their_positions(tmp_path):
+    text = open(f"{SRC}/studies/hsx-s2-fe-line.yaml", encoding="utf-8").read().replace("../models/", f"{SRC}/models/")
+    p = tmp_path / "two.yaml"
+    p.write_text(text + "pantographs: [0, 200]\n")
+    s = inerta.load_study(p)
+    assert s.positions == [0.0, 200.0] and inerta.load_study(f"{SRC}/studies/hsx-s2-fe-line.yaml").positions == [0.0]
+    assert inerta.estimated_evaluation_seconds(s) > inerta.estimated_evaluation_seconds(
+        inerta.load_study(f"{SRC}/studies/hsx-s2-fe-line.yaml"))

@@ -105,12 +105,12 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     const std::string k = it->first.as<std::string>();
     static const char* allowed[] = {"name",      "model",     "catenary", "catenaries", "speeds", "layouts",
                                     "search",    "harmonics", "objective", "networks",  "admittance", "method",
-                                    "limits",    "bounds",    "coarse",   "refine"};
+                                    "limits",    "bounds",    "coarse",   "refine",     "pantographs"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
       yaml_fail(path, it->first, k,
                     "unknown key; expected name, model, catenary, catenaries, speeds, layouts, networks, admittance, search, "
-                    "harmonics, objective, method, limits, bounds, coarse, refine");
+                    "harmonics, objective, method, limits, bounds, coarse, refine, pantographs");
   }
   if (const YAML::Node o = root["objective"]; o.IsDefined()) {  // optional: a pantograph study's objective is J2
     if (!o.IsMap() || o.size() != 1 || !o["type"].IsDefined() || !o["type"].IsScalar() || o["type"].Scalar() != "j2")
@@ -192,6 +192,24 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
       yaml_fail(path, m, "method", "the periodic fast path needs a lumped catenary; this study's has no point model: use time");
     s.method = v == "time" ? optim::Study::Method::Time : optim::Study::Method::Periodic;
   }
+  if (const YAML::Node pn = root["pantographs"]; pn.IsDefined()) {
+    // Positions along the line at t = 0, m, increasing (the last one leads), as `simulate --positions`.
+    if (!pn.IsSequence() || pn.size() < 1 || pn.size() > 8)
+      yaml_fail(path, pn, "pantographs", "expected 1 to 8 positions along the line in m, e.g. [0, 200]");
+    s.positions.clear();
+    for (std::size_t k = 0; k < pn.size(); ++k) {
+      const double x = yaml_number(path, pn[k], "pantographs");
+      if (!(x >= 0 && x < 1e5) || (k > 0 && !(x > s.positions.back())))
+        yaml_fail(path, pn[k], "pantographs", "expected increasing positions in m, from 0, below 1e5");
+      s.positions.push_back(x);
+    }
+    if (s.positions.size() > 1 && s.method != optim::Study::Method::Time)
+      yaml_fail(path, pn, "pantographs",
+                "several pantographs need the time domain (method: time, on a finite-element or wire-profile line)");
+    for (const auto& c : s.catenaries)
+      if (static_cast<int>(s.positions.size()) > c->max_pantographs())
+        yaml_fail(path, pn, "pantographs", fmt::format("this catenary carries at most {} pantograph(s)", c->max_pantographs()));
+  }
   if (const YAML::Node l = root["limits"]; l.IsDefined()) {
     s.limits = read_limits(path, l);
     if (!std::isnan(s.limits.uplift_max) && std::isinf(s.catenaries.front()->line_length()))
@@ -208,7 +226,8 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     YAML::Node merged(YAML::NodeType::Map);
     for (auto it = root.begin(); it != root.end(); ++it) {
       const std::string k = it->first.as<std::string>();
-      if (k != "coarse" && k != "refine" && k != "method" && k != "admittance") merged[k] = it->second;
+      // The coarse search (the periodic fast path) runs one pantograph.
+      if (k != "coarse" && k != "refine" && k != "method" && k != "admittance" && k != "pantographs") merged[k] = it->second;
     }
     for (auto it = c.begin(); it != c.end(); ++it) {
       const std::string k = it->first.as<std::string>();

@@ -112,10 +112,11 @@ StudyCost evaluate(const Study& study, const network::Network& net) {
 
 double estimated_evaluation_seconds(const Study& study) {
   if (study.method != Study::Method::Time) return 0;
-  const std::vector<catenary::PantographOnLine> one{{study.pantograph, 0.0, study.contact}};
+  std::vector<catenary::PantographOnLine> train;
+  for (double x0 : study.positions) train.push_back({study.pantograph, x0, study.contact});
   double serial = 0;  // every (catenary, speed) run, then shared among the cores
   for (const auto& c : study.catenaries)
-    for (double v : study.speeds) serial += c->estimated_seconds(one, v, -1);
+    for (double v : study.speeds) serial += c->estimated_seconds(train, v, -1);
   const auto runs = static_cast<int>(study.catenaries.size() * study.speeds.size());
   return serial / std::max(1, std::min(tbb::info::default_concurrency(), runs));
 }
@@ -126,7 +127,9 @@ StudyCost evaluate_time(const Study& study, const network::Network& net) {
   tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
     pantograph::Pantograph p = study.pantograph;
     p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
-    sweeps[i] = analysis::sweep(p, *study.catenaries[i], study.contact, study.speeds, analysis::RunOptions{});
+    std::vector<catenary::PantographOnLine> train;
+    for (double x0 : study.positions) train.push_back({p, x0, study.contact});
+    sweeps[i] = analysis::sweep(train, *study.catenaries[i], study.speeds, analysis::RunOptions{});
   });
   return cost_of(study, sweeps);
 }

@@ -151,6 +151,24 @@ TEST(StudyFidelity, AFiniteElementLineIsStudiedInTheTimeDomainWithItsSupportUpli
   EXPECT_NEAR(c.mean, 71, 5);  // relaxed at the line's static state: the default's static force
 }
 
+TEST(StudyFidelity, TwoPantographsTakeJ2AndTheLimitsOverBothContacts) {
+  // Two copies on the 3-span line, the leading one 40 m ahead: J2 is the larger σ of the two contacts.
+  const optim::Study s = io::load_study(write_study("fe_two.yaml", kFe + "pantographs: [0, 40]\n"));
+  ASSERT_EQ(s.positions, (std::vector<double>{0, 40}));
+  const optim::StudyCost c = optim::evaluate(s, optim::default_suspension(s));
+  const std::vector<catenary::PantographOnLine> train{{s.pantograph, 0, s.contact}, {s.pantograph, 40, s.contact}};
+  const auto ref = analysis::sweep(train, *s.catenaries[0], s.speeds, analysis::RunOptions{});
+  ASSERT_EQ(ref[0].contacts.size(), 2u);
+  const double worst = std::max(ref[0].contacts[0].std, ref[0].contacts[1].std);
+  EXPECT_NEAR(c.J, worst, 1e-6 * worst);
+  EXPECT_TRUE(c.feasible);
+  // The trailing pantograph runs in the leading one's waves: J differs from a lone pantograph's.
+  const optim::Study one = io::load_study(write_study("fe_one.yaml", kFe));
+  const double alone = optim::evaluate(one, optim::default_suspension(one)).J;
+  EXPECT_GT(std::abs(c.J - alone), 1e-3 * alone) << c.J << " " << alone;
+  EXPECT_GT(optim::estimated_evaluation_seconds(s), optim::estimated_evaluation_seconds(one));
+}
+
 TEST(StudyFidelity, FileErrorsOfTheNewKeys) {
   auto fails = [&](const std::string& text, const std::string& words) {
     try {
@@ -163,6 +181,9 @@ TEST(StudyFidelity, FileErrorsOfTheNewKeys) {
   };
   fails(kFe + "method: periodic\n", "the periodic fast path needs a lumped catenary");
   fails(kLumped + "method: fast\n", "expected periodic or time");
+  fails(kLumped + "pantographs: [0, 200]\n", "several pantographs need the time domain");
+  fails(kFe + "pantographs: [40, 0]\n", "expected increasing positions");
+  fails(kFe + "pantographs: 200\n", "expected 1 to 8 positions");
   fails(kLumped + "limits: {support_uplift: 0.1}\n", "a support uplift needs a finite line");
   fails(kLumped + "limits: {mean: [90, 60]}\n", "expected 0 < lo < hi (N)");
   fails(kLumped + "limits: {contact_loss: 120}\n", "a percentage from 0 to 100");

@@ -56,6 +56,9 @@ struct Study {
   /// that optimum on a finer mesh (the rest).
   bool worst_speed_first = false;
   pantograph::Pantograph pantograph;
+  /// `pantographs: [0, 200]`: copies of the pantograph at these positions along the line, m (the time
+  /// domain only); J2 and the limits are taken over every contact (the trailing one's too).
+  std::vector<double> positions{0.0};
   std::vector<std::shared_ptr<const catenary::Catenary>> catenaries;  ///< the variants (J1: one)
   std::vector<std::string> catenary_labels;
   catenary::Contact contact;
