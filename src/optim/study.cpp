@@ -168,18 +168,23 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     return p;
   };
   std::atomic<int> unstable{0};
-  auto J = [&](const std::vector<double>& values) {
-    const network::Network net = network::resolve(layout, params_of(values));
-    // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
-    if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
-    try {
-      const StudyCost c = evaluate(study, net);
-      if (c.unstable_speed > 0) ++unstable;
-      return c.penalised();
-    } catch (const NumericalError&) {
-      return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
-    }
+  // The search's cost on study `s` (this one, or its worst speed alone): what evaluate penalises,
+  // the designs refused as unstable counted.
+  auto cost_on = [&](const Study& s) {
+    return [&](const std::vector<double>& values) {
+      const network::Network net = network::resolve(layout, params_of(values));
+      // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
+      if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
+      try {
+        const StudyCost c = evaluate(s, net);
+        if (c.unstable_speed > 0) ++unstable;
+        return c.penalised();
+      } catch (const NumericalError&) {
+        return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
+      }
+    };
   };
+  const auto J = cost_on(study);
   numerics::Options search = study.search;
   if (study.coarse) {  // multi-fidelity: the coarse study's optimum is the one start of the refinement
     const LayoutResult c = optimise_layout(*study.coarse, layout, progress, warm);
@@ -206,15 +211,7 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     Study one = study;
     one.speeds = {r.coarse_here.speed};
     one.coarse.reset();
-    auto J1 = [&](const std::vector<double>& values) {
-      const network::Network net = network::resolve(layout, params_of(values));
-      if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
-      try {
-        return evaluate(one, net).penalised();
-      } catch (const NumericalError&) {
-        return static_cast<double>(INFINITY);
-      }
-    };
+    const auto J1 = cost_on(one);
     numerics::Options first = search;
     first.max_evaluations = std::max(1, search.max_evaluations / 2);
     const numerics::Result s1 = numerics::pattern_search(vars, J1, first, progress);
