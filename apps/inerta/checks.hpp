@@ -5,7 +5,6 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include <cmath>
 #include <string>
 
 #include "inerta/error.hpp"
@@ -35,14 +34,13 @@ inline CLI::Validator count_rule(const CountRule& rule) {
       fmt::format("{} … {}", rule.lo, rule.hi));
 }
 
-/// A finite number in [lo, hi]; `what` describes the range and unit, e.g. "> 0 s".
+/// A finite number in [lo, hi]; `what` describes the range and unit, e.g. "> 0 s" (NumberRule's words).
 inline CLI::Validator number_in(double lo, double hi, const std::string& what) {
   return CLI::Validator(
       [=](std::string& s) {
         double v = 0;
-        if (!CLI::detail::lexical_cast(s, v) || !std::isfinite(v)) return fmt::format("expected a finite number, got '{}'", s);
-        if (!(v >= lo && v <= hi)) return fmt::format("{} is out of range; expected {}", s, what);
-        return std::string();
+        if (!CLI::detail::lexical_cast(s, v)) return fmt::format("expected a finite number, got '{}'", s);
+        return NumberRule{lo, hi, what.c_str()}.check(v, s);
       },
       what);
 }
@@ -50,18 +48,7 @@ inline CLI::Validator number_in(double lo, double hi, const std::string& what) {
 /// A positive finite number (below 1e300), `unit` for the message.
 inline CLI::Validator positive(const std::string& unit) { return number_in(1e-300, 1e300, "> 0 " + unit); }
 
-/// A whole number in [lo, hi].
-inline CLI::Validator count_in(long lo, long hi) {
-  return CLI::Validator(
-      [=](std::string& s) {
-        double v = 0;
-        if (!CLI::detail::lexical_cast(s, v) || !std::isfinite(v) || v != std::floor(v))
-          return fmt::format("expected a whole number, got '{}'", s);
-        if (!(v >= static_cast<double>(lo) && v <= static_cast<double>(hi)))
-          return fmt::format("{} is out of range; expected {} … {}", s, lo, hi);
-        return std::string();
-      },
-      fmt::format("{} … {}", lo, hi));
-}
+/// A whole number in [lo, hi] (CountRule's words).
+inline CLI::Validator count_in(long lo, long hi) { return count_rule(CountRule{lo, hi}); }
 
 }  // namespace inerta::cli
