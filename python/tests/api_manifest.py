@@ -384,6 +384,7 @@ EXCLUDED = {
     "catenary::FeWindowModes": "the decomposition of a window (see FeModalLine)",
     "catenary::BandInverse": "numerical kernel of the modal solve's residual flexibility",
     "catenary::Modes": "result of lowest_modes (see there)",
+    "catenary::StoredModes": "result of ModeStore::load (see there)",
     "optim::operating_length": "the operating point of `--relaxed` (CLI); Study.operating_length holds it per "
                                "catenary",
     "catenary::ModeStore": "the on-disk store of decompositions, chosen by the environment (INERTA_CACHE), "

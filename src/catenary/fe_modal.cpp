@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "inerta/error.hpp"
+#include "modal_kernels.hpp"
 
 namespace inerta::catenary {
 
@@ -204,6 +205,11 @@ void FeWindowModes::solve_K(Eigen::VectorXd& b) const {
   }
 }
 
+void FeWindowModes::set_phi(std::shared_ptr<const void> owner, const double* data, Eigen::Index n, Eigen::Index m) {
+  phi_owner = std::move(owner);
+  new (&phi) Eigen::Map<const RowMatrix>(data, n, m);
+}
+
 int FeWindow::local(int global) const {
   const auto it = std::lower_bound(dofs.begin(), dofs.end(), global);
   return it != dofs.end() && *it == global ? static_cast<int>(it - dofs.begin()) : -1;
@@ -312,21 +318,27 @@ std::shared_ptr<const FeWindowModes> FeModalLine::find_shape(const Sparse& K, co
 }
 
 std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, Sparse K, Sparse M,
-                                                          const Modes* given) const {
+                                                          Modes* given) const {
   const FeLine& L = *line_;
   const int n = static_cast<int>(K.rows());
   auto md = std::make_shared<FeWindowModes>();
   const double cutoff = L.data().modal_cutoff;
-  std::optional<Modes> stored;
+  std::optional<StoredModes> stored;
   if (!given && store_) stored = store_->load(K, M, cutoff);
-  Modes modes = given ? *given : stored ? std::move(*stored) : lowest_modes(K, M, cutoff);
-  if (!given && stored) ++loaded_;
-  if (!given && !stored) {
-    ++solved_;
-    if (store_) store_->save(K, M, cutoff, modes);
+  if (stored) {
+    ++loaded_;
+    md->omega2 = std::move(stored->omega2);
+    md->set_phi(std::move(stored->owner), stored->phi, stored->n, stored->m);
+  } else {
+    Modes modes = given ? std::move(*given) : lowest_modes(K, M, cutoff);
+    if (!given) {
+      ++solved_;
+      if (store_) store_->save(K, M, cutoff, modes);
+    }
+    md->omega2 = std::move(modes.omega2);
+    auto phi = std::make_shared<const FeWindowModes::RowMatrix>(std::move(modes.phi));
+    md->set_phi(phi, phi->data(), phi->rows(), phi->cols());
   }
-  md->omega2 = std::move(modes.omega2);
-  md->phi = std::move(modes.phi);
   // K's band Cholesky factor, the band of K⁻¹ and its columns at the special DOFs (residual flexibility).
   for (int j = 0; j < K.outerSize(); ++j)
     for (Sparse::InnerIterator it(K, j); it; ++it) md->kd = std::max(md->kd, static_cast<int>(it.row()) - j);
@@ -346,13 +358,36 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
     md->special.push_back(w.local(dr.dof_c));
   }
   for (const FeWindow::End& e : w.ends) md->special.push_back(e.local);
-  md->kinv_special.resize(n, static_cast<Eigen::Index>(md->special.size()));
-  Eigen::VectorXd c;
-  for (std::size_t j = 0; j < md->special.size(); ++j) {
-    c.setZero(n);
-    c[md->special[j]] = 1;
-    md->solve_K(c);
-    md->kinv_special.col(static_cast<Eigen::Index>(j)) = c;
+  // All columns at once: K⁻¹ [e_s …], the right-hand sides of a DOF side by side in a row.
+  const int ns = static_cast<int>(md->special.size());
+  md->kinv_special.setZero(n, ns);
+  for (int j = 0; j < ns; ++j) md->kinv_special(md->special[static_cast<std::size_t>(j)], j) = 1;
+  {
+    double* X = md->kinv_special.data();
+    const double* ab = md->cholesky.data();
+    auto row = [&](int i) { return X + static_cast<std::ptrdiff_t>(i) * ns; };
+    for (int j = 0; j < n; ++j) {  // L y = b
+      const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
+      double* xj = row(j);
+      const double inv = 1 / c[0];
+      for (int k = 0; k < ns; ++k) xj[k] *= inv;
+      for (int i = 1; i <= std::min(md->kd, n - 1 - j); ++i) {
+        double* xi = row(j + i);
+        const double l = c[i];
+        for (int k = 0; k < ns; ++k) xi[k] -= l * xj[k];
+      }
+    }
+    for (int j = n - 1; j >= 0; --j) {  // Lᵀ x = y
+      const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
+      double* xj = row(j);
+      for (int i = 1; i <= std::min(md->kd, n - 1 - j); ++i) {
+        const double* xi = row(j + i);
+        const double l = c[i];
+        for (int k = 0; k < ns; ++k) xj[k] -= l * xi[k];
+      }
+      const double inv = 1 / c[0];
+      for (int k = 0; k < ns; ++k) xj[k] *= inv;
+    }
   }
   md->K = std::move(K), md->M = std::move(M);
   return md;
@@ -509,8 +544,12 @@ class ModalSolver final : public FeLineSolver {
     last_x_ = x;
     last_F_ = F;
     last_res_.assign(x.size(), 0.0);
-    for (std::size_t k = 0; k < x.size(); ++k)
+    load_p_.resize(x.size()), load_px_.resize(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k) {
       for (const Mod& m : mods_) last_res_[k] += residual(mods_[k], m) * m.coeff;
+      load_p_[k] = mods_[k].p;
+      load_px_[k] = shape_slope(L_.contact_shape(x[k]));
+    }
   }
 
   // One step. The set of rank-one terms: active contacts (changing every step) and the special
@@ -532,26 +571,26 @@ class ModalSolver final : public FeLineSolver {
     contacts_.clear();
     mods_.clear();
     prescribed_.clear();
+    load_p_.resize(loads.size()), load_px_.resize(loads.size());
     for (std::size_t k = 0; k < loads.size(); ++k) {
       const FeLoad& ld = loads[k];
       const FeLine::Shape sh = L_.contact_shape(ld.x);
+      Mod m = contact_mod(sh, 0, 0);
+      load_p_[k] = m.p;  // kept for height, height_rate and uplift at this point after the step
+      load_px_[k] = shape_slope(sh);
       if (!ld.penalty) {
-        prescribed_.push_back({contact_mod(sh, 0, 0), ld.force});
-        r_ += (ap * ld.force) * prescribed_.back().first.p;
+        r_ += (ap * ld.force) * m.p;
+        prescribed_.push_back({std::move(m), ld.force});
         forces[k] = ld.force;
         continue;
       }
-      double Nvt = 0, w_x = 0;
-      for (int a = 0; a < 4; ++a)
-        if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) {
-          Nvt += sh.N[a] * md.phi.row(l).dot(vt_);
-          w_x += sh.dN[a] * md.phi.row(l).dot(q_);
-        }
+      const double Nvt = m.p.dot(vt_), w_x = load_px_[k].dot(q_);
       const double conv = ld.speed * (L_.static_slope(ld.x) + w_x);
       const double fh = ld.stiffness * (ld.head_y - L_.static_height(ld.x)) + ld.damping * (ld.head_v - conv + Nvt);
       const double kc = ld.stiffness + ld.damping * c1_;
       contacts_.push_back({static_cast<int>(k), kc, fh});
-      mods_.push_back(contact_mod(sh, ap * kc, ap * fh));
+      m.d = ap * kc, m.coeff = ap * fh;
+      mods_.push_back(std::move(m));
     }
     const std::size_t nc = mods_.size();
     if (active_.size() != nc) active_.assign(nc, 1);
@@ -570,7 +609,15 @@ class ModalSolver final : public FeLineSolver {
     xz_.col(0) = x0_;
     for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(1 + c)) = mods_[c].p.cwiseQuotient(A_) - mods_[c].pw / ap;
     dxz_.resize(static_cast<Eigen::Index>(nd), xz_.cols());
-    for (Eigen::Index k = 0; k < xz_.cols(); ++k) dxz_.col(k).noalias() = dropper_p_ * xz_.col(k);
+    for (Eigen::Index k0 = 0; k0 < xz_.cols(); k0 += 4) {  // the droppers' rows read once for up to 4 vectors
+      const int C = static_cast<int>(std::min<Eigen::Index>(4, xz_.cols() - k0));
+      const double* xs[4];
+      for (int c = 0; c < C; ++c) xs[c] = xz_.col(k0 + c).data();
+      dot_scratch_.resize(nd * static_cast<std::size_t>(C));
+      kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), xs, C, dot_scratch_.data());
+      for (std::size_t j = 0; j < nd; ++j)
+        for (int c = 0; c < C; ++c) dxz_(static_cast<Eigen::Index>(j), k0 + c) = dot_scratch_[j * static_cast<std::size_t>(C) + static_cast<std::size_t>(c)];
+    }
     d0_ = dxz_.col(0);
     for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] = mods_[c].p.dot(x0_);
     for (std::size_t j = 0; j < nd; ++j) wx0_[static_cast<Eigen::Index>(nc + j)] = d0_[static_cast<Eigen::Index>(j)];
@@ -695,17 +742,25 @@ class ModalSolver final : public FeLineSolver {
     }
   }
 
+  // At a load point of the last step, its shape's modal rows were kept (load_p_, load_px_).
+  int load_at(double x) const {
+    for (std::size_t k = 0; k < last_x_.size() && k < load_p_.size(); ++k)
+      if (last_x_[k] == x) return static_cast<int>(k);
+    return -1;
+  }
   double uplift(double x) const override {
+    if (const int k = load_at(x); k >= 0)  // with the quasi-static part of the modes left out
+      return load_p_[static_cast<std::size_t>(k)].dot(q_) + last_res_[static_cast<std::size_t>(k)];
     const FeLine::Shape sh = L_.contact_shape(x);
     double w = 0;
     for (int a = 0; a < 4; ++a)
       if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) w += sh.N[a] * win_->modes->phi.row(l).dot(q_);
-    for (std::size_t k = 0; k < last_x_.size(); ++k)
-      if (last_x_[k] == x) return w + last_res_[k];  // the quasi-static part of the modes left out
     return w;
   }
   double height(double x) const override { return L_.static_height(x) + uplift(x); }
   double height_rate(double x, double speed) const override {
+    if (const int k = load_at(x); k >= 0)
+      return load_p_[static_cast<std::size_t>(k)].dot(qd_) + speed * (L_.static_slope(x) + load_px_[static_cast<std::size_t>(k)].dot(q_));
     const FeLine::Shape sh = L_.contact_shape(x);
     double w_dot = 0, w_x = 0;
     for (int a = 0; a < 4; ++a)
@@ -789,6 +844,14 @@ class ModalSolver final : public FeLineSolver {
     m.pw = m.p.cwiseQuotient(md.omega2);
     m.d = d, m.coeff = coeff;
     return m;
+  }
+  // Φᵀ N'(x): the modal row of the wire's slope at a contact point.
+  Eigen::VectorXd shape_slope(const FeLine::Shape& sh) const {
+    const auto& md = *win_->modes;
+    Eigen::VectorXd px = Eigen::VectorXd::Zero(md.omega2.size());
+    for (int a = 0; a < 4; ++a)
+      if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) px += sh.dN[static_cast<std::size_t>(a)] * md.phi.row(l).transpose();
+    return px;
   }
   // Special DOFs i (weight +1) and j (weight −1, if j >= 0).
   Mod special_mod(int i, int j, double d, double coeff) const {
@@ -881,10 +944,11 @@ class ModalSolver final : public FeLineSolver {
   void move_to(int first) {
     const std::shared_ptr<const FeWindow> old = win_;
     const auto& mo = *old->modes;
-    Eigen::MatrixXd qs(q_.size(), alpha_ != 0 ? 4 : 3);  // one pass over Φ for the state's four vectors
-    qs.col(0) = q_, qs.col(1) = qd_, qs.col(2) = qdd_;
-    if (alpha_ != 0) qs.col(3) = qi_;
-    const Eigen::MatrixXd uva = mo.phi * qs;
+    const int C = alpha_ != 0 ? 4 : 3;  // one pass over Φ for the state's vectors
+    const double* qs[4] = {q_.data(), qd_.data(), qdd_.data(), qi_.data()};
+    const Eigen::Index no = mo.phi.rows(), mm = mo.phi.cols();
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> uva(no, C);
+    kernels::rows_dot(mo.phi.data(), mm, static_cast<int>(no), static_cast<int>(mm), qs, C, uva.data());
     const auto u = uva.col(0), v = uva.col(1), a = uva.col(2);
     Eigen::VectorXd fi;
     if (alpha_ != 0) fi = mo.M * uva.col(3);
@@ -902,11 +966,13 @@ class ModalSolver final : public FeLineSolver {
         ++i, ++j;
       }
     }
-    Eigen::MatrixXd rhs(n, 4);
-    rhs.col(0) = mn.M * u2, rhs.col(1) = mn.M * v2, rhs.col(2) = mn.M * a2, rhs.col(3) = f2;
-    const Eigen::MatrixXd qn = mn.phi.transpose() * rhs;
-    q_ = qn.col(0), qd_ = qn.col(1), qdd_ = qn.col(2);
-    qi_ = alpha_ != 0 ? Eigen::VectorXd(qn.col(3)) : Eigen::VectorXd::Zero(q_.size());
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rhs(n, C);
+    rhs.col(0) = mn.M * u2, rhs.col(1) = mn.M * v2, rhs.col(2) = mn.M * a2;
+    if (alpha_ != 0) rhs.col(3) = f2;
+    const Eigen::Index m = mn.phi.cols();
+    q_.setZero(m), qd_.setZero(m), qdd_.setZero(m), qi_.setZero(m);
+    double* qn[4] = {q_.data(), qd_.data(), qdd_.data(), qi_.data()};
+    kernels::rows_axpy(mn.phi.data(), m, static_cast<int>(n), static_cast<int>(m), rhs.data(), C, qn);
     // Droppers left behind are forgotten; those ahead start taut.
     std::vector<char> keep(slack_.size(), 0);
     for (int k : droppers_) keep[static_cast<std::size_t>(k)] = slack_[static_cast<std::size_t>(k)];
@@ -925,6 +991,7 @@ class ModalSolver final : public FeLineSolver {
   std::vector<char> slack_;    // per dropper of the line
   std::vector<char> active_;   // per penalty load
   std::vector<double> last_x_, last_res_, last_F_;
+  std::vector<Eigen::VectorXd> load_p_, load_px_;  // per load of the last step: Φᵀ N(x) and Φᵀ N'(x)
   std::map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
   // Step scratch.
   std::vector<double> xs_;
@@ -935,7 +1002,7 @@ class ModalSolver final : public FeLineSolver {
   std::vector<std::pair<Mod, double>> prescribed_;
   Eigen::VectorXd wx0_, d0_;
   Eigen::MatrixXd gc_, dwc_, xz_, dxz_;
-  std::vector<double> contact_w_;
+  std::vector<double> contact_w_, dot_scratch_;
   // Per window: the special terms (droppers as slack ones, then the absorbing ends' dashpots), their
   // G among themselves and their effect on every dropper's elongation (a column per special term).
   std::vector<Mod> smods_;

@@ -2,6 +2,9 @@
 #include "inerta/catenary/mode_store.hpp"
 
 #include <fmt/format.h>
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -17,7 +20,7 @@ namespace inerta::catenary {
 
 namespace {
 
-constexpr char kMagic[8] = {'I', 'N', 'M', 'O', 'D', 'E', 'S', '1'};
+constexpr char kMagic[8] = {'I', 'N', 'M', 'O', 'D', 'E', 'S', '2'};
 
 struct Header {
   char magic[8];
@@ -53,10 +56,30 @@ struct Hash {
   }
 };
 
-std::uint64_t checksum(const Modes& m) {
+// The data's checksum: eight FNV-like lanes over the 64-bit words (independent multiplications, so it
+// runs at memory speed), folded into one.
+std::uint64_t checksum(const double* omega2, std::size_t m, const double* phi, std::size_t count) {
+  std::uint64_t lane[8];
+  for (int l = 0; l < 8; ++l) lane[l] = 14695981039346656037ull + static_cast<std::uint64_t>(l);
+  auto run = [&](const double* p, std::size_t words) {
+    std::size_t i = 0;
+    for (; i + 8 <= words; i += 8)
+      for (int l = 0; l < 8; ++l) {
+        std::uint64_t w;
+        std::memcpy(&w, p + i + static_cast<std::size_t>(l), 8);
+        lane[l] = (lane[l] ^ w) * 1099511628211ull;
+        lane[l] ^= lane[l] >> 29;
+      }
+    for (; i < words; ++i) {
+      std::uint64_t w;
+      std::memcpy(&w, p + i, 8);
+      lane[0] = (lane[0] ^ w) * 1099511628211ull;
+    }
+  };
+  run(omega2, m);
+  run(phi, count);
   Hash h;
-  h.words(m.omega2.data(), sizeof(double) * static_cast<std::size_t>(m.omega2.size()));
-  h.words(m.phi.data(), sizeof(double) * static_cast<std::size_t>(m.phi.size()));
+  for (std::uint64_t v : lane) h.word(v);
   return h.h;
 }
 
@@ -91,24 +114,36 @@ std::uint64_t ModeStore::key(const Eigen::SparseMatrix<double>& K, const Eigen::
 
 std::filesystem::path ModeStore::file(std::uint64_t key) const { return dir_ / fmt::format("modes-{:016x}.bin", key); }
 
-std::optional<Modes> ModeStore::load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
-                                     double cutoff_hz) const {
+std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+                                           double cutoff_hz) const {
   const std::uint64_t k = key(K, M, cutoff_hz);
-  std::ifstream in(file(k), std::ios::binary);
-  if (!in) return std::nullopt;
+  const int fd = ::open(file(k).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return std::nullopt;
+  struct stat st{};
+  if (::fstat(fd, &st) != 0 || st.st_size < static_cast<off_t>(sizeof(Header))) {
+    ::close(fd);
+    return std::nullopt;
+  }
+  const std::size_t bytes = static_cast<std::size_t>(st.st_size);
+  void* map = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+  ::close(fd);
+  if (map == MAP_FAILED) return std::nullopt;
+  std::shared_ptr<const void> owner(map, [bytes](const void* p) { ::munmap(const_cast<void*>(p), bytes); });
   Header hd{};
-  if (!in.read(reinterpret_cast<char*>(&hd), sizeof hd)) return std::nullopt;
+  std::memcpy(&hd, map, sizeof hd);
   if (std::memcmp(hd.magic, kMagic, sizeof kMagic) != 0 || hd.key != k || hd.n != K.rows() || hd.m < 0 ||
       hd.m > hd.n || std::memcmp(&hd.cutoff, &cutoff_hz, 8) != 0)
     return std::nullopt;
-  Modes m;
-  m.omega2.resize(hd.m);
-  m.phi.resize(hd.n, hd.m);
-  if (!in.read(reinterpret_cast<char*>(m.omega2.data()), static_cast<std::streamsize>(sizeof(double) * hd.m)) ||
-      !in.read(reinterpret_cast<char*>(m.phi.data()), static_cast<std::streamsize>(sizeof(double) * hd.n * hd.m)))
-    return std::nullopt;
-  if (in.peek() != std::char_traits<char>::eof() || checksum(m) != hd.checksum) return std::nullopt;
-  return m;
+  const std::size_t m = static_cast<std::size_t>(hd.m), count = static_cast<std::size_t>(hd.n) * m;
+  if (bytes != sizeof hd + sizeof(double) * (m + count)) return std::nullopt;  // cut short, or extra data
+  const double* omega2 = reinterpret_cast<const double*>(static_cast<const char*>(map) + sizeof hd);
+  if (checksum(omega2, m, omega2 + m, count) != hd.checksum) return std::nullopt;
+  StoredModes out;
+  out.omega2 = Eigen::Map<const Eigen::VectorXd>(omega2, hd.m);
+  out.phi = omega2 + m;
+  out.n = hd.n, out.m = hd.m;
+  out.owner = std::move(owner);
+  return out;
 }
 
 bool ModeStore::save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz,
@@ -123,7 +158,8 @@ bool ModeStore::save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMa
     hd.key = key(K, M, cutoff_hz);
     hd.n = modes.phi.rows(), hd.m = modes.phi.cols();
     hd.cutoff = cutoff_hz;
-    hd.checksum = checksum(modes);
+    hd.checksum = checksum(modes.omega2.data(), static_cast<std::size_t>(modes.omega2.size()), modes.phi.data(),
+                           static_cast<std::size_t>(modes.phi.size()));
     static std::atomic<unsigned> counter{0};
     const fs::path target = file(hd.key);
     const fs::path tmp = dir_ / fmt::format(".{}.{}.{}.tmp", target.filename().string(), ::getpid(), counter++);

@@ -126,30 +126,45 @@ void solve_kkt(const Model& model, double t, Workspace& ws) {
 }  // namespace
 
 namespace {
-// 3D: M + M_I = D + Σ b_k J_kᵀ J_k with D block-diagonal (m I and M_pp per body). The inerter terms
-// become Schur rows of their own, μ_k = b_k J_k q̈ (eq. 3.33 read backwards):
+// M + M_I = D + Σ b_k J_kᵀ J_k with D block-diagonal (3D: m I and M_pp per body; 2D: diag(m, m, I)).
+// The inerter terms become Schur rows of their own, μ_k = b_k J_k q̈ (eq. 3.33 read backwards):
 //   [C_q; J] D⁻¹ [C_q; J]ᵀ [λ; μ] + diag(0, 1/b) [λ; μ] = [C_q; J] D⁻¹ Q − [c; 0],
 //   q̈ = D⁻¹ (Q − C_qᵀ λ − Jᵀ μ),
 // the same q̈ and λ as the dense solve without factorising the n×n matrix. D = L Lᵀ block by block,
 // so the Schur matrix is YᵀY (+ the diagonal) with Y = L⁻¹ [C_qᵀ Jᵀ]. False: use the dense solve.
-bool solve_spatial(const Model& model, double t, Workspace& ws) {
+// B: coordinates a body (3 in 2D, 7 in 3D).
+template <int B>
+bool solve_blocks(const Model& model, double t, Workspace& ws) {
   const int nb = static_cast<int>(model.bodies.size()), m = model.n_solved_rows();
   const int r = static_cast<int>(ws.rank1.size()), k = m + r;
+  if (k + 1 > ws.YB.cols()) return false;
   for (int b = 0; b < nb; ++b) {
-    if (!(model.bodies[static_cast<std::size_t>(b)].mass > 0)) return false;
-    const auto d = ws.llt_p[static_cast<std::size_t>(b)].matrixLLT().diagonal();
-    if (ws.llt_p[static_cast<std::size_t>(b)].info() != Eigen::Success || !(d.minCoeff() > 1e-7 * d.maxCoeff()))
-      return false;
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (!(body.mass > 0)) return false;
+    if constexpr (B == 7) {
+      const auto d = ws.llt_p[static_cast<std::size_t>(b)].matrixLLT().diagonal();
+      if (ws.llt_p[static_cast<std::size_t>(b)].info() != Eigen::Success || !(d.minCoeff() > 1e-7 * d.maxCoeff()))
+        return false;
+    } else {  // the dense solve's pivot test on L = diag(√m, √m, √I)
+      if (!(body.inertia > 0) || !(std::sqrt(std::min(body.mass, body.inertia) / std::max(body.mass, body.inertia)) > 1e-7))
+        return false;
+    }
   }
   // Each row of [C_q; J] touches at most two bodies: Y is built, and every product below runs, over
-  // those 7-blocks only (the other blocks of Y are never read).
+  // those blocks only (the other blocks of Y are never read).
   for (int i = 0; i < r; ++i)
     ws.row_bodies[static_cast<std::size_t>(m + i)] = {ws.rank1[static_cast<std::size_t>(i)].body_i,
                                                       ws.rank1[static_cast<std::size_t>(i)].body_j};
   auto YZ = ws.YB.leftCols(k + 1);
-  auto L_solve = [&](auto&& v, int b) {  // v (a 7-block of body b) ← L_b⁻¹ v
-    v.template head<3>() /= std::sqrt(model.bodies[static_cast<std::size_t>(b)].mass);
-    ws.llt_p[static_cast<std::size_t>(b)].matrixL().solveInPlace(v.template tail<4>());
+  auto L_solve = [&](auto&& v, int b) {  // v (the block of body b) ← L_b⁻¹ v
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if constexpr (B == 7) {
+      v.template head<3>() /= std::sqrt(body.mass);
+      ws.llt_p[static_cast<std::size_t>(b)].matrixL().solveInPlace(v.template tail<4>());
+    } else {
+      v.template head<2>() /= std::sqrt(body.mass);
+      v[2] /= std::sqrt(body.inertia);
+    }
   };
   for (int i = 0; i < k; ++i) {
     const Workspace::Rank1* R = i < m ? nullptr : &ws.rank1[static_cast<std::size_t>(i - m)];
@@ -157,16 +172,16 @@ bool solve_spatial(const Model& model, double t, Workspace& ws) {
     for (int e = 0; e < 2; ++e) {
       const int b = bodies[static_cast<std::size_t>(e)];
       if (b < 0) continue;
-      auto v = YZ.col(i).segment<7>(7 * b);
+      auto v = YZ.col(i).template segment<B>(B * b);
       if (R)
-        v = e == 0 ? R->J.head<7>() : R->J.tail<7>();
+        v = R->J.template segment<B>(B * e);
       else
-        v = ws.Cq.row(i).segment<7>(7 * b).transpose();
+        v = ws.Cq.row(i).template segment<B>(B * b).transpose();
       L_solve(v, b);
     }
   }
   YZ.col(k) = ws.Q;
-  for (int b = 0; b < nb; ++b) L_solve(YZ.col(k).segment<7>(7 * b), b);
+  for (int b = 0; b < nb; ++b) L_solve(YZ.col(k).template segment<B>(B * b), b);
   const auto Y = YZ.leftCols(k);
   auto z = YZ.col(k);
   if (k > 0) {
@@ -177,7 +192,8 @@ bool solve_spatial(const Model& model, double t, Workspace& ws) {
         const auto& bj = ws.row_bodies[static_cast<std::size_t>(j)];
         double s = 0;
         for (int b : bi)
-          if (b >= 0 && (b == bj[0] || b == bj[1])) s += Y.col(i).segment<7>(7 * b).dot(Y.col(j).segment<7>(7 * b));
+          if (b >= 0 && (b == bj[0] || b == bj[1]))
+            s += Y.col(i).template segment<B>(B * b).dot(Y.col(j).template segment<B>(B * b));
         S(i, j) = s;
       }
     }
@@ -191,20 +207,26 @@ bool solve_spatial(const Model& model, double t, Workspace& ws) {
     for (int i = 0; i < k; ++i) {
       double s = 0;
       for (int b : ws.row_bodies[static_cast<std::size_t>(i)])
-        if (b >= 0) s += Y.col(i).segment<7>(7 * b).dot(z.segment<7>(7 * b));
+        if (b >= 0) s += Y.col(i).template segment<B>(B * b).dot(z.template segment<B>(B * b));
       lm[i] = s;
     }
     lm.head(m) -= ws.c.head(m);
     ws.llt_SB.solveInPlace(lm);
     for (int i = 0; i < k; ++i)
       for (int b : ws.row_bodies[static_cast<std::size_t>(i)])
-        if (b >= 0) z.segment<7>(7 * b) -= Y.col(i).segment<7>(7 * b) * lm[i];
+        if (b >= 0) z.template segment<B>(B * b) -= Y.col(i).template segment<B>(B * b) * lm[i];
     ws.lambda = lm.head(m);
   }
   ws.qdd = z;
   for (int b = 0; b < nb; ++b) {
-    ws.qdd.segment<3>(7 * b) /= std::sqrt(model.bodies[static_cast<std::size_t>(b)].mass);
-    ws.llt_p[static_cast<std::size_t>(b)].matrixU().solveInPlace(ws.qdd.segment<4>(7 * b + 3));
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if constexpr (B == 7) {
+      ws.qdd.template segment<3>(7 * b) /= std::sqrt(body.mass);
+      ws.llt_p[static_cast<std::size_t>(b)].matrixU().solveInPlace(ws.qdd.template segment<4>(7 * b + 3));
+    } else {
+      ws.qdd.template segment<2>(3 * b) /= std::sqrt(body.mass);
+      ws.qdd[3 * b + 2] /= std::sqrt(body.inertia);
+    }
   }
   return true;
 }
@@ -227,7 +249,7 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
       Qp += kappa(model.bodies[k]) * f.p * ws.c[model.norm_row(static_cast<int>(k))];
     }
   const int m = model.n_solved_rows();
-  if (model.spatial() && solve_spatial(model, t, ws)) return;
+  if (model.spatial() ? solve_blocks<7>(model, t, ws) : solve_blocks<3>(model, t, ws)) return;
 
   // Schur complement: (M + M_I) = L Lᵀ, S = C_q (M + M_I)⁻¹ C_qᵀ, S λ = C_q (M + M_I)⁻¹ Q − c,
   // q̈ = (M + M_I)⁻¹ (Q − C_qᵀ λ).

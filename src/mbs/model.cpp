@@ -169,10 +169,11 @@ Workspace::Workspace(const Model& model) {
   sol = Eigen::VectorXd::Zero(n + ms);
   lu = Eigen::PartialPivLU<Eigen::MatrixXd>(n + ms);
   nc_ = model.body_coords();
-  if (model.spatial()) {
-    const int r = static_cast<int>(model.forces.size());  // at most one inerter term per element
-    rank1.reserve(model.forces.size());
-    llt_p.resize(model.bodies.size());
+  {  // the block solve (dynamics.cpp, solve_blocks)
+    // At most three mass terms an element (an actuator's network and its piston mass in x and y).
+    const int r = 3 * static_cast<int>(model.forces.size());
+    rank1.reserve(static_cast<std::size_t>(r));
+    if (model.spatial()) llt_p.resize(model.bodies.size());
     YB = Eigen::MatrixXd::Zero(n, ms + r + 1);
     SB = Eigen::MatrixXd::Zero(ms + r, ms + r);
     lm = Eigen::VectorXd::Zero(ms + r);
@@ -206,7 +207,7 @@ void Workspace::add_Q(int body_i, int body_j, const VecJ& f) {
 }
 
 void Workspace::add_M(int body_i, int body_j, const VecJ& J, double b) {
-  if (nc_ == 7 && b != 0) rank1.push_back({body_i, body_j, J, b});
+  if (b != 0) rank1.push_back({body_i, body_j, J, b});
   const int body[2] = {body_i, body_j};
   for (int a = 0; a < 2; ++a) {
     if (body[a] < 0) continue;

@@ -57,9 +57,13 @@ struct BandInverse {
 /// flexibility needs: K₀⁻¹ within the band and its columns at the "special" DOFs (each dropper's
 /// messenger and contact-wire ends, then the absorbing ends).
 struct FeWindowModes {
+  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Eigen::SparseMatrix<double> M, K;
   Eigen::VectorXd omega2;  ///< m
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> phi;  ///< n_w × m, a DOF a row
+  /// n_w × m, a DOF a row: in memory of its own or in a mapping of the mode store's file (`phi_owner`).
+  Eigen::Map<const RowMatrix> phi{nullptr, 0, 0};
+  std::shared_ptr<const void> phi_owner;
+  void set_phi(std::shared_ptr<const void> owner, const double* data, Eigen::Index n, Eigen::Index m);
   int kd = 0;                    ///< half bandwidth of K
   std::vector<double> cholesky;  ///< K = L Lᵀ, LAPACK lower band storage
   BandInverse band;              ///< K⁻¹ within the band
@@ -114,9 +118,9 @@ class FeModalLine {
   mutable std::atomic<int> solved_{0}, loaded_{0};
   std::shared_ptr<FeWindow> structure(int first_span, int spans, Eigen::SparseMatrix<double>& K,
                                       Eigen::SparseMatrix<double>& M) const;
-  /// Its modes (`given`: modes of the same matrices found otherwise), factor and residual data.
+  /// Its modes (`given`: modes of the same matrices found otherwise, moved from), factor and residual data.
   std::shared_ptr<const FeWindowModes> decompose(const FeWindow& w, Eigen::SparseMatrix<double> K,
-                                                 Eigen::SparseMatrix<double> M, const Modes* given = nullptr) const;
+                                                 Eigen::SparseMatrix<double> M, Modes* given = nullptr) const;
   std::vector<std::pair<int, double>> mirror(const FeWindow& a, const FeWindow& b) const;
   std::shared_ptr<const FeWindowModes> find_shape(const Eigen::SparseMatrix<double>& K,
                                                   const Eigen::SparseMatrix<double>& M) const;

@@ -8,15 +8,28 @@
 // data, so a file that does not match (another line, a truncated or damaged file) is ignored and the
 // modes are computed. Files are written under a temporary name and renamed (processes sharing the
 // directory never read a partial file). The loaded modes are the computed ones bit for bit, so
-// results do not depend on whether the store was used.
+// results do not depend on whether the store was used. A file is read by mapping it into memory
+// (read-only, private): no copy, and processes on one machine share its pages. Files are replaced
+// by renaming and removed by unlinking, so a mapping stays valid; a file cut short by hand while a
+// run maps it is the one thing the store cannot guard against.
 #include <Eigen/Sparse>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 namespace inerta::catenary {
 
 struct Modes;
+
+/// Modes read from the store: ω² and Φ (n × m, row-major) in a mapping of the file kept alive by
+/// `owner`.
+struct StoredModes {
+  Eigen::VectorXd omega2;
+  std::shared_ptr<const void> owner;
+  const double* phi = nullptr;
+  Eigen::Index n = 0, m = 0;
+};
 
 class ModeStore {
  public:
@@ -30,7 +43,7 @@ class ModeStore {
                            double cutoff_hz);
   std::filesystem::path file(std::uint64_t key) const;
   /// The stored modes of (K, M, cutoff), or nothing (absent, or not matching).
-  std::optional<Modes> load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
+  std::optional<StoredModes> load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
                             double cutoff_hz) const;
   /// Stores them; true if written. A failure (read-only or full disk) only loses the cache. Beyond
   /// max_bytes in all, the least recently written files are removed.

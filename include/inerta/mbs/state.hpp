@@ -43,7 +43,7 @@ struct Workspace {
   Eigen::MatrixXd K;  ///< system matrix of eq. 4.12, (n+m)²
   Eigen::VectorXd rhs, sol;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
-  // Spatial models: M + M_I = D + Σ b J Jᵀ, D block-diagonal per body (dynamics.cpp, solve_spatial).
+  // M + M_I = D + Σ b J Jᵀ, D block-diagonal per body (dynamics.cpp, solve_blocks).
   struct Rank1 {
     int body_i, body_j;
     VecJ J;

@@ -1,0 +1,101 @@
+// The modal solve's dense kernels (modal_kernels.hpp).
+#include "modal_kernels.hpp"
+
+#include <Eigen/Dense>
+
+namespace inerta::catenary::kernels {
+
+namespace {
+
+using Rows = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>, 0, Eigen::OuterStride<>>;
+
+// Baseline (Eigen's products, SSE2 on x86-64).
+void rows_dot_base(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, double* y) {
+  const Rows a(A, rows, n, Eigen::OuterStride<>(lda));
+  Eigen::VectorXd t(rows);
+  for (int c = 0; c < C; ++c) {
+    t.noalias() = a * Eigen::Map<const Eigen::VectorXd>(x[c], n);
+    for (int r = 0; r < rows; ++r) y[r * C + c] = t[r];
+  }
+}
+void rows_axpy_base(const double* A, std::ptrdiff_t lda, int rows, int n, const double* coef, int C, double* const* y) {
+  const Rows a(A, rows, n, Eigen::OuterStride<>(lda));
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> k(coef, rows, C);
+  for (int c = 0; c < C; ++c) Eigen::Map<Eigen::VectorXd>(y[c], n).noalias() += a.transpose() * k.col(c);
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+// AVX2 + FMA: four doubles a vector (GCC vector extensions; unaligned loads).
+#define INERTA_HAVE_AVX2 1
+typedef double v4 __attribute__((vector_size(32), aligned(8)));
+#define INERTA_LD(p) (*reinterpret_cast<const v4*>(p))
+#define INERTA_ST(p) (*reinterpret_cast<v4*>(p))
+
+__attribute__((target("arch=x86-64-v3"))) void rows_dot_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
+                                                               const double* const* x, int C, double* y) {
+  const int n8 = n - n % 8;
+  for (int r = 0; r < rows; ++r) {
+    const double* a = A + r * lda;
+    for (int c0 = 0; c0 < C; c0 += 2) {  // two vectors a pass: the row is read at most twice
+      const bool two = c0 + 1 < C;
+      const double* x0 = x[c0];
+      const double* x1 = two ? x[c0 + 1] : x[c0];
+      v4 s0 = {}, s0b = {}, s1 = {}, s1b = {};
+      for (int i = 0; i < n8; i += 8) {
+        const v4 a0 = INERTA_LD(a + i), a1 = INERTA_LD(a + i + 4);
+        s0 += a0 * INERTA_LD(x0 + i);
+        s0b += a1 * INERTA_LD(x0 + i + 4);
+        s1 += a0 * INERTA_LD(x1 + i);
+        s1b += a1 * INERTA_LD(x1 + i + 4);
+      }
+      s0 += s0b, s1 += s1b;
+      double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]), t1 = (s1[0] + s1[2]) + (s1[1] + s1[3]);
+      for (int i = n8; i < n; ++i) t0 += a[i] * x0[i], t1 += a[i] * x1[i];
+      y[r * C + c0] = t0;
+      if (two) y[r * C + c0 + 1] = t1;
+    }
+  }
+}
+
+__attribute__((target("arch=x86-64-v3"))) void rows_axpy_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
+                                                                const double* coef, int C, double* const* y) {
+  const int n4 = n - n % 4;
+  for (int r = 0; r < rows; ++r) {
+    const double* a = A + r * lda;
+    for (int c = 0; c < C; ++c) {
+      const double k = coef[r * C + c];
+      if (k == 0) continue;
+      double* yc = y[c];
+      const v4 kv = {k, k, k, k};
+      for (int i = 0; i < n4; i += 4) INERTA_ST(yc + i) = INERTA_LD(yc + i) + kv * INERTA_LD(a + i);
+      for (int i = n4; i < n; ++i) yc[i] += k * a[i];
+    }
+  }
+}
+
+bool avx2() {
+  static const bool yes = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  }();
+  return yes;
+}
+#endif
+
+}  // namespace
+
+void rows_dot(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, double* y) {
+#ifdef INERTA_HAVE_AVX2
+  if (avx2()) return rows_dot_avx2(A, lda, rows, n, x, C, y);
+#endif
+  rows_dot_base(A, lda, rows, n, x, C, y);
+}
+
+void rows_axpy(const double* A, std::ptrdiff_t lda, int rows, int n, const double* coef, int C, double* const* y) {
+#ifdef INERTA_HAVE_AVX2
+  if (avx2()) return rows_axpy_avx2(A, lda, rows, n, coef, C, y);
+#endif
+  rows_axpy_base(A, lda, rows, n, coef, C, y);
+}
+
+}  // namespace inerta::catenary::kernels
