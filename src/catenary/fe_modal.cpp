@@ -597,7 +597,7 @@ class ModalSolver final : public FeLineSolver {
     contact_w_.assign(nc, 0.0);
     for (std::size_t e = 0; e < win_->ends.size(); ++e)  // the dashpots: F = −c v = c vt − c c1 u
       smods_[nd + e].coeff = ap * win_->ends[e].damping * md.phi.row(win_->ends[e].local).dot(vt_);
-    x0_ = r_.cwiseQuotient(A_);
+    x0_ = r_.cwiseProduct(invA_);
     // Displacements without the set (Wx0: contacts, then specials; D0: droppers), the prescribed
     // forces' residual included.
     const Eigen::Index N = static_cast<Eigen::Index>(nc + ns);
@@ -607,7 +607,7 @@ class ModalSolver final : public FeLineSolver {
     const Eigen::Index m = A_.size();
     xz_.resize(m, static_cast<Eigen::Index>(1 + nc));
     xz_.col(0) = x0_;
-    for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(1 + c)) = mods_[c].p.cwiseQuotient(A_) - mods_[c].pw / ap;
+    for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(1 + c)) = mods_[c].p.cwiseProduct(dz_);  // A⁻¹p − Ω⁻²p/(1+α)
     dxz_.resize(static_cast<Eigen::Index>(nd), xz_.cols());
     for (Eigen::Index k0 = 0; k0 < xz_.cols(); k0 += 4) {  // the droppers' rows read once for up to 4 vectors
       const int C = static_cast<int>(std::min<Eigen::Index>(4, xz_.cols() - k0));
@@ -634,7 +634,7 @@ class ModalSolver final : public FeLineSolver {
       const Mod& mc = mods_[c];
       const auto zc = xz_.col(static_cast<Eigen::Index>(1 + c));  // Z part and the modal part of the residual
       Eigen::VectorXd col(N);
-      for (std::size_t c2 = 0; c2 < nc; ++c2) col[static_cast<Eigen::Index>(c2)] = mods_[c2].p.dot(mc.p.cwiseQuotient(A_)) + residual(mods_[c2], mc) / ap;
+      for (std::size_t c2 = 0; c2 < nc; ++c2) col[static_cast<Eigen::Index>(c2)] = mods_[c2].p.dot(mc.p.cwiseProduct(invA_)) + residual(mods_[c2], mc) / ap;
       const auto dz = dxz_.col(static_cast<Eigen::Index>(1 + c));
       for (std::size_t j = 0; j < nd; ++j)
         col[static_cast<Eigen::Index>(nc + j)] = dz[static_cast<Eigen::Index>(j)] + (mc.ks[static_cast<Eigen::Index>(2 * j)] - mc.ks[static_cast<Eigen::Index>(2 * j + 1)]) / ap;
@@ -700,12 +700,13 @@ class ModalSolver final : public FeLineSolver {
       if (!changed) break;
     }
     // The modal solution: u = x0 + Σ coef_j A⁻¹ p_j.
-    u_ = x0_;
+    sum_.setZero(x0_.size());
     for (std::size_t j = 0; j < set_.size(); ++j) {
       const int sj = set_[j];
       const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
-      u_ += (coef_[static_cast<Eigen::Index>(j)] / A_.array()).matrix().cwiseProduct(m.p);
+      sum_ += coef_[static_cast<Eigen::Index>(j)] * m.p;
     }
+    u_ = x0_ + invA_.cwiseProduct(sum_);
     const Eigen::VectorXd a1 = c0_ * (u_ - q_) - c2_ * qd_ - c3_ * qdd_;
     qd_ = c1_ * (u_ - q_) - c4_ * qd_ - c5_ * qdd_;
     qdd_ = a1;
@@ -841,7 +842,7 @@ class ModalSolver final : public FeLineSolver {
         m.p += sh.N[static_cast<std::size_t>(a)] * md.phi.row(l).transpose();
         m.ks += sh.N[static_cast<std::size_t>(a)] * md.kinv_special.row(l).transpose();
       }
-    m.pw = m.p.cwiseQuotient(md.omega2);
+    m.pw = m.p.cwiseProduct(invw2_);
     m.d = d, m.coeff = coeff;
     return m;
   }
@@ -870,7 +871,7 @@ class ModalSolver final : public FeLineSolver {
       m.p -= md.phi.row(lj).transpose();
       m.ks -= md.kinv_special.row(lj).transpose();
     }
-    m.pw = m.p.cwiseQuotient(md.omega2);
+    m.pw = m.p.cwiseProduct(invw2_);
     m.d = d, m.coeff = coeff;
     return m;
   }
@@ -908,6 +909,8 @@ class ModalSolver final : public FeLineSolver {
     const double ap = 1 + alpha_;
     damp_ = (d.rayleigh_mass + d.rayleigh_stiffness * md.omega2.array()).matrix();
     A_ = (c0_ + ap * (c1_ * damp_.array() + md.omega2.array())).matrix();
+    invA_ = A_.cwiseInverse(), invw2_ = md.omega2.cwiseInverse();
+    dz_ = invA_ - invw2_ / ap;
     droppers_ = win_->droppers;
     const auto& drs = L_.droppers();
     dropper_p_.resize(static_cast<Eigen::Index>(droppers_.size()), md.omega2.size());
@@ -928,7 +931,7 @@ class ModalSolver final : public FeLineSolver {
     dws_.resize(nd, ns);
     for (Eigen::Index t = 0; t < ns; ++t) {
       const Mod& mt = smods_[static_cast<std::size_t>(t)];
-      const Eigen::VectorXd zt = mt.p.cwiseQuotient(A_) - mt.pw / ap;
+      const Eigen::VectorXd zt = mt.p.cwiseProduct(dz_);
       for (Eigen::Index s2 = 0; s2 < ns; ++s2) {
         const Mod& ms = smods_[static_cast<std::size_t>(s2)];
         double k = 0;
@@ -985,7 +988,7 @@ class ModalSolver final : public FeLineSolver {
   double h_ = 0, alpha_ = 0, beta_ = 0, gamma_ = 0, c0_ = 0, c1_ = 0, c2_ = 0, c3_ = 0, c4_ = 0, c5_ = 0;
   double t_ = 0;
   std::shared_ptr<const FeWindow> win_;
-  Eigen::VectorXd q_, qd_, qdd_, qi_, damp_, A_;
+  Eigen::VectorXd q_, qd_, qdd_, qi_, damp_, A_, invA_, invw2_, dz_;  // dz_ = A⁻¹ − Ω⁻²/(1+α)
   std::vector<int> droppers_;  // global indices of the window's droppers
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> dropper_p_;  // a row per window dropper: Φᵀ(e_m − e_c)
   std::vector<char> slack_;    // per dropper of the line
@@ -995,7 +998,7 @@ class ModalSolver final : public FeLineSolver {
   std::map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
   // Step scratch.
   std::vector<double> xs_;
-  Eigen::VectorXd w1_, vt_, r_, x0_, u_, du_, coef_;
+  Eigen::VectorXd w1_, vt_, r_, x0_, u_, du_, coef_, sum_;
   std::vector<Mod> mods_;
   std::vector<Contact> contacts_;
   std::vector<int> set_;
