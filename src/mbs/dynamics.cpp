@@ -240,7 +240,16 @@ void accelerations(const Model& model, double t, const State& x, Workspace& ws) 
   // Baumgarte, eq. 4.11: C_q q̈ = Q_d − 2α Ċ − β² C, with Ċ = C_q q̇ + C_t.
   const double a = model.options.alpha, b = model.options.beta;
   ws.c.noalias() = ws.gamma - 2 * a * ws.Ct - b * b * ws.C;
-  ws.c.noalias() -= 2 * a * (ws.Cq * x.qd);
+  if (model.spatial()) {
+    ws.c.noalias() -= 2 * a * (ws.Cq * x.qd);
+  } else if (a != 0) {  // a row of C_q touches at most its joint's two bodies
+    for (int i = 0; i < static_cast<int>(ws.c.size()); ++i) {
+      double s = 0;
+      for (int body : ws.row_bodies[static_cast<std::size_t>(i)])
+        if (body >= 0) s += ws.Cq.row(i).segment<3>(3 * body).dot(x.qd.segment<3>(3 * body));
+      ws.c[i] -= 2 * a * s;
+    }
+  }
   if (model.spatial())  // the normalisation rows, eliminated (spatial_masses)
     for (std::size_t k = 0; k < model.bodies.size(); ++k) {
       const SpatialFrame& f = ws.sframes[k];
