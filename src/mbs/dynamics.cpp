@@ -126,6 +126,15 @@ void solve_kkt(const Model& model, double t, Workspace& ws) {
 }  // namespace
 
 namespace {
+// Σ a_p b_p, p < n, in four independent sums (the short dot products of the Schur factorisation).
+inline double dot4(const double* a, const double* b, int n) {
+  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int p = 0;
+  for (; p + 4 <= n; p += 4) s0 += a[p] * b[p], s1 += a[p + 1] * b[p + 1], s2 += a[p + 2] * b[p + 2], s3 += a[p + 3] * b[p + 3];
+  for (; p < n; ++p) s0 += a[p] * b[p];
+  return (s0 + s1) + (s2 + s3);
+}
+
 // M + M_I = D + Σ b_k J_kᵀ J_k with D block-diagonal (3D: m I and M_pp per body; 2D: diag(m, m, I)).
 // The inerter terms become Schur rows of their own, μ_k = b_k J_k q̈ (eq. 3.33 read backwards):
 //   [C_q; J] D⁻¹ [C_q; J]ᵀ [λ; μ] + diag(0, 1/b) [λ; μ] = [C_q; J] D⁻¹ Q − [c; 0],
@@ -185,24 +194,37 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
   const auto Y = YZ.leftCols(k);
   auto z = YZ.col(k);
   if (k > 0) {
-    auto S = ws.SB.topLeftCorner(k, k);
+    // S in ws.SB's storage as a row-major k × k lower triangle, factorised in place (S = L Lᵀ): at
+    // this size a plain Cholesky beats the library's blocked one by its call overheads.
+    double* S = ws.SB.data();
+    auto at = [&](int i, int j) -> double& { return S[static_cast<std::ptrdiff_t>(i) * k + j]; };
     for (int i = 0; i < k; ++i) {
       const auto& bi = ws.row_bodies[static_cast<std::size_t>(i)];
-      for (int j = 0; j <= i; ++j) {  // lower triangle: all LLT reads
+      for (int j = 0; j <= i; ++j) {
         const auto& bj = ws.row_bodies[static_cast<std::size_t>(j)];
         double s = 0;
         for (int b : bi)
           if (b >= 0 && (b == bj[0] || b == bj[1]))
             s += Y.col(i).template segment<B>(B * b).dot(Y.col(j).template segment<B>(B * b));
-        S(i, j) = s;
+        at(i, j) = s;
       }
     }
-    for (int i = 0; i < r; ++i) S(m + i, m + i) += 1.0 / ws.rank1[static_cast<std::size_t>(i)].b;
-    ws.llt_SB.compute(S);
-    const auto dS = ws.llt_SB.matrixLLT().diagonal();
-    if (ws.llt_SB.info() != Eigen::Success) singular(t, "the constraint Jacobian C_q", 0.0);
-    if (!(dS.minCoeff() > 1e-7 * dS.maxCoeff()))
-      singular(t, "the constraint Jacobian C_q", dS.maxCoeff() > 0 ? std::pow(dS.minCoeff() / dS.maxCoeff(), 2) : 0.0);
+    for (int i = 0; i < r; ++i) at(m + i, m + i) += 1.0 / ws.rank1[static_cast<std::size_t>(i)].b;
+    double dmin = 0, dmax = 0;
+    for (int j = 0; j < k; ++j) {
+      const double* lj = S + static_cast<std::ptrdiff_t>(j) * k;
+      double d = lj[j] - dot4(lj, lj, j);
+      if (!(d > 0)) singular(t, "the constraint Jacobian C_q", 0.0);
+      d = std::sqrt(d);
+      at(j, j) = d;
+      dmin = j == 0 ? d : std::min(dmin, d), dmax = std::max(dmax, d);
+      const double inv = 1 / d;
+      for (int i = j + 1; i < k; ++i) {
+        const double* li = S + static_cast<std::ptrdiff_t>(i) * k;
+        at(i, j) = (li[j] - dot4(li, lj, j)) * inv;
+      }
+    }
+    if (!(dmin > 1e-7 * dmax)) singular(t, "the constraint Jacobian C_q", dmax > 0 ? std::pow(dmin / dmax, 2) : 0.0);
     auto lm = ws.lm.head(k);
     for (int i = 0; i < k; ++i) {
       double s = 0;
@@ -211,7 +233,14 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
       lm[i] = s;
     }
     lm.head(m) -= ws.c.head(m);
-    ws.llt_SB.solveInPlace(lm);
+    for (int i = 0; i < k; ++i) {  // L y = b, then Lᵀ x = y
+      lm[i] = (lm[i] - dot4(S + static_cast<std::ptrdiff_t>(i) * k, lm.data(), i)) / at(i, i);
+    }
+    for (int i = k - 1; i >= 0; --i) {
+      double v = lm[i];
+      for (int p = i + 1; p < k; ++p) v -= at(p, i) * lm[p];
+      lm[i] = v / at(i, i);
+    }
     for (int i = 0; i < k; ++i)
       for (int b : ws.row_bodies[static_cast<std::size_t>(i)])
         if (b >= 0) z.template segment<B>(B * b) -= Y.col(i).template segment<B>(B * b) * lm[i];

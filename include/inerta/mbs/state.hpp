@@ -51,8 +51,8 @@ struct Workspace {
   };
   std::vector<Rank1> rank1;                        ///< the inerter terms of this evaluation (capacity reserved)
   std::vector<Eigen::LLT<Eigen::Matrix4d>> llt_p;  ///< per body, its rotational block M_pp = L Lᵀ
-  Eigen::MatrixXd YB, SB;                          ///< [Y z] and the Schur matrix with the inerter rows
-  Eigen::LLT<Eigen::MatrixXd> llt_SB;
+  Eigen::MatrixXd YB;                              ///< [Y z]
+  Eigen::MatrixXd SB;  ///< storage of the Schur matrix with the inerter rows and its Cholesky factor
   Eigen::VectorXd lm;                          ///< [λ; μ]
   std::vector<std::array<int, 2>> row_bodies;  ///< the two bodies of each Schur row (−1: ground)
   Eigen::VectorXd qdd;                         ///< result: accelerations
