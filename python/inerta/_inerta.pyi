@@ -1141,6 +1141,7 @@ class Study:
     def coarse(self) -> Optional[Study]: ...
     refine: SearchOptions
     worst_speed_first: bool
+    refine_candidates: int
     @property
     def all_networks(self) -> bool: ...
     def replace(self, *, speeds: Optional[ArrayLike] = None, layouts: Optional[Sequence[str]] = None,
@@ -1181,6 +1182,8 @@ class LayoutResult:
     coarse_cost: StudyCost
     coarse_here: StudyCost
     coarse_evaluations: int
+    ends: list[tuple[dict[str, float], float]]
+    refined_from: int
     def network(self) -> Network: ...
 
 def default_suspension(study: Study) -> Network: ...

@@ -121,6 +121,8 @@ void bind_optim(py::module_& m) {
       .def_readonly("refine", &Study::refine, "multi-fidelity: the refinement's search options")
       .def_readonly("worst_speed_first", &Study::worst_speed_first,
                     "multi-fidelity: the refinement first at the start's worst speed only")
+      .def_readonly("refine_candidates", &Study::refine_candidates,
+                    "multi-fidelity: the refinement starts from this many best coarse end points")
       .def_property_readonly("all_networks", [](const Study& s) { return s.all.has_value(); },
                              "`layouts: all`: the layouts are every network the study's networks options allow")
       .def_readonly("operating_length", &Study::operating_length,
@@ -201,12 +203,16 @@ void bind_optim(py::module_& m) {
       .def_readonly("coarse_cost", &optim::LayoutResult::coarse_cost, "multi-fidelity: its cost on the coarse study")
       .def_readonly("coarse_here", &optim::LayoutResult::coarse_here, "multi-fidelity: its cost here, before the refinement")
       .def_readonly("coarse_evaluations", &optim::LayoutResult::coarse_evaluations)
+      .def_readonly("ends", &optim::LayoutResult::ends, "where each start of the search ended: (values, cost), best first")
+      .def_readonly("refined_from", &optim::LayoutResult::refined_from,
+                    "multi-fidelity: how many coarse end points the refinement started from")
       .def("network", [](const optim::LayoutResult& r) { return network::resolve(r.layout, r.values); },
            "the bound network of the optimum")
       .def(py::pickle(
           [](const optim::LayoutResult& r) {
             return py::make_tuple(r.layout, r.expression, r.values, r.cost, r.evaluations, r.unstable, r.budget_exhausted,
-                                  r.at_bounds, r.coarse_values, r.coarse_cost, r.coarse_here, r.coarse_evaluations);
+                                  r.at_bounds, r.coarse_values, r.coarse_cost, r.coarse_here, r.coarse_evaluations, r.ends,
+                                  r.refined_from);
           },
           [](const py::tuple& t) {
             optim::LayoutResult r;
@@ -216,6 +222,7 @@ void bind_optim(py::module_& m) {
             r.at_bounds = t[7].cast<std::vector<std::string>>(), r.coarse_values = t[8].cast<network::Params>();
             r.coarse_cost = t[9].cast<optim::StudyCost>(), r.coarse_here = t[10].cast<optim::StudyCost>();
             r.coarse_evaluations = t[11].cast<int>();
+            r.ends = t[12].cast<std::vector<std::pair<network::Params, double>>>(), r.refined_from = t[13].cast<int>();
             return r;
           }))
       .def("__repr__", [](const optim::LayoutResult& r) {

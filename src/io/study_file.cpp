@@ -81,6 +81,8 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
       s.hi = yaml_number(path, v, k);
     else if (k == "worst_speed_first" && refine)
       s.worst_speed_first = yaml_bool(path, v, k);
+    else if (k == "candidates" && refine)
+      s.refine_candidates = static_cast<int>(yaml_integer(path, v, k, 1, 100));
     else if (k == "initial_step" && refine)
       o.initial_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
     else if (k == "min_step")
@@ -89,7 +91,7 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
       o.max_evaluations = static_cast<int>(yaml_integer(path, v, k, 1, 100000000));
     else
       yaml_fail(path, it->first, k,
-                refine ? "unknown key in refine; expected initial_step, min_step, max_evaluations, worst_speed_first"
+                refine ? "unknown key in refine; expected initial_step, min_step, max_evaluations, worst_speed_first, candidates"
                        : "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
   }
   if (!refine && (!(s.lo > 0) || !(s.hi > s.lo))) yaml_fail(path, se, "search", "expected 0 < lo < hi (SI units)");

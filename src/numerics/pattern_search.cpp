@@ -148,6 +148,7 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
     }
     total += evals;
     if (step >= o.min_step) best.exhausted = true;  // stopped by the budget, not by the mesh
+    best.ends.push_back({values_of(u), fu});
     if (fu < best.cost || best.values.empty()) {  // the first start stands even if nothing was finite
       best.cost = fu, best.u = u, best.values = values_of(u), best.best_start = start;
     }

@@ -191,9 +191,22 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     r.coarse_values = c.values, r.coarse_cost = c.cost, r.coarse_evaluations = c.evaluations;
     search = study.refine;
     search.starts = 0;
-    std::vector<double> start;
-    for (const auto& v : vars) start.push_back(c.values.count(v.name) ? c.values.at(v.name) : 0.0);
+    auto start_of = [&](const network::Params& p) {
+      std::vector<double> start;
+      for (const auto& v : vars) start.push_back(p.count(v.name) ? p.at(v.name) : 0.0);
+      return start;
+    };
+    const std::vector<double> start = start_of(c.values);
     search.initial_values = {start};
+    // Further candidates: the next best distinct end points of the coarse starts (finite cost).
+    for (const auto& [values, cost] : c.ends) {
+      if (static_cast<int>(search.initial_values.size()) >= study.refine_candidates) break;
+      const std::vector<double> s = start_of(values);
+      if (std::isfinite(cost) &&
+          std::find(search.initial_values.begin(), search.initial_values.end(), s) == search.initial_values.end())
+        search.initial_values.push_back(s);
+    }
+    r.refined_from = static_cast<int>(search.initial_values.size());
     try {
       r.coarse_here = evaluate(study, network::resolve(layout, params_of(start)));
     } catch (const NumericalError&) {
@@ -228,6 +241,12 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     best = s.values;
     r.evaluations = s.evaluations;
     r.budget_exhausted = s.exhausted;
+    for (const auto& e : s.ends) {
+      network::Params p = fixed;
+      for (const auto& [k, v] : params_of(e.values)) p[k] = v;
+      r.ends.push_back({p, e.cost});
+    }
+    std::stable_sort(r.ends.begin(), r.ends.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   }
   r.unstable = unstable;
   r.values = fixed;

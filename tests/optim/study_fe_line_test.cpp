@@ -4,6 +4,7 @@
 // errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "inerta/error.hpp"
@@ -137,6 +138,39 @@ TEST(StudyFidelity, ACoarseStudyIsRefinedFromItsOptimumAndNeverEndsWorse) {
   EXPECT_GE(rw.evaluations, 2);
 }
 
+TEST(StudyFidelity, TheRefinementCanStartFromTheBestFewCoarseEndPoints) {
+  // A coarse search of three starts ends at up to three points, best first. With candidates: 2 the
+  // refinement starts from the two best distinct ones: its first start is the one-candidate
+  // refinement step for step, so it ends no worse than it, with more evaluations, and no worse
+  // than either candidate evaluated here.
+  std::string text = kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100, unit: kmh}, "
+                               "search: {starts: 3, seed: 3, min_step: 0.3}}\n"
+                               "refine: {initial_step: 0.3, min_step: 0.15, max_evaluations: 8}\n";
+  text.replace(text.find("step: 100, unit: kmh}\nsearch"), 9, "step: 50");
+  const optim::Study one = io::load_study(write_study("fidelity_one.yaml", text));
+  EXPECT_EQ(one.refine_candidates, 1);
+  const optim::Study two = io::load_study(
+      write_study("fidelity_two.yaml", text.replace(text.find("max_evaluations: 8}"), 19, "max_evaluations: 8, candidates: 2}")));
+  ASSERT_EQ(two.refine_candidates, 2);
+  const optim::LayoutResult c = optim::optimise_layout(*two.coarse, "S2-4");
+  ASSERT_EQ(c.ends.size(), 3u);
+  for (std::size_t i = 1; i < c.ends.size(); ++i) EXPECT_LE(c.ends[i - 1].second, c.ends[i].second);
+  EXPECT_EQ(c.ends.front().first, c.values);
+  EXPECT_EQ(c.ends.front().second, c.cost.penalised());
+  std::vector<network::Params> distinct;
+  for (const auto& [values, cost] : c.ends)
+    if (std::isfinite(cost) && std::find(distinct.begin(), distinct.end(), values) == distinct.end()) distinct.push_back(values);
+  ASSERT_GE(distinct.size(), 2u) << "the three coarse starts should not all end at one point";
+  const optim::LayoutResult r1 = optim::optimise_layout(one, "S2-4");
+  const optim::LayoutResult r2 = optim::optimise_layout(two, "S2-4");
+  EXPECT_EQ(r1.refined_from, 1);
+  EXPECT_EQ(r2.refined_from, 2);
+  EXPECT_LE(r2.cost.penalised(), r1.cost.penalised());
+  EXPECT_GT(r2.evaluations, r1.evaluations);
+  for (int k = 0; k < 2; ++k)
+    EXPECT_LE(r2.cost.penalised(), optim::evaluate(two, network::resolve("S2-4", distinct[static_cast<std::size_t>(k)])).penalised());
+}
+
 TEST(StudyFidelity, AFiniteElementLineIsStudiedInTheTimeDomainWithItsSupportUplift) {
   const optim::Study s = io::load_study(write_study("fe_study.yaml", kFe + "limits: {support_uplift: 1.0}\n"));
   EXPECT_EQ(s.method, optim::Study::Method::Time);
@@ -197,6 +231,7 @@ TEST(StudyFidelity, FileErrorsOfTheNewKeys) {
   fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {starts: 3}\n", "unknown key in refine");
   fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {worst_speed_first: maybe}\n",
         "expected true or false");
+  fails(kLumped + "coarse: {speeds: {from: 100, to: 300, step: 100}}\nrefine: {candidates: 0}\n", "candidates");
 }
 
 TEST(StudyFidelity, AnUndampedInternalBranchIsFlaggedAsSlowToSettle) {

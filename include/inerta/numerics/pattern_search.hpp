@@ -51,6 +51,12 @@ struct Result {
   int evaluations = 0;  ///< all starts
   int best_start = 0;
   bool exhausted = false;  ///< some start stopped at max_evaluations before its mesh reached min_step
+  /// Where each start ended, in start order: decoded values and cost.
+  struct End {
+    std::vector<double> values;
+    double cost = 0;
+  };
+  std::vector<End> ends;
 };
 
 using Cost = std::function<double(const std::vector<double>& values)>;

@@ -55,6 +55,10 @@ struct Study {
   /// of the coarse optimum's worst σ on this study only (half the budget), then at every speed from
   /// that optimum on a finer mesh (the rest).
   bool worst_speed_first = false;
+  /// Multi-fidelity, `refine: {candidates: N}`: the refinement starts from the N best distinct end
+  /// points of the coarse search's starts (best first; fewer if fewer differ), each with `refine`'s
+  /// budget, and keeps the best (1: the coarse optimum only).
+  int refine_candidates = 1;
   pantograph::Pantograph pantograph;
   /// `pantographs: [0, 200]`: copies of the pantograph at these positions along the line, m (the time
   /// domain only); J2 and the limits are taken over every contact (the trailing one's too).
@@ -135,6 +139,10 @@ struct LayoutResult {
   int evaluations = 0;
   int unstable = 0;                     ///< designs the search refused as unstable (Floquet multiplier ≥ 1)
   bool budget_exhausted = false;        ///< the search stopped at max_evaluations (numerics::Result::exhausted)
+  /// Where each start of the search ended (values of every element, cost), best first: the
+  /// candidates a multi-fidelity refinement may start from.
+  std::vector<std::pair<network::Params, double>> ends;
+  int refined_from = 0;                 ///< multi-fidelity: the refinement starts it took (refine_candidates at most)
   std::vector<std::string> at_bounds;   ///< free values that ended on the search's limits (lo, hi, 0 or ∞)
 };
 
