@@ -1034,12 +1034,14 @@ int cmd_optimise(const OptimiseArgs& a) {
                study.search.starts, study.search.seed);
   else if (study.coarse)
     fmt::print("study {}: {} layouts; each searched on the coarse study ({} catenaries, {} speeds, {} starts, seed {}, {}), "
-               "then refined here ({} catenaries, {} speeds, {}; at most {} evaluations from the coarse optimum)\n",
+               "then refined here ({} catenaries, {} speeds, {}; at most {} evaluations from {})\n",
                study.name, study.layouts.size(), study.coarse->catenaries.size(), study.coarse->speeds.size(),
                study.coarse->search.starts, study.coarse->search.seed,
                study.coarse->method == optim::Study::Method::Time ? "time domain" : "periodic fast path",
                study.catenaries.size(), study.speeds.size(),
-               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study.refine.max_evaluations);
+               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study.refine.max_evaluations,
+               study.refine_candidates == 1 ? std::string("the coarse optimum")
+                                            : fmt::format("each of the {} best coarse end points", study.refine_candidates));
   else
     fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), {}\n", study.name,
                study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed,
@@ -1048,7 +1050,8 @@ int cmd_optimise(const OptimiseArgs& a) {
   if (const double e = optim::estimated_evaluation_seconds(study); e > 0) {
     // The time domain: its searches are bounded by their evaluations (refine.max_evaluations for
     // a multi-fidelity study, search.max_evaluations per start otherwise).
-    const long evals = study.coarse ? static_cast<long>(study.refine.max_evaluations) * static_cast<long>(study.layouts.size())
+    const long evals = study.coarse ? static_cast<long>(study.refine.max_evaluations) * study.refine_candidates *
+                                          static_cast<long>(study.layouts.size())
                                     : static_cast<long>(study.search.max_evaluations) * study.search.starts *
                                           static_cast<long>(study.layouts.size());
     if (e > 1) fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,

@@ -354,19 +354,19 @@ void FeCatenary::prepare(const std::vector<PantographOnLine>& pantographs) const
 }
 
 double FeCatenary::estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
-  // Measured on the reference machine (3-mass at 250 km/h, 5–160 spans): a direct step costs ≈ 35 ns
-  // per unknown of the line, a modal step ≈ 11 ns per unknown of the window, a pantograph ≈ 10 µs a
-  // step; a line's first window modes ≈ 1.5 s unless read from the mode store.
+  // Measured on the reference machine (3-mass and HSX, 5–160 spans): a direct step costs ≈ 35 ns per
+  // unknown of the line, a modal step ≈ 4 ns per unknown of the window, a pantograph ≈ 20 µs a step
+  // (3-mass ≈ 10, HSX ≈ 30); a line's first window modes ≈ 1.5 s unless read from the mode store.
   const FeCatenaryData& d = line_->data();
   double lo = line_->length(), hi = 0;
   for (const PantographOnLine& p : pantographs) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
   if (pantographs.empty()) lo = 0;
   const double T = t_end > 0 ? t_end : std::max(0.0, line_->length() - lo) / speed;
-  const double steps = T / d.time_step, per_pantograph = 10e-6 * static_cast<double>(pantographs.size());
+  const double steps = T / d.time_step, per_pantograph = 20e-6 * static_cast<double>(pantographs.size());
   if (!modal_) return steps * (35e-9 * line_->n_dofs() + per_pantograph);
   const double window = std::min(1.0, static_cast<double>(modal_->window_spans(std::max(0.0, hi - lo))) / d.spans);
   const double first_modes = modal_->decompositions() + modal_->loaded() == 0 ? 1.5 : 0.0;
-  return steps * (11e-9 * window * line_->n_dofs() + per_pantograph) + first_modes;
+  return steps * (4e-9 * window * line_->n_dofs() + per_pantograph) + first_modes;
 }
 
 Section FeCatenary::section() const {
