@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <unordered_map>
 #include <numbers>
 
 #include "inerta/error.hpp"
@@ -318,23 +319,21 @@ std::shared_ptr<const FeWindowModes> FeModalLine::find_shape(const Sparse& K, co
 }
 
 std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, Sparse K, Sparse M,
-                                                          Modes* given) const {
+                                                          const std::function<Modes()>& make) const {
   const FeLine& L = *line_;
   const int n = static_cast<int>(K.rows());
   auto md = std::make_shared<FeWindowModes>();
   const double cutoff = L.data().modal_cutoff;
   std::optional<StoredModes> stored;
-  if (!given && store_) stored = store_->load(K, M, cutoff);
+  if (store_) stored = store_->load(K, M, cutoff);
   if (stored) {
     ++loaded_;
     md->omega2 = std::move(stored->omega2);
     md->set_phi(std::move(stored->owner), stored->phi, stored->n, stored->m);
   } else {
-    Modes modes = given ? std::move(*given) : lowest_modes(K, M, cutoff);
-    if (!given) {
-      ++solved_;
-      if (store_) store_->save(K, M, cutoff, modes);
-    }
+    if (!make) ++solved_;
+    Modes modes = make ? make() : lowest_modes(K, M, cutoff);
+    if (store_) store_->save(K, M, cutoff, modes);
     md->omega2 = std::move(modes.omega2);
     auto phi = std::make_shared<const FeWindowModes::RowMatrix>(std::move(modes.phi));
     md->set_phi(phi, phi->data(), phi->rows(), phi->cols());
@@ -481,13 +480,16 @@ void FeModalLine::prepare(int spans) const {
     });
     tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t t) {
       if (mirror_of[t] < 0) return;
-      const FeWindowModes& src = *made[static_cast<std::size_t>(mirror_of[t])];
-      Modes m;
-      m.omega2 = src.omega2;
-      m.phi.resize(src.phi.rows(), src.phi.cols());
-      for (std::size_t i = 0; i < maps[t].size(); ++i)
-        m.phi.row(static_cast<Eigen::Index>(i)) = maps[t][i].second * src.phi.row(maps[t][i].first);
-      made[t] = decompose(*fresh[todo[t]].w, fresh[todo[t]].K, fresh[todo[t]].M, &m);
+      // Kept in the store too: a later process maps its file instead of permuting 40 MB of rows.
+      made[t] = decompose(*fresh[todo[t]].w, fresh[todo[t]].K, fresh[todo[t]].M, [&] {
+        const FeWindowModes& src = *made[static_cast<std::size_t>(mirror_of[t])];
+        Modes m;
+        m.omega2 = src.omega2;
+        m.phi.resize(src.phi.rows(), src.phi.cols());
+        for (std::size_t i = 0; i < maps[t].size(); ++i)
+          m.phi.row(static_cast<Eigen::Index>(i)) = maps[t][i].second * src.phi.row(maps[t][i].first);
+        return m;
+      });
     });
   });
   shapes_.insert(shapes_.end(), made.begin(), made.end());
@@ -609,14 +611,15 @@ class ModalSolver final : public FeLineSolver {
     xz_.col(0) = x0_;
     for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(1 + c)) = mods_[c].p.cwiseProduct(dz_);  // A⁻¹p − Ω⁻²p/(1+α)
     dxz_.resize(static_cast<Eigen::Index>(nd), xz_.cols());
-    for (Eigen::Index k0 = 0; k0 < xz_.cols(); k0 += 4) {  // the droppers' rows read once for up to 4 vectors
-      const int C = static_cast<int>(std::min<Eigen::Index>(4, xz_.cols() - k0));
-      const double* xs[4];
-      for (int c = 0; c < C; ++c) xs[c] = xz_.col(k0 + c).data();
-      dot_scratch_.resize(nd * static_cast<std::size_t>(C));
-      kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), xs, C, dot_scratch_.data());
-      for (std::size_t j = 0; j < nd; ++j)
-        for (int c = 0; c < C; ++c) dxz_(static_cast<Eigen::Index>(j), k0 + c) = dot_scratch_[j * static_cast<std::size_t>(C) + static_cast<std::size_t>(c)];
+    {  // x0 against the droppers' rows (every step); a contact's column from its DOFs' (kept per shape)
+      const double* xs[1] = {x0_.data()};
+      kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), xs, 1, dxz_.col(0).data());
+      for (std::size_t c = 0; c < nc; ++c) {
+        auto col = dxz_.col(static_cast<Eigen::Index>(1 + c));
+        col.setZero();
+        for (int a = 0; a < 4; ++a)
+          if (const int l = mods_[c].l[static_cast<std::size_t>(a)]; l >= 0) col += mods_[c].w[static_cast<std::size_t>(a)] * dropper_column(l);
+      }
     }
     d0_ = dxz_.col(0);
     for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] = mods_[c].p.dot(x0_);
@@ -846,6 +849,18 @@ class ModalSolver final : public FeLineSolver {
     m.d = d, m.coeff = coeff;
     return m;
   }
+  // P (dz ∘ φ_l) for the window DOF l (P: the droppers' rows, dz = A⁻¹ − Ω⁻²/(1+α)): a unit force at
+  // l, its effect on every dropper's elongation; made when a contact first reaches l, kept per shape.
+  const Eigen::VectorXd& dropper_column(int l) {
+    auto it = dropper_columns_.find(l);
+    if (it != dropper_columns_.end()) return it->second;
+    const auto& md = *win_->modes;
+    const Eigen::Index m = md.omega2.size();
+    Eigen::VectorXd z = md.phi.row(l).transpose().cwiseProduct(dz_), h(dropper_p_.rows());
+    const double* xs[1] = {z.data()};
+    kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(dropper_p_.rows()), static_cast<int>(m), xs, 1, h.data());
+    return dropper_columns_.emplace(l, std::move(h)).first->second;
+  }
   // Φᵀ N'(x): the modal row of the wire's slope at a contact point.
   Eigen::VectorXd shape_slope(const FeLine::Shape& sh) const {
     const auto& md = *win_->modes;
@@ -903,7 +918,7 @@ class ModalSolver final : public FeLineSolver {
   void enter(int first) {
     const std::shared_ptr<const FeWindowModes> before = win_ ? win_->modes : nullptr;
     win_ = ml_->window(first, W_);
-    if (win_->modes != before) columns_.clear();
+    if (win_->modes != before) columns_.clear(), dropper_columns_.clear();
     const auto& md = *win_->modes;
     const FeCatenaryData& d = L_.data();
     const double ap = 1 + alpha_;
@@ -996,6 +1011,7 @@ class ModalSolver final : public FeLineSolver {
   std::vector<double> last_x_, last_res_, last_F_;
   std::vector<Eigen::VectorXd> load_p_, load_px_;  // per load of the last step: Φᵀ N(x) and Φᵀ N'(x)
   std::map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
+  std::unordered_map<int, Eigen::VectorXd> dropper_columns_;  // dropper_column(l) of the window shape
   // Step scratch.
   std::vector<double> xs_;
   Eigen::VectorXd w1_, vt_, r_, x0_, u_, du_, coef_, sum_;

@@ -260,8 +260,8 @@ TEST(FeModal, AMovingWindowStaysWithinTheMeasuredErrorOfTheDirectSolve) {
 }
 
 TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
-  // A store in a fresh directory: the first line solves its two eigenproblems and writes them, a
-  // second line of the same data reads both and solves none, and a run on it gives the same history
+  // A store in a fresh directory: the first line solves its two eigenproblems and writes them with
+  // the mirrored last shape, a second line of the same data reads all three and solves none, and a run on it gives the same history
   // to the last bit. A damaged file (one byte changed, or cut short) and a file of another cut-off
   // are not read: the modes are solved again.
   namespace fs = std::filesystem;
@@ -277,11 +277,11 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   EXPECT_EQ(first->loaded(), 0);
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
-  ASSERT_EQ(files.size(), 2u);  // no temporary file left
+  ASSERT_EQ(files.size(), 3u);  // no temporary file left
   const auto second = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
   second->prepare(6);
   EXPECT_EQ(second->decompositions(), 0);
-  EXPECT_EQ(second->loaded(), 2);
+  EXPECT_EQ(second->loaded(), 3);
   auto history = [&](const std::shared_ptr<const catenary::FeModalLine>& ml) {
     auto s = catenary::make_modal_solver(ml, 0.0);
     const double x0 = 2.5 * d.span;
@@ -303,6 +303,12 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
     f.write(&c, 1);
   }
   fs::resize_file(files[1], fs::file_size(files[1]) - 8);
+  {
+    std::fstream f(files[2], std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(100);
+    const char c = 0x33;
+    f.write(&c, 1);
+  }
   const auto third = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
   third->prepare(6);
   EXPECT_EQ(third->decompositions(), 2);

@@ -26,6 +26,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <atomic>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -118,9 +119,11 @@ class FeModalLine {
   mutable std::atomic<int> solved_{0}, loaded_{0};
   std::shared_ptr<FeWindow> structure(int first_span, int spans, Eigen::SparseMatrix<double>& K,
                                       Eigen::SparseMatrix<double>& M) const;
-  /// Its modes (`given`: modes of the same matrices found otherwise, moved from), factor and residual data.
+  /// Its modes (read from the store, else made by `make` — a mirrored shape's — or solved, then
+  /// stored), factor and residual data.
   std::shared_ptr<const FeWindowModes> decompose(const FeWindow& w, Eigen::SparseMatrix<double> K,
-                                                 Eigen::SparseMatrix<double> M, Modes* given = nullptr) const;
+                                                 Eigen::SparseMatrix<double> M,
+                                                 const std::function<Modes()>& make = {}) const;
   std::vector<std::pair<int, double>> mirror(const FeWindow& a, const FeWindow& b) const;
   std::shared_ptr<const FeWindowModes> find_shape(const Eigen::SparseMatrix<double>& K,
                                                   const Eigen::SparseMatrix<double>& M) const;
