@@ -166,13 +166,11 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
                                                       ws.rank1[static_cast<std::size_t>(i)].body_j};
   auto YZ = ws.YB.leftCols(k + 1);
   auto L_solve = [&](auto&& v, int b) {  // v (the block of body b) ← L_b⁻¹ v
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
     if constexpr (B == 7) {
-      v.template head<3>() /= std::sqrt(body.mass);
+      v.template head<3>() /= std::sqrt(model.bodies[static_cast<std::size_t>(b)].mass);
       ws.llt_p[static_cast<std::size_t>(b)].matrixL().solveInPlace(v.template tail<4>());
     } else {
-      v.template head<2>() /= std::sqrt(body.mass);
-      v[2] /= std::sqrt(body.inertia);
+      v = v.cwiseProduct(ws.inv_sqrt_d.template segment<3>(3 * b));
     }
   };
   for (int i = 0; i < k; ++i) {
@@ -210,18 +208,22 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
       }
     }
     for (int i = 0; i < r; ++i) at(m + i, m + i) += 1.0 / ws.rank1[static_cast<std::size_t>(i)].b;
+    // Right-looking: column j scaled, then the trailing triangle updated row by row from a
+    // contiguous copy of it (independent multiply-adds, no long dependency chains).
     double dmin = 0, dmax = 0;
+    double* cj = ws.lm.data();  // scratch until the right-hand side is formed below
     for (int j = 0; j < k; ++j) {
-      const double* lj = S + static_cast<std::ptrdiff_t>(j) * k;
-      double d = lj[j] - dot4(lj, lj, j);
+      double d = at(j, j);
       if (!(d > 0)) singular(t, "the constraint Jacobian C_q", 0.0);
       d = std::sqrt(d);
       at(j, j) = d;
       dmin = j == 0 ? d : std::min(dmin, d), dmax = std::max(dmax, d);
       const double inv = 1 / d;
+      for (int i = j + 1; i < k; ++i) cj[i] = at(i, j) *= inv;
       for (int i = j + 1; i < k; ++i) {
-        const double* li = S + static_cast<std::ptrdiff_t>(i) * k;
-        at(i, j) = (li[j] - dot4(li, lj, j)) * inv;
+        double* li = S + static_cast<std::ptrdiff_t>(i) * k;
+        const double lij = cj[i];
+        for (int p = j + 1; p <= i; ++p) li[p] -= lij * cj[p];
       }
     }
     if (!(dmin > 1e-7 * dmax)) singular(t, "the constraint Jacobian C_q", dmax > 0 ? std::pow(dmin / dmax, 2) : 0.0);
@@ -248,13 +250,11 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
   }
   ws.qdd = z;
   for (int b = 0; b < nb; ++b) {
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
     if constexpr (B == 7) {
-      ws.qdd.template segment<3>(7 * b) /= std::sqrt(body.mass);
+      ws.qdd.template segment<3>(7 * b) /= std::sqrt(model.bodies[static_cast<std::size_t>(b)].mass);
       ws.llt_p[static_cast<std::size_t>(b)].matrixU().solveInPlace(ws.qdd.template segment<4>(7 * b + 3));
     } else {
-      ws.qdd.template segment<2>(3 * b) /= std::sqrt(body.mass);
-      ws.qdd[3 * b + 2] /= std::sqrt(body.inertia);
+      ws.qdd.template segment<3>(3 * b) = ws.qdd.template segment<3>(3 * b).cwiseProduct(ws.inv_sqrt_d.template segment<3>(3 * b));
     }
   }
   return true;

@@ -174,6 +174,15 @@ Workspace::Workspace(const Model& model) {
     const int r = 3 * static_cast<int>(model.forces.size());
     rank1.reserve(static_cast<std::size_t>(r));
     if (model.spatial()) llt_p.resize(model.bodies.size());
+    else {
+      inv_sqrt_d = Eigen::VectorXd::Zero(n);
+      for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+        const Body& body = model.bodies[b];
+        const int k = 3 * static_cast<int>(b);
+        if (body.mass > 0) inv_sqrt_d[k] = inv_sqrt_d[k + 1] = 1 / std::sqrt(body.mass);
+        if (body.inertia > 0) inv_sqrt_d[k + 2] = 1 / std::sqrt(body.inertia);
+      }
+    }
     YB = Eigen::MatrixXd::Zero(n, ms + r + 1);
     SB = Eigen::MatrixXd::Zero(ms + r, ms + r);
     lm = Eigen::VectorXd::Zero(ms + r);
