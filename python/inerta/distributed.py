@@ -6,9 +6,14 @@ puts the results back in order, so a distributed run gives the serial run's numb
 * ``sweep(model, catenary, speeds, client)``: one task per speed (inerta.sweep(..., client=c) calls
   it). The model travels as its file's text and overrides, a catenary as its file's path and
   overrides: a worker reads each once and keeps it (a finite-element line's modes too).
-* ``optimise(study_path, client, out=..., checkpoint=...)``: one task per layout of a study of named
-  layouts. Each finished layout is written to the checkpoint at once; a study started again with
-  the same checkpoint runs only the layouts it lacks.
+* ``optimise(study_path, client, out=..., checkpoint=...)``: a study of named layouts. By the
+  periodic fast path (milliseconds an evaluation) one task per layout; in the time domain (a
+  finite-element line, or a multi-fidelity study's refinement) one task per design: each layout's
+  search runs here (its coarse periodic search too) and sends every poll's designs to the workers,
+  all layouts at once, so the cluster's workers are used beyond the number of layouts. Each finished
+  layout, and in the time domain each evaluated design, is written to the checkpoint at once; a study
+  started again with the same checkpoint runs only the layouts it lacks and evaluates no design twice
+  (the searches are deterministic: they replay to where they stopped).
 
 Faults: a task whose worker dies is run again on another worker by Dask (its result is the same:
 the tasks are pure functions of their inputs); after ``distributed.scheduler.allowed-failures``
@@ -21,9 +26,11 @@ Command line (what ``inerta optimise STUDY --workers N`` / ``--scheduler ADDRESS
             [--out DIR] [--force] [--checkpoint FILE] [--no-plots]
 """
 import argparse
+import concurrent.futures
 import os
 import pickle
 import sys
+import threading
 import time
 
 from . import _inerta
@@ -97,30 +104,37 @@ def _layout_task(path, stamp, layout):
     return _inerta.optimise_layout(_study(path, stamp), layout)
 
 
+def _design_task(path, stamp, layout, params):
+    return _inerta.design_cost(_study(path, stamp), layout, params)
+
+
 def _read_checkpoint(path, study_path, stamp):
+    """(finished layouts, evaluated designs) of a checkpoint file, or two empty dicts."""
     if not path or not os.path.exists(path):
-        return {}
+        return {}, {}
     with open(path, "rb") as f:
         data = pickle.load(f)
     if data.get("study") != study_path or data.get("stamp") != stamp:
         raise RuntimeError(f"{path}: a checkpoint of another study or of an earlier version of {study_path} "
                            "(its file changed); remove it to start again")
-    return data["layouts"]
+    return data["layouts"], data.get("designs", {})
 
 
-def _write_checkpoint(path, study_path, stamp, layouts):
-    tmp = f"{path}.{os.getpid()}.tmp"
+def _write_checkpoint(path, study_path, stamp, layouts, designs):
+    tmp = f"{path}.{os.getpid()}.{threading.get_ident()}.tmp"
     with open(tmp, "wb") as f:
-        pickle.dump({"study": study_path, "stamp": stamp, "layouts": layouts}, f)
+        pickle.dump({"study": study_path, "stamp": stamp, "layouts": layouts, "designs": designs}, f)
     os.replace(tmp, path)  # never a half-written checkpoint
 
 
-def optimise(study_path, client, *, checkpoint=None, progress=None):
-    """Optimises every layout of a study file on the cluster, one task per layout; returns
-    (study, default_cost, results) with results in the study's order, equal to the serial run's.
-    checkpoint: a file that keeps each finished layout (read first: finished layouts are not run
-    again). progress(layout, result, done, total) as layouts finish (an exception it raises stops the
-    study; the checkpoint keeps what finished)."""
+def optimise(study_path, client, *, checkpoint=None, progress=None, stats=None):
+    """Optimises every layout of a study file on the cluster (one task per layout by the periodic
+    fast path, one per design in the time domain); returns (study, default_cost, results) with
+    results in the study's order, equal to the serial run's. checkpoint: a file that keeps each
+    finished layout and each evaluated design (read first: finished layouts are not run again,
+    evaluated designs not sent again). progress(layout, result, done, total) as layouts finish (an
+    exception it raises stops the study; the checkpoint keeps what finished). stats: a dict that
+    receives "designs_sent", the designs sent to the workers."""
     from distributed import as_completed
 
     path = os.path.abspath(os.fspath(study_path))
@@ -130,18 +144,58 @@ def optimise(study_path, client, *, checkpoint=None, progress=None):
     if study.all_networks:
         raise ValueError(f"{study_path}: `layouts: all` is not distributed yet (each network's search is warm-started "
                          "from its sub-networks'); run it with `inerta optimise` on one machine")
-    done = _read_checkpoint(checkpoint, path, stamp)
+    done, designs = _read_checkpoint(checkpoint, path, stamp)
     todo = [l for l in study.layouts if l not in done]
-    futures = {client.submit(_layout_task, path, stamp, l, pure=False): l for l in todo}
     default = client.submit(lambda p, s: _inerta.evaluate(_study(p, s), _inerta.default_suspension(_study(p, s))),
                             path, stamp, pure=False)
-    for fut in as_completed(list(futures)):
-        layout = futures[fut]
-        done[layout] = fut.result()
-        if checkpoint:
-            _write_checkpoint(checkpoint, path, stamp, done)
-        if progress is not None:
-            progress(layout, done[layout], len(done), len(study.layouts))
+    if stats is not None:
+        stats["designs_sent"] = 0
+    if study.method == "time":
+        lock = threading.Lock()
+        stop = threading.Event()  # set when the study stops early: the other layouts stop at their next poll
+
+        def batch_for(layout):
+            def batch(params):  # one task per design not evaluated yet, gathered in order
+                if stop.is_set():
+                    raise KeyboardInterrupt("the study was stopped")
+                keys = [(layout, tuple(sorted(p.items()))) for p in params]
+                with lock:
+                    missing = [i for i, k in enumerate(keys) if k not in designs]
+                futures = [client.submit(_design_task, path, stamp, layout, params[i], pure=False) for i in missing]
+                costs = client.gather(futures)
+                with lock:
+                    for i, c in zip(missing, costs):
+                        designs[keys[i]] = c
+                    if stats is not None:
+                        stats["designs_sent"] += len(missing)
+                    if checkpoint:
+                        _write_checkpoint(checkpoint, path, stamp, done, designs)
+                    return [designs[k] for k in keys]
+            return batch
+
+        with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, len(todo))) as pool:
+            running = {pool.submit(_inerta.optimise_layout, study, l, batch=batch_for(l)): l for l in todo}
+            try:
+                for fut in concurrent.futures.as_completed(running):
+                    layout = running[fut]
+                    with lock:
+                        done[layout] = fut.result()
+                        if checkpoint:
+                            _write_checkpoint(checkpoint, path, stamp, done, designs)
+                    if progress is not None:
+                        progress(layout, done[layout], len(done), len(study.layouts))
+            except BaseException:
+                stop.set()
+                raise
+    else:
+        futures = {client.submit(_layout_task, path, stamp, l, pure=False): l for l in todo}
+        for fut in as_completed(list(futures)):
+            layout = futures[fut]
+            done[layout] = fut.result()
+            if checkpoint:
+                _write_checkpoint(checkpoint, path, stamp, done, designs)
+            if progress is not None:
+                progress(layout, done[layout], len(done), len(study.layouts))
     return study, default.result(), [done[l] for l in study.layouts]
 
 
@@ -174,7 +228,7 @@ def _main(argv=None):
     p = argparse.ArgumentParser(prog="python3 -m inerta.distributed",
                                 description="Inerta design studies on a Dask cluster (docs/distributed.md)")
     sub = p.add_subparsers(dest="command", required=True)
-    o = sub.add_parser("optimise", help="optimise a study's layouts, one Dask task per layout")
+    o = sub.add_parser("optimise", help="optimise a study's layouts: a Dask task per design (time domain) or per layout")
     o.add_argument("study")
     where = o.add_mutually_exclusive_group(required=True)
     where.add_argument("--workers", type=int, help="start a local cluster of N worker processes")

@@ -252,15 +252,41 @@ void bind_optim(py::module_& m) {
         "The search variables of a layout's free elements (the study's range or its element kind's bounds).");
   m.def("free_parameters", &optim::free_parameters, py::arg("layout"),
         "The element names of a layout that the optimiser varies.");
-  m.def("optimise_layout", [](const Study& s, const std::string& layout, const py::object& progress) {
-    return run(progress, [&](Call& call) {
-      return optim::optimise_layout(s, layout, [&](int start, int evals, double best) {
-        call.post([start, evals, best](const py::object& cb) { cb(start, evals, best); });
+  py::class_<optim::DesignCost>(m, "DesignCost", "What the search minimises for one design (optim::design_cost).")
+      .def(py::init<>())
+      .def_readonly("cost", &optim::DesignCost::cost, "J2 penalised by the limits, N (inf: no design)")
+      .def_readonly("unstable", &optim::DesignCost::unstable, "a periodic solution was unstable at some speed")
+      .def(py::pickle([](const optim::DesignCost& c) { return py::make_tuple(c.cost, c.unstable); },
+                      [](const py::tuple& t) { return optim::DesignCost{t[0].cast<double>(), t[1].cast<bool>()}; }))
+      .def("__repr__", [](const optim::DesignCost& c) {
+        return fmt::format("DesignCost({:.6g}{})", c.cost, c.unstable ? ", unstable" : "");
       });
+  m.def("design_cost", [](const Study& s, const std::string& layout, const network::Params& params) {
+    return run(py::none(), [&](Call&) { return optim::design_cost(s, layout, params); });
+  }, py::arg("study"), py::arg("layout"), py::arg("params"),
+        "What the search minimises for one design of a layout: J2 penalised by the limits (inf for a rigid "
+        "suspension or no steady state).");
+  m.def("optimise_layout", [](const Study& s, const std::string& layout, const py::object& progress,
+                              const py::object& batch) {
+    optim::DesignBatch designs;
+    if (!batch.is_none())  // called from this call's own thread: take the GIL for Python
+      designs = [&batch](const std::vector<network::Params>& params) {
+        py::gil_scoped_acquire gil;
+        const py::object r = batch(py::cast(params));
+        return r.cast<std::vector<optim::DesignCost>>();
+      };
+    return run(progress, [&](Call& call) {
+      return optim::optimise_layout(
+          s, layout,
+          [&](int start, int evals, double best) {
+            call.post([start, evals, best](const py::object& cb) { cb(start, evals, best); });
+          },
+          {}, designs);
     });
-  }, py::arg("study"), py::arg("layout"), py::kw_only(), py::arg("progress") = py::none(),
+  }, py::arg("study"), py::arg("layout"), py::kw_only(), py::arg("progress") = py::none(), py::arg("batch") = py::none(),
         "Optimises one layout's free values by the multi-start pattern search (poll points in parallel). "
-        "progress(start, evaluations, best J in N); Ctrl-C cancels.");
+        "progress(start, evaluations, best J in N); batch(list of params dicts) -> list of DesignCost: "
+        "evaluates a time-domain search's polls elsewhere (inerta.distributed); Ctrl-C cancels.");
 
   py::class_<optim::SpeedCurve>(m, "SpeedCurve", "σ and the mean contact force over the speeds under one catenary.")
       .def_readonly("catenary", &optim::SpeedCurve::catenary)

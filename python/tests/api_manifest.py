@@ -46,6 +46,8 @@ BOUND = {
     "optim::ParetoPoint": "ParetoPoint",
     "optim::pareto_points": "pareto_points",
     "optim::prune": "prune",
+    "optim::DesignCost": "DesignCost",
+    "optim::design_cost": "design_cost",
     "optim::optimise_all": "optimise_all",
     "optim::AdmittanceResult": "AdmittanceResult",
     "optim::admittance_bound": "admittance_bound",

@@ -24,6 +24,17 @@ layouts: [S2-default, S2-5, S2-4, S2-3]
 """
 
 
+# A time-domain study on a short finite-element line (3 spans, modes below 30 Hz): one task per design.
+FE_STUDY = """name: small distributed FE
+model: {src}/models/hsx.yaml
+catenary: {src}/models/catenary-fe.yaml
+catenaries: [[line.spans=3, solver.cutoff=30]]
+speeds: {{from: 200, to: 200, step: 10, unit: kmh}}
+search: {{starts: 1, seed: 7, min_step: 0.5, max_evaluations: 4}}
+layouts: [S2-default, S2-5, S2-4]
+"""
+
+
 @pytest.fixture(scope="module")
 def client():
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0")
@@ -124,6 +135,37 @@ def test_a_study_resumes_from_its_checkpoint(client, study_file, tmp_path):
     other.write_text(STUDY.format(src=SRC).replace("S2-3]", "S2-1]"))
     with pytest.raises(RuntimeError, match="another study"):
         inerta.distributed.optimise(other, client, checkpoint=cp)
+
+
+def test_a_time_domain_study_sends_designs_and_never_evaluates_one_twice(client, tmp_path):
+    p = tmp_path / "fe.yaml"
+    p.write_text(FE_STUDY.format(src=SRC))
+    cp = tmp_path / "fe-checkpoint.pkl"
+    stats = {}
+    study, default, results = inerta.distributed.optimise(p, client, checkpoint=cp, stats=stats)
+    assert study.method == "time"
+    serial = [inerta.optimise_layout(study, l) for l in study.layouts]
+    for a, b in zip(results, serial):
+        assert pickle.dumps(a) == pickle.dumps(b)  # every field, bit for bit
+    searched = sum(r.evaluations for r in serial if inerta.free_parameters(r.layout))
+    assert 0 < stats["designs_sent"] <= searched  # the searches' designs went to the workers
+    # As if stopped after every design but before any layout was recorded: the searches replay from
+    # the checkpoint's designs and send none again.
+    with open(cp, "rb") as f:
+        data = pickle.load(f)
+    assert len(data["designs"]) == stats["designs_sent"]
+    data["layouts"] = {}
+    with open(cp, "wb") as f:
+        pickle.dump(data, f)
+    again = {}
+    _, _, resumed = inerta.distributed.optimise(p, client, checkpoint=cp, stats=again)
+    assert again["designs_sent"] == 0
+    for a, b in zip(resumed, serial):
+        assert pickle.dumps(a) == pickle.dumps(b)
+    # a design's cost on a worker is the library's
+    r = serial[1]
+    assert inerta.design_cost(study, r.layout, {k: r.values[k] for k in inerta.free_parameters(r.layout)}).cost == \
+        r.cost.penalised()
 
 
 def test_cli_workers_give_the_serial_table(study_file, tmp_path):

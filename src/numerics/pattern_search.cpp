@@ -31,7 +31,20 @@ std::string describe(double value) {
   return buf;
 }
 
-Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& o, const Progress& progress) {
+Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& o, const Progress& progress,
+                      const BatchCost& batch) {
+  // The costs of several decoded points: by `batch` if given, else in parallel threads.
+  auto costs = [&](const std::vector<std::vector<double>>& values) {
+    if (values.empty()) return std::vector<double>{};
+    if (batch) {
+      std::vector<double> c = batch(values);
+      if (c.size() != values.size()) throw std::invalid_argument("pattern search: the batch cost gave a wrong number of costs");
+      return c;
+    }
+    std::vector<double> c(values.size());
+    tbb::parallel_for(std::size_t{0}, values.size(), [&](std::size_t k) { c[k] = cost(values[k]); });
+    return c;
+  };
   const std::size_t n = vars.size();
   for (const auto& v : vars)
     if (!(v.lo > 0) || !(v.hi > v.lo) || !std::isfinite(v.hi))
@@ -65,12 +78,10 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
         }
       pts = std::move(next);
     }
-    std::vector<double> c(pts.size());
-    tbb::parallel_for(std::size_t{0}, pts.size(), [&](std::size_t k) {
-      std::vector<double> v(n);
-      for (std::size_t i = 0; i < n; ++i) v[i] = decode(vars[i], pts[k][i]);
-      c[k] = cost(v);
-    });
+    std::vector<std::vector<double>> vals(pts.size(), std::vector<double>(n));
+    for (std::size_t k = 0; k < pts.size(); ++k)
+      for (std::size_t i = 0; i < n; ++i) vals[k][i] = decode(vars[i], pts[k][i]);
+    const std::vector<double> c = costs(vals);
     std::size_t k = 0;
     for (std::size_t j = 1; j < c.size(); ++j)
       if (c[j] < c[k]) k = j;
@@ -114,9 +125,12 @@ Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const
         else
           todo[k] = 1;
       }
-      tbb::parallel_for(std::size_t{0}, pts.size(), [&](std::size_t k) {
-        if (todo[k]) c[k] = cost(vals[k]);
-      });
+      std::vector<std::vector<double>> fresh;
+      for (std::size_t k = 0; k < pts.size(); ++k)
+        if (todo[k]) fresh.push_back(vals[k]);
+      const std::vector<double> cf = costs(fresh);
+      for (std::size_t k = 0, f = 0; k < pts.size(); ++k)
+        if (todo[k]) c[k] = cf[f++];
       for (std::size_t k = 0; k < pts.size(); ++k)
         if (todo[k]) cache[vals[k]] = c[k], ++evals;
       return c;

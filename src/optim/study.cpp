@@ -154,8 +154,20 @@ std::vector<std::string> free_parameters(const std::string& layout) {
   return names;
 }
 
+DesignCost design_cost(const Study& study, const std::string& layout, const network::Params& params) {
+  const network::Network net = network::resolve(layout, params);
+  // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
+  if (network::simplify(net).kind == network::Network::Kind::Rigid) return {static_cast<double>(INFINITY), false};
+  try {
+    const StudyCost c = evaluate(study, net);
+    return {c.penalised(), c.unstable_speed > 0};
+  } catch (const NumericalError&) {
+    return {static_cast<double>(INFINITY), false};  // no static equilibrium or steady state for these values
+  }
+}
+
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress,
-                             const std::vector<network::Params>& warm) {
+                             const std::vector<network::Params>& warm, const DesignBatch& batch) {
   LayoutResult r;
   r.layout = layout;
   auto named = network::find_layout(layout);
@@ -172,18 +184,27 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   // the designs refused as unstable counted.
   auto cost_on = [&](const Study& s) {
     return [&](const std::vector<double>& values) {
-      const network::Network net = network::resolve(layout, params_of(values));
-      // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
-      if (network::simplify(net).kind == network::Network::Kind::Rigid) return static_cast<double>(INFINITY);
-      try {
-        const StudyCost c = evaluate(s, net);
-        if (c.unstable_speed > 0) ++unstable;
-        return c.penalised();
-      } catch (const NumericalError&) {
-        return static_cast<double>(INFINITY);  // no static equilibrium or steady state for these values
-      }
+      const DesignCost c = design_cost(s, layout, params_of(values));
+      if (c.unstable) ++unstable;
+      return c.cost;
     };
   };
+  // The same through `batch` (the time domain only: the periodic path's evaluations are too short to
+  // send away); it evaluates study `s`, which must be this study (the worst-speed stage stays here).
+  numerics::BatchCost polls;
+  if (batch && study.method == Study::Method::Time)
+    polls = [&](const std::vector<std::vector<double>>& values) {
+      std::vector<network::Params> designs;
+      for (const auto& v : values) designs.push_back(params_of(v));
+      const std::vector<DesignCost> c = batch(designs);
+      if (c.size() != values.size()) throw std::invalid_argument("optimise_layout: the batch gave a wrong number of costs");
+      std::vector<double> out;
+      for (const DesignCost& d : c) {
+        if (d.unstable) ++unstable;
+        out.push_back(d.cost);
+      }
+      return out;
+    };
   const auto J = cost_on(study);
   numerics::Options search = study.search;
   if (study.coarse) {  // multi-fidelity: the coarse study's optimum is the one start of the refinement
@@ -232,12 +253,12 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     second.initial_values = {s1.values};
     second.initial_step = std::max(search.min_step, 0.5 * search.initial_step);
     second.max_evaluations = std::max(1, search.max_evaluations - s1.evaluations);
-    const numerics::Result s2 = numerics::pattern_search(vars, J, second, progress);
+    const numerics::Result s2 = numerics::pattern_search(vars, J, second, progress, polls);
     best = s2.values;
     r.evaluations = s1.evaluations + s2.evaluations;
     r.budget_exhausted = s2.exhausted;
   } else {
-    numerics::Result s = numerics::pattern_search(vars, J, search, progress);
+    numerics::Result s = numerics::pattern_search(vars, J, search, progress, polls);
     best = s.values;
     r.evaluations = s.evaluations;
     r.budget_exhausted = s.exhausted;

@@ -60,6 +60,9 @@ struct Result {
 };
 
 using Cost = std::function<double(const std::vector<double>& values)>;
+/// The costs of several points at once (e.g. on a cluster): one per point, in order, each what `Cost`
+/// would give for it.
+using BatchCost = std::function<std::vector<double>(const std::vector<std::vector<double>>& values)>;
 /// progress(start, evaluations so far, best cost so far)
 using Progress = std::function<void(int, int, double)>;
 
@@ -67,7 +70,9 @@ using Progress = std::function<void(int, int, double)>;
 /// 0 < min_step <= initial_step and max_evaluations >= 1. Always returns a point (values has one entry
 /// per variable), with cost +∞ or NaN when no point had a finite cost.
 /// Deterministic for a given seed (ties broken by poll order).
+/// `batch`: when given, the points of a poll (and of the grid) that are not cached are evaluated by it
+/// in one call instead of by `cost` in parallel threads; the result is the same.
 Result pattern_search(const std::vector<Variable>& vars, const Cost& cost, const Options& options = {},
-                      const Progress& progress = {});
+                      const Progress& progress = {}, const BatchCost& batch = {});
 
 }  // namespace inerta::numerics

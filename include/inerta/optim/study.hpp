@@ -165,7 +165,22 @@ std::vector<std::string> free_parameters(const std::string& layout);
 /// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
 /// `warm`: other designs' element values as further starts (as for model studies:
 /// optim::optimise_layout(const ModelStudy&, …)), so the result is never worse than any of them.
+/// What the search minimises for one design of a layout (its free values `params`): J2 penalised by
+/// the limits (StudyCost::penalised), +∞ for a rigid suspension or one without a static equilibrium
+/// or steady state; `unstable` when a periodic solution is unstable at some speed.
+struct DesignCost {
+  double cost = 0;
+  bool unstable = false;
+};
+DesignCost design_cost(const Study& study, const std::string& layout, const network::Params& params);
+
+/// The design costs of several designs at once, in order (e.g. on a cluster: inerta.distributed);
+/// each must equal design_cost's.
+using DesignBatch = std::function<std::vector<DesignCost>(const std::vector<network::Params>& params)>;
+
+/// `batch`: when given, the time-domain searches (a time-domain study's, a multi-fidelity study's
+/// refinement) evaluate their polls through it instead of in threads here; the result is the same.
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress = {},
-                             const std::vector<network::Params>& warm = {});
+                             const std::vector<network::Params>& warm = {}, const DesignBatch& batch = {});
 
 }  // namespace inerta::optim
