@@ -63,7 +63,8 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [n, inerta.layouts()[0], inerta.rational_admittance(n), inerta.realise(n)]
     st = inerta.Study(hsx, [lumped], [50.0, 60.0], ["S2-5"], search=inerta.SearchOptions(starts=1, min_step=0.1))
     lr = inerta.optimise_layout(st, "S2-5")
-    out += [st, lr, lr.cost, inerta.sigma_curves(st, "k", {"k": 1e5})[0], st.search, st.limits]
+    out += [st, lr, lr.cost, inerta.sigma_curves(st, "k", {"k": 1e5})[0], st.search, st.limits,
+            inerta.design_cost(st, "S2-5", {"k": 1e5})]
     bounded = tmp_path_factory.mktemp("bounds") / "bounds.yaml"
     bounded.write_text(f"name: b\nmodel: {model('hsx.yaml')}\ncatenary: {model('catenary.yaml')}\n"
                        "speeds: {from: 100, to: 100, step: 10, unit: kmh}\nbounds: {spring: [1, 1.0e6]}\nlayouts: [k]\n")
