@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "inerta/error.hpp"
@@ -196,16 +197,23 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
     // this size a plain Cholesky beats the library's blocked one by its call overheads.
     double* S = ws.SB.data();
     auto at = [&](int i, int j) -> double& { return S[static_cast<std::ptrdiff_t>(i) * k + j]; };
-    for (int i = 0; i < k; ++i) {
+    // S(i, j) = Σ over the bodies both rows touch of Y_ib · Y_jb: body by body over its rows (a
+    // row touches at most two bodies, so most pairs share none and are never visited).
+    for (int i = 0; i < k; ++i) std::fill(S + static_cast<std::ptrdiff_t>(i) * k, S + static_cast<std::ptrdiff_t>(i) * k + i + 1, 0.0);
+    for (int i = m; i < k; ++i) {  // the inerter rows of this evaluation join their bodies' lists
       const auto& bi = ws.row_bodies[static_cast<std::size_t>(i)];
-      for (int j = 0; j <= i; ++j) {
-        const auto& bj = ws.row_bodies[static_cast<std::size_t>(j)];
-        double s = 0;
-        for (int b : bi)
-          if (b >= 0 && (b == bj[0] || b == bj[1]))
-            s += Y.col(i).template segment<B>(B * b).dot(Y.col(j).template segment<B>(B * b));
-        at(i, j) = s;
-      }
+      if (bi[0] >= 0) ws.body_rows[static_cast<std::size_t>(bi[0])].push_back(i);
+      if (bi[1] >= 0 && bi[1] != bi[0]) ws.body_rows[static_cast<std::size_t>(bi[1])].push_back(i);
+    }
+    for (int b = 0; b < nb; ++b) {
+      const std::vector<int>& rows = ws.body_rows[static_cast<std::size_t>(b)];  // ascending
+      for (std::size_t p = 0; p < rows.size(); ++p)
+        for (std::size_t q = 0; q <= p; ++q)
+          at(rows[p], rows[q]) += Y.col(rows[p]).template segment<B>(B * b).dot(Y.col(rows[q]).template segment<B>(B * b));
+    }
+    for (int b = 0; b < nb; ++b) {  // back to the joint rows only
+      std::vector<int>& rows = ws.body_rows[static_cast<std::size_t>(b)];
+      while (!rows.empty() && rows.back() >= m) rows.pop_back();
     }
     for (int i = 0; i < r; ++i) at(m + i, m + i) += 1.0 / ws.rank1[static_cast<std::size_t>(i)].b;
     // Right-looking: column j scaled, then the trailing triangle updated row by row from a

@@ -183,12 +183,20 @@ Workspace::Workspace(const Model& model) {
         if (body.inertia > 0) inv_sqrt_d[k + 2] = 1 / std::sqrt(body.inertia);
       }
     }
+    // Each body's Schur rows: its joints' (ascending), room for the inerter rows of an evaluation.
+    body_rows.assign(model.bodies.size(), {});
+    for (auto& rows : body_rows) rows.reserve(static_cast<std::size_t>(ms + r));
     YB = Eigen::MatrixXd::Zero(n, ms + r + 1);
     SB = Eigen::MatrixXd::Zero(ms + r, ms + r);
     lm = Eigen::VectorXd::Zero(ms + r);
     row_bodies.assign(static_cast<std::size_t>(ms + r), {-1, -1});
     for (const Joint& j : model.joints)
       for (int k = 0; k < j.rows(); ++k) row_bodies[static_cast<std::size_t>(j.row + k)] = {j.body_i, j.body_j};
+    for (int i = 0; i < ms; ++i) {
+      const auto& bi = row_bodies[static_cast<std::size_t>(i)];
+      if (bi[0] >= 0) body_rows[static_cast<std::size_t>(bi[0])].push_back(i);
+      if (bi[1] >= 0 && bi[1] != bi[0]) body_rows[static_cast<std::size_t>(bi[1])].push_back(i);
+    }
   }
   if (model.spatial())
     sframes.resize(model.bodies.size());

@@ -56,6 +56,7 @@ struct Workspace {
   Eigen::VectorXd lm;                          ///< [λ; μ]
   std::vector<std::array<int, 2>> row_bodies;  ///< the two bodies of each Schur row (−1: ground)
   Eigen::VectorXd inv_sqrt_d;                  ///< 2D: 1/√m, 1/√m, 1/√I a body (D = L Lᵀ is constant)
+  std::vector<std::vector<int>> body_rows;     ///< per body, the Schur rows that touch it, ascending
   Eigen::VectorXd qdd;                         ///< result: accelerations
   Eigen::VectorXd zd;      ///< result: derivatives of the internal states (written by their elements)
   Eigen::VectorXd lambda;  ///< result: Lagrange multipliers
