@@ -18,7 +18,7 @@ LumpedFit fit_lumped(const FeLine& line, int span, int points) {
   LumpedFit fit;
   fit.span = span;
   const double L = d.span, x_start = (span - 1) * L;
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(line.K());
+  BandLlt llt(line.K());
   std::vector<double> k(static_cast<std::size_t>(points));
   for (int i = 0; i < points; ++i) {
     const double x = L * (i + 0.5) / points;  // midpoints: an exact quadrature of the cosines

@@ -144,7 +144,7 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   struct Constrained {
     Eigen::SparseMatrix<double> K;  // the whole wire
     std::vector<int> fixed, free_of;  // the constrained DOFs; per DOF its index among the free ones, or −1
-    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
+    BandLlt llt;
     Constrained(Eigen::SparseMatrix<double> k, std::vector<int> fx) : K(std::move(k)), fixed(std::move(fx)) {
       free_of.assign(static_cast<std::size_t>(K.rows()), 0);
       for (int j : fixed) free_of[static_cast<std::size_t>(j)] = -1;
@@ -332,7 +332,7 @@ Eigen::VectorXd FeLine::static_displacement(const std::vector<double>& x, const 
       fs[d.dof_m] += d.tension;
       fs[d.dof_c] -= d.tension;
     }
-    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(Ks);
+    BandLlt llt(Ks);
     if (llt.info() != Eigen::Success)
       throw NumericalError("finite-element catenary: the line with its slack droppers has no static equilibrium");
     u = llt.solve(fs);

@@ -20,7 +20,7 @@ namespace inerta::catenary {
 
 namespace {
 
-constexpr char kMagic[8] = {'I', 'N', 'M', 'O', 'D', 'E', 'S', '2'};
+constexpr char kMagic[8] = {'I', 'N', 'M', 'O', 'D', 'E', 'S', '3'};
 
 struct Header {
   char magic[8];
@@ -56,30 +56,29 @@ struct Hash {
   }
 };
 
-// The data's checksum: eight FNV-like lanes over the 64-bit words (independent multiplications, so it
-// runs at memory speed), folded into one.
+// The data's checksum: Fletcher-like sums over the 64-bit words in eight lanes, a running sum and the
+// sum of the running sums (a changed word changes the first, moved words the second); additions only,
+// so it vectorises and runs at memory speed. Folded into one word with the FNV hash.
 std::uint64_t checksum(const double* omega2, std::size_t m, const double* phi, std::size_t count) {
-  std::uint64_t lane[8];
-  for (int l = 0; l < 8; ++l) lane[l] = 14695981039346656037ull + static_cast<std::uint64_t>(l);
+  std::uint64_t a[8] = {}, b[8] = {};
   auto run = [&](const double* p, std::size_t words) {
     std::size_t i = 0;
     for (; i + 8 <= words; i += 8)
       for (int l = 0; l < 8; ++l) {
         std::uint64_t w;
         std::memcpy(&w, p + i + static_cast<std::size_t>(l), 8);
-        lane[l] = (lane[l] ^ w) * 1099511628211ull;
-        lane[l] ^= lane[l] >> 29;
+        a[l] += w, b[l] += a[l];
       }
     for (; i < words; ++i) {
       std::uint64_t w;
       std::memcpy(&w, p + i, 8);
-      lane[0] = (lane[0] ^ w) * 1099511628211ull;
+      a[0] += w, b[0] += a[0];
     }
   };
   run(omega2, m);
   run(phi, count);
   Hash h;
-  for (std::uint64_t v : lane) h.word(v);
+  for (int l = 0; l < 8; ++l) h.word(a[l]), h.word(b[l]);
   return h.h;
 }
 
