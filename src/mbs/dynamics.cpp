@@ -216,10 +216,12 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
       while (!rows.empty() && rows.back() >= m) rows.pop_back();
     }
     for (int i = 0; i < r; ++i) at(m + i, m + i) += 1.0 / ws.rank1[static_cast<std::size_t>(i)].b;
-    // Right-looking: column j scaled, then the trailing triangle updated row by row from a
-    // contiguous copy of it (independent multiply-adds, no long dependency chains).
+    // Right-looking: column j scaled, then the trailing triangle updated by the outer product of its
+    // nonzero entries only (rows of a mechanism's joints couple few others: S is sparse, and the
+    // zero products the dense update would add change nothing).
     double dmin = 0, dmax = 0;
     double* cj = ws.lm.data();  // scratch until the right-hand side is formed below
+    int* nz = ws.column_nz.data();
     for (int j = 0; j < k; ++j) {
       double d = at(j, j);
       if (!(d > 0)) singular(t, "the constraint Jacobian C_q", 0.0);
@@ -227,11 +229,14 @@ bool solve_blocks(const Model& model, double t, Workspace& ws) {
       at(j, j) = d;
       dmin = j == 0 ? d : std::min(dmin, d), dmax = std::max(dmax, d);
       const double inv = 1 / d;
-      for (int i = j + 1; i < k; ++i) cj[i] = at(i, j) *= inv;
-      for (int i = j + 1; i < k; ++i) {
+      int cnt = 0;
+      for (int i = j + 1; i < k; ++i)
+        if (double& v = at(i, j); v != 0) cj[i] = v *= inv, nz[cnt++] = i;
+      for (int a2 = 0; a2 < cnt; ++a2) {
+        const int i = nz[a2];
         double* li = S + static_cast<std::ptrdiff_t>(i) * k;
         const double lij = cj[i];
-        for (int p = j + 1; p <= i; ++p) li[p] -= lij * cj[p];
+        for (int b2 = 0; b2 <= a2; ++b2) li[nz[b2]] -= lij * cj[nz[b2]];
       }
     }
     if (!(dmin > 1e-7 * dmax)) singular(t, "the constraint Jacobian C_q", dmax > 0 ? std::pow(dmin / dmax, 2) : 0.0);

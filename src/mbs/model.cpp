@@ -189,6 +189,7 @@ Workspace::Workspace(const Model& model) {
     YB = Eigen::MatrixXd::Zero(n, ms + r + 1);
     SB = Eigen::MatrixXd::Zero(ms + r, ms + r);
     lm = Eigen::VectorXd::Zero(ms + r);
+    column_nz.assign(static_cast<std::size_t>(ms + r), 0);
     row_bodies.assign(static_cast<std::size_t>(ms + r), {-1, -1});
     for (const Joint& j : model.joints)
       for (int k = 0; k < j.rows(); ++k) row_bodies[static_cast<std::size_t>(j.row + k)] = {j.body_i, j.body_j};

@@ -54,6 +54,7 @@ struct Workspace {
   Eigen::MatrixXd YB;                              ///< [Y z]
   Eigen::MatrixXd SB;  ///< storage of the Schur matrix with the inerter rows and its Cholesky factor
   Eigen::VectorXd lm;                          ///< [λ; μ]
+  std::vector<int> column_nz;                  ///< scratch: the nonzero rows of a Cholesky column
   std::vector<std::array<int, 2>> row_bodies;  ///< the two bodies of each Schur row (−1: ground)
   Eigen::VectorXd inv_sqrt_d;                  ///< 2D: 1/√m, 1/√m, 1/√I a body (D = L Lᵀ is constant)
   std::vector<std::vector<int>> body_rows;     ///< per body, the Schur rows that touch it, ascending
