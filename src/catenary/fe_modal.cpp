@@ -577,9 +577,8 @@ class ModalSolver final : public FeLineSolver {
     for (std::size_t k = 0; k < loads.size(); ++k) {
       const FeLoad& ld = loads[k];
       const FeLine::Shape sh = L_.contact_shape(ld.x);
-      Mod m = contact_mod(sh, 0, 0);
+      Mod m = contact_mod(sh, 0, 0, &load_px_[k]);
       load_p_[k] = m.p;  // kept for height, height_rate and uplift at this point after the step
-      load_px_[k] = shape_slope(sh);
       if (!ld.penalty) {
         r_ += (ap * ld.force) * m.p;
         prescribed_.push_back({std::move(m), ld.force});
@@ -614,6 +613,13 @@ class ModalSolver final : public FeLineSolver {
     {  // x0 against the droppers' rows (every step); a contact's column from its DOFs' (kept per shape)
       const double* xs[1] = {x0_.data()};
       kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), xs, 1, dxz_.col(0).data());
+      std::array<int, 8> missing{};
+      int nmiss = 0;
+      for (std::size_t c = 0; c < nc && nmiss + 4 <= 8; ++c)
+        for (int l : mods_[c].l)
+          if (l >= 0 && !dropper_columns_.count(l) && std::find(missing.begin(), missing.begin() + nmiss, l) == missing.begin() + nmiss)
+            missing[static_cast<std::size_t>(nmiss++)] = l;
+      if (nmiss > 0) make_dropper_columns(missing.data(), nmiss);
       for (std::size_t c = 0; c < nc; ++c) {
         auto col = dxz_.col(static_cast<Eigen::Index>(1 + c));
         col.setZero();
@@ -787,11 +793,12 @@ class ModalSolver final : public FeLineSolver {
     return E;
   }
   std::vector<double> support_uplift() const override {
-    std::vector<double> u;
-    for (int g : L_.support_dofs()) {
-      const int l = win_->local(g);
-      u.push_back(l >= 0 ? win_->modes->phi.row(l).dot(q_) : 0.0);
-    }
+    std::vector<double> u(L_.support_dofs().size(), 0.0);  // 0 outside the window
+    if (support_p_.rows() == 0) return u;
+    Eigen::VectorXd h(support_p_.rows());
+    const double* xs[1] = {q_.data()};
+    kernels::rows_dot(support_p_.data(), q_.size(), static_cast<int>(support_p_.rows()), static_cast<int>(q_.size()), xs, 1, h.data());
+    for (std::size_t i = 0; i < support_of_.size(); ++i) u[static_cast<std::size_t>(support_of_[i])] = h[static_cast<Eigen::Index>(i)];
     return u;
   }
 
@@ -834,16 +841,27 @@ class ModalSolver final : public FeLineSolver {
     }
     return it->second[i];
   }
-  Mod contact_mod(const FeLine::Shape& sh, double d, double coeff) const {
+  // With `px`: Φᵀ N'(x) too (shape_slope), from the same rows in the same pass.
+  Mod contact_mod(const FeLine::Shape& sh, double d, double coeff, Eigen::VectorXd* px = nullptr) const {
     Mod m;
     const auto& md = *win_->modes;
-    m.p = Eigen::VectorXd::Zero(md.omega2.size());
+    const Eigen::Index nm = md.omega2.size();
+    m.p = Eigen::VectorXd::Zero(nm);
+    if (px) px->setZero(nm);
     m.ks = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(md.special.size()));
     for (int a = 0; a < 4; ++a)
       if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) {
-        m.l[static_cast<std::size_t>(a)] = l, m.w[static_cast<std::size_t>(a)] = sh.N[static_cast<std::size_t>(a)];
-        m.p += sh.N[static_cast<std::size_t>(a)] * md.phi.row(l).transpose();
-        m.ks += sh.N[static_cast<std::size_t>(a)] * md.kinv_special.row(l).transpose();
+        const double N = sh.N[static_cast<std::size_t>(a)], dN = sh.dN[static_cast<std::size_t>(a)];
+        m.l[static_cast<std::size_t>(a)] = l, m.w[static_cast<std::size_t>(a)] = N;
+        const double* row = md.phi.data() + static_cast<std::ptrdiff_t>(l) * nm;
+        double* p = m.p.data();
+        if (px) {
+          double* q = px->data();
+          for (Eigen::Index i = 0; i < nm; ++i) p[i] += N * row[i], q[i] += dN * row[i];
+        } else {
+          for (Eigen::Index i = 0; i < nm; ++i) p[i] += N * row[i];
+        }
+        m.ks += N * md.kinv_special.row(l).transpose();
       }
     m.pw = m.p.cwiseProduct(invw2_);
     m.d = d, m.coeff = coeff;
@@ -854,12 +872,22 @@ class ModalSolver final : public FeLineSolver {
   const Eigen::VectorXd& dropper_column(int l) {
     auto it = dropper_columns_.find(l);
     if (it != dropper_columns_.end()) return it->second;
+    make_dropper_columns(&l, 1);
+    return dropper_columns_.at(l);
+  }
+  // The columns of the `count` DOFs ls (not yet made), in one pass over the droppers' rows.
+  void make_dropper_columns(const int* ls, int count) {
     const auto& md = *win_->modes;
-    const Eigen::Index m = md.omega2.size();
-    Eigen::VectorXd z = md.phi.row(l).transpose().cwiseProduct(dz_), h(dropper_p_.rows());
-    const double* xs[1] = {z.data()};
-    kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(dropper_p_.rows()), static_cast<int>(m), xs, 1, h.data());
-    return dropper_columns_.emplace(l, std::move(h)).first->second;
+    const Eigen::Index m = md.omega2.size(), nd = dropper_p_.rows();
+    Eigen::MatrixXd z(m, count);
+    std::vector<const double*> xs(static_cast<std::size_t>(count));
+    for (int c = 0; c < count; ++c) {
+      z.col(c) = md.phi.row(ls[c]).transpose().cwiseProduct(dz_);
+      xs[static_cast<std::size_t>(c)] = z.col(c).data();
+    }
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> h(nd, count);
+    kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), xs.data(), count, h.data());
+    for (int c = 0; c < count; ++c) dropper_columns_.emplace(ls[c], h.col(c));
   }
   // Φᵀ N'(x): the modal row of the wire's slope at a contact point.
   Eigen::VectorXd shape_slope(const FeLine::Shape& sh) const {
@@ -934,6 +962,13 @@ class ModalSolver final : public FeLineSolver {
       const auto& dr = drs[static_cast<std::size_t>(droppers_[j])];
       dropper_p_.row(static_cast<Eigen::Index>(j)) = md.phi.row(win_->local(dr.dof_m)) - md.phi.row(win_->local(dr.dof_c));
     }
+    support_of_.clear();  // the supports in the window, their rows of Φ packed
+    const std::vector<int>& sup = L_.support_dofs();
+    for (std::size_t i = 0; i < sup.size(); ++i)
+      if (win_->local(sup[i]) >= 0) support_of_.push_back(static_cast<int>(i));
+    support_p_.resize(static_cast<Eigen::Index>(support_of_.size()), md.omega2.size());
+    for (std::size_t i = 0; i < support_of_.size(); ++i)
+      support_p_.row(static_cast<Eigen::Index>(i)) = md.phi.row(win_->local(sup[static_cast<std::size_t>(support_of_[i])]));
     for (std::size_t j = 0; j < droppers_.size(); ++j) {
       const auto& dr = drs[static_cast<std::size_t>(droppers_[j])];
       smods_.push_back(special_mod(static_cast<int>(2 * j), static_cast<int>(2 * j + 1), -ap * dr.stiffness, ap * dr.tension));
@@ -965,8 +1000,17 @@ class ModalSolver final : public FeLineSolver {
     const int C = alpha_ != 0 ? 4 : 3;  // one pass over Φ for the state's vectors
     const double* qs[4] = {q_.data(), qd_.data(), qdd_.data(), qi_.data()};
     const Eigen::Index no = mo.phi.rows(), mm = mo.phi.cols();
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> uva(no, C);
-    kernels::rows_dot(mo.phi.data(), mm, static_cast<int>(no), static_cast<int>(mm), qs, C, uva.data());
+    // Only the old window's rows on DOFs the new one shares are needed (with a margin of M's band for
+    // M u): the span left behind is not read.
+    const std::shared_ptr<const FeWindow> nw = ml_->window(first, W_);
+    const auto lo = std::lower_bound(old->dofs.begin(), old->dofs.end(), nw->dofs.front());
+    const auto hi = std::upper_bound(old->dofs.begin(), old->dofs.end(), nw->dofs.back());
+    const Eigen::Index margin = 32;
+    const Eigen::Index r0 = std::max<Eigen::Index>(0, (lo - old->dofs.begin()) - margin);
+    const Eigen::Index r1 = std::min<Eigen::Index>(no, (hi - old->dofs.begin()) + margin);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> uva = Eigen::MatrixXd::Zero(no, C);
+    if (r1 > r0)
+      kernels::rows_dot(mo.phi.data() + r0 * mm, mm, static_cast<int>(r1 - r0), static_cast<int>(mm), qs, C, uva.data() + r0 * C);
     const auto u = uva.col(0), v = uva.col(1), a = uva.col(2);
     Eigen::VectorXd fi;
     if (alpha_ != 0) fi = mo.M * uva.col(3);
@@ -1006,6 +1050,8 @@ class ModalSolver final : public FeLineSolver {
   Eigen::VectorXd q_, qd_, qdd_, qi_, damp_, A_, invA_, invw2_, dz_;  // dz_ = A⁻¹ − Ω⁻²/(1+α)
   std::vector<int> droppers_;  // global indices of the window's droppers
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> dropper_p_;  // a row per window dropper: Φᵀ(e_m − e_c)
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> support_p_;  // a row per window support: Φᵀe_s
+  std::vector<int> support_of_;  // their indices in the line's supports
   std::vector<char> slack_;    // per dropper of the line
   std::vector<char> active_;   // per penalty load
   std::vector<double> last_x_, last_res_, last_F_;

@@ -36,10 +36,9 @@ __attribute__((target("arch=x86-64-v3"))) void rows_dot_avx2(const double* A, st
   const int n8 = n - n % 8;
   for (int r = 0; r < rows; ++r) {
     const double* a = A + r * lda;
-    for (int c0 = 0; c0 < C; c0 += 2) {  // two vectors a pass: the row is read at most twice
-      const bool two = c0 + 1 < C;
-      const double* x0 = x[c0];
-      const double* x1 = two ? x[c0 + 1] : x[c0];
+    int c0 = 0;
+    for (; c0 + 1 < C; c0 += 2) {  // two vectors a pass: the row is read at most twice
+      const double *x0 = x[c0], *x1 = x[c0 + 1];
       v4 s0 = {}, s0b = {}, s1 = {}, s1b = {};
       for (int i = 0; i < n8; i += 8) {
         const v4 a0 = INERTA_LD(a + i), a1 = INERTA_LD(a + i + 4);
@@ -51,8 +50,24 @@ __attribute__((target("arch=x86-64-v3"))) void rows_dot_avx2(const double* A, st
       s0 += s0b, s1 += s1b;
       double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]), t1 = (s1[0] + s1[2]) + (s1[1] + s1[3]);
       for (int i = n8; i < n; ++i) t0 += a[i] * x0[i], t1 += a[i] * x1[i];
+      y[r * C + c0] = t0, y[r * C + c0 + 1] = t1;
+    }
+    if (c0 < C) {  // the last vector alone (four sums: half the loads of a pair's pass)
+      const double* x0 = x[c0];
+      v4 s0 = {}, s1 = {}, s2 = {}, s3 = {};
+      const int n16 = n - n % 16;
+      int i = 0;
+      for (; i < n16; i += 16) {
+        s0 += INERTA_LD(a + i) * INERTA_LD(x0 + i);
+        s1 += INERTA_LD(a + i + 4) * INERTA_LD(x0 + i + 4);
+        s2 += INERTA_LD(a + i + 8) * INERTA_LD(x0 + i + 8);
+        s3 += INERTA_LD(a + i + 12) * INERTA_LD(x0 + i + 12);
+      }
+      for (; i + 4 <= n; i += 4) s0 += INERTA_LD(a + i) * INERTA_LD(x0 + i);
+      s0 += s1, s2 += s3, s0 += s2;
+      double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]);
+      for (; i < n; ++i) t0 += a[i] * x0[i];
       y[r * C + c0] = t0;
-      if (two) y[r * C + c0 + 1] = t1;
     }
   }
 }
