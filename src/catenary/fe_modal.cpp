@@ -564,11 +564,19 @@ class ModalSolver final : public FeLineSolver {
     if (const int first = first_span_for(xs_); first != win_->first_span) move_to(first);
     const auto& md = *win_->modes;
     const std::size_t nd = droppers_.size(), ns = smods_.size();
-    // Right-hand side and the diagonal step matrix, a mode each.
-    w1_ = c0_ * q_ + c2_ * qd_ + c3_ * qdd_;
-    vt_ = c1_ * q_ + c4_ * qd_ + c5_ * qdd_;
-    r_ = w1_ + ap * damp_.cwiseProduct(vt_);
-    if (alpha_ != 0) r_ += alpha_ * qi_;
+    // Right-hand side and the diagonal step matrix, a mode each (one pass over the modes).
+    const Eigen::Index nm = q_.size();
+    vt_.resize(nm), r_.resize(nm);
+    {
+      const double *q = q_.data(), *qd = qd_.data(), *qdd = qdd_.data(), *qi = qi_.data(), *dm = damp_.data();
+      double *vt = vt_.data(), *r = r_.data();
+      for (Eigen::Index i = 0; i < nm; ++i) {
+        const double w1 = c0_ * q[i] + c2_ * qd[i] + c3_ * qdd[i];
+        vt[i] = c1_ * q[i] + c4_ * qd[i] + c5_ * qdd[i];
+        r[i] = w1 + ap * (dm[i] * vt[i]);
+        if (alpha_ != 0) r[i] += alpha_ * qi[i];
+      }
+    }
     forces.assign(loads.size(), 0.0);
     contacts_.clear();
     mods_.clear();
@@ -708,18 +716,23 @@ class ModalSolver final : public FeLineSolver {
       }
       if (!changed) break;
     }
-    // The modal solution: u = x0 + Σ coef_j A⁻¹ p_j.
-    sum_.setZero(x0_.size());
+    // The modal solution: u = x0 + Σ coef_j A⁻¹ p_j, then the Newmark update of q̇, q̈ (one pass).
+    sum_.setZero(nm);
     for (std::size_t j = 0; j < set_.size(); ++j) {
       const int sj = set_[j];
       const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
       sum_ += coef_[static_cast<Eigen::Index>(j)] * m.p;
     }
-    u_ = x0_ + invA_.cwiseProduct(sum_);
-    const Eigen::VectorXd a1 = c0_ * (u_ - q_) - c2_ * qd_ - c3_ * qdd_;
-    qd_ = c1_ * (u_ - q_) - c4_ * qd_ - c5_ * qdd_;
-    qdd_ = a1;
-    q_.swap(u_);
+    {
+      double *q = q_.data(), *qd = qd_.data(), *qdd = qdd_.data();
+      const double *x0 = x0_.data(), *iA = invA_.data(), *sm = sum_.data();
+      for (Eigen::Index i = 0; i < nm; ++i) {
+        const double u = x0[i] + iA[i] * sm[i], du = u - q[i];
+        const double a1 = c0_ * du - c2_ * qd[i] - c3_ * qdd[i];
+        qd[i] = c1_ * du - c4_ * qd[i] - c5_ * qdd[i];
+        qdd[i] = a1, q[i] = u;
+      }
+    }
     t_ = t1;
     // The residual (quasi-static) displacement at each load point, for height() and uplift().
     last_x_ = xs_;
@@ -1060,7 +1073,7 @@ class ModalSolver final : public FeLineSolver {
   std::unordered_map<int, Eigen::VectorXd> dropper_columns_;  // dropper_column(l) of the window shape
   // Step scratch.
   std::vector<double> xs_;
-  Eigen::VectorXd w1_, vt_, r_, x0_, u_, du_, coef_, sum_;
+  Eigen::VectorXd vt_, r_, x0_, du_, coef_, sum_;
   std::vector<Mod> mods_;
   std::vector<Contact> contacts_;
   std::vector<int> set_;
