@@ -69,7 +69,9 @@ inline StrutKinematics strut_kinematics(const BodyFrame& fi, const Vec2& ui, con
   const Vec2 e = r / s.l;
   s.l_dot = rd.dot(e);
   s.J.resize(6);
-  s.J << -e, -e.dot(pi.Atu), e, e.dot(pj.Atu);
+  // Element by element: GCC 12 warns (-Warray-bounds, a false positive) on the comma initialiser's
+  // 4-wide packet copy of a Vec2 into this dynamic vector in an AVX2 build.
+  s.J[0] = -e.x(), s.J[1] = -e.y(), s.J[2] = -e.dot(pi.Atu), s.J[3] = e.x(), s.J[4] = e.y(), s.J[5] = e.dot(pj.Atu);
   s.a_n_axial = e.dot(pj.a_bias - pi.a_bias);
   s.centripetal = (rd.squaredNorm() - s.l_dot * s.l_dot) / s.l;
   return s;
