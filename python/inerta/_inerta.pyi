@@ -1263,6 +1263,7 @@ class ReportOptions:
     map_size: int
     map_b_max: float
     map_k_max: float
+    best: int
     def __init__(self) -> None: ...
 
 class ReportCentripetal:

@@ -367,7 +367,8 @@ void bind_optim(py::module_& m) {
       .def_readwrite("frf_output", &optim::ReportOptions::frf_output)
       .def_readwrite("map_size", &optim::ReportOptions::map_size, "map points per axis; 0: no map")
       .def_readwrite("map_b_max", &optim::ReportOptions::map_b_max, "kg")
-      .def_readwrite("map_k_max", &optim::ReportOptions::map_k_max, "N/m");
+      .def_readwrite("map_k_max", &optim::ReportOptions::map_k_max, "N/m")
+      .def_readwrite("best", &optim::ReportOptions::best, "index in results of the design reported; -1: the lowest cost within the limits");
   py::class_<optim::Report::Centripetal>(m, "ReportCentripetal", "σ(v) with the centripetal correction on and off.")
       .def_readonly("design", &optim::Report::Centripetal::design)
       .def_readonly("on", &optim::Report::Centripetal::on)

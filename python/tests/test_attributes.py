@@ -74,6 +74,10 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     o = inerta.ReportOptions()
     o.map_size, o.frf_f = 0, [1.0]
     out += [inerta.make_report(st.replace(layouts=["S2-5"]), [lr], o), o]
+    o.best = 1  # one result: index 1 does not exist
+    with pytest.raises(ValueError, match="best = 1 but there are 1 layout results"):
+        inerta.make_report(st.replace(layouts=["S2-5"]), [lr], o)
+    o.best = 0
     p = tmp_path_factory.mktemp("csv") / "m.csv"
     p.write_text("a,b\n1,2\n3,4\n")
     t = inerta.CsvTable.read(p)

@@ -187,6 +187,11 @@ Report make_report(const Study& study, const std::vector<LayoutResult>& results,
   std::size_t b = 0;
   for (std::size_t i = 0; i < results.size(); ++i)
     if (results[i].cost.penalised() < results[b].cost.penalised()) b = i;  // within the limits first
+  if (options.best >= 0) {
+    if (static_cast<std::size_t>(options.best) >= results.size())
+      throw std::invalid_argument(fmt::format("make_report: best = {} but there are {} layout results", options.best, results.size()));
+    b = static_cast<std::size_t>(options.best);
+  }
   r.best = {"best (" + results[b].layout + ")", results[b].layout, results[b].values,
             network::resolve(results[b].layout, results[b].values)};
 

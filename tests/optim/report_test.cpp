@@ -104,6 +104,29 @@ TEST(Report, CentripetalOptionReachesTheInerterOnly) {
   EXPECT_DOUBLE_EQ(optim::worst_of(on).J, optim::evaluate_time(s, with_b).J);
 }
 
+TEST(Report, TheReportedDesignCanBeChosen) {
+  // `optimise` reports the best time-domain re-check when the fast path ranks another design first
+  // (issue 24 item 4): ReportOptions::best picks it; an index beyond the results is an error.
+  const optim::Study s = io::load_study(write_study(
+      "report_study_best.yaml", study_text("[[catenary.kc0=7000]]", "{from: 150, to: 250, step: 50, unit: kmh}", "[k, b|k]")));
+  std::vector<optim::LayoutResult> results{optim::optimise_layout(s, "k"), optim::optimise_layout(s, "b|k")};
+  const int worse = results[0].cost.J < results[1].cost.J ? 1 : 0;
+  optim::ReportOptions o;
+  o.map_size = 0;
+  o.frf_f = {1.0};
+  o.best = worse;
+  const optim::Report r = optim::make_report(s, results, o);
+  EXPECT_EQ(r.best.layout, results[static_cast<std::size_t>(worse)].layout);
+  EXPECT_DOUBLE_EQ(r.best_cost.J, results[static_cast<std::size_t>(worse)].cost.J);
+  o.best = 2;
+  EXPECT_THROW(
+      try { optim::make_report(s, results, o); } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), "make_report: best = 2 but there are 2 layout results");
+        throw;
+      },
+      std::invalid_argument);
+}
+
 TEST(Report, ReportDataAndCsvFiles) {
   const optim::Study s = io::load_study(write_study(
       "report_study_r.yaml",

@@ -96,6 +96,9 @@ struct ReportOptions {
   std::string frf_output = "P_ay";             ///< the head's vertical acceleration
   int map_size = 15;                           ///< (d): map_size × map_size points; 0: no map
   double map_b_max = 1500, map_k_max = 100e3;  ///< (d): ranges [0, max], widened to hold the optimum
+  /// The index in `results` of the design the report is about; −1: the lowest cost within the limits.
+  /// (`optimise` passes the best time-domain re-check of a `layouts: all` study, issue 24 item 4.)
+  int best = -1;
 };
 
 struct Report {
