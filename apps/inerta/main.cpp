@@ -16,12 +16,15 @@
 #include <filesystem>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
+#include "acceptance.hpp"
 #include "checks.hpp"
 #include "identify.hpp"
 #include "linear.hpp"
 #include "networks.hpp"
+#include "inerta/analysis/acceptance.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
@@ -32,6 +35,7 @@
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/acceptance_file.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/lumped_fit_file.hpp"
 #include "inerta/io/file_kind.hpp"
@@ -282,6 +286,7 @@ struct SimulateArgs {
   CatenaryArgs cat;
   double speed = -1;
   int spans = 12;
+  cli::AcceptanceArgs acceptance;
 };
 
 // "0,200.5" → {0, 200.5}: positions along the line, m.
@@ -427,6 +432,9 @@ int cmd_simulate(const SimulateArgs& a) {
   if (!a.cat.catenary.empty()) {
     // Pantographs under a catenary: from the coupled static equilibrium (no start-up jolt).
     if (!(a.speed > 0)) throw CLI::ValidationError("--speed", "a run under a catenary needs --speed > 0");
+    std::optional<analysis::AcceptanceCriteria> criteria;
+    if (!a.acceptance.criteria.empty()) criteria = io::load_acceptance(a.acceptance.criteria);
+    io::check_output_path(cli::acceptance_path(a.out), {a.model, a.cat.catenary, a.out});
     auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
     for (const auto& note : panto.model.notes) fmt::print(info, "note: {}\n", note);
     std::vector<catenary::PantographOnLine> train;
@@ -437,6 +445,7 @@ int cmd_simulate(const SimulateArgs& a) {
     co.t_end = a.t_end;
     co.sample = a.sample;
     co.integrator = opt;
+    if (criteria) co.filter_cutoff = criteria->filter_cutoff, co.filter_order = criteria->filter_order;
     const double v = to_ms(a.speed, a.cat.unit);
     note_long_run(cat.catenary->estimated_seconds(train, v, co.t_end), "this run");
     const analysis::CoupledSimulation r = analysis::simulate_coupled(train, *cat.catenary, v, co, progress);
@@ -471,8 +480,12 @@ int cmd_simulate(const SimulateArgs& a) {
                    c.lost_samples, r.histories[k].t.size(), c.first_loss_t, c.first_loss_x);
     }
     if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
+    if (criteria)
+      return cli::report_acceptance(info, *criteria, analysis::verdict(*criteria, r), a.out, a.acceptance.strict,
+                                    a.cat.unit == "kmh");
     return 0;
   }
+  if (!a.acceptance.criteria.empty()) throw CLI::ValidationError("--acceptance", "needs --catenary FILE");
   if (a.speed > 0) throw CLI::ValidationError("--speed", "needs --catenary FILE");
   if (!a.positions.empty()) throw CLI::ValidationError("--positions", "needs --catenary FILE");
   mbs::Model model = io::load_model(a.model, a.cat.sets);
@@ -592,10 +605,16 @@ struct SweepArgs {
   CatenaryArgs cat;
   double rtol = 1e-6, atol = 1e-8;
   bool no_centripetal = false;
+  cli::AcceptanceArgs acceptance;
 };
 
 int cmd_sweep(const SweepArgs& a) {
   OutputFile file(a.out, {a.model, a.cat.catenary});  // checked before the sweep
+  std::optional<analysis::AcceptanceCriteria> criteria;
+  if (!a.acceptance.criteria.empty()) {
+    criteria = io::load_acceptance(a.acceptance.criteria);
+    io::check_output_path(cli::acceptance_path(a.out), {a.model, a.cat.catenary, a.out});
+  }
   auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
   for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
@@ -608,6 +627,7 @@ int cmd_sweep(const SweepArgs& a) {
   o.integrator.method = solve::parse_method(a.integrator);
   o.integrator.rtol = a.rtol;
   o.integrator.atol = a.atol;
+  if (criteria) o.filter_cutoff = criteria->filter_cutoff, o.filter_order = criteria->filter_order;
   if (a.method != "periodic")
     note_long_run(analysis::estimated_sweep_seconds({{panto, 0.0, cat.contact}}, *cat.catenary, v),
                   fmt::format("this sweep of {} speeds", v.size()));
@@ -631,9 +651,13 @@ int cmd_sweep(const SweepArgs& a) {
   std::FILE* out = file.get();
   const bool line = !results.empty() && !results.front().filtered.empty();  // a finite line: EN 50317 columns
   const bool periodic = a.method == "periodic";
-  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}{}\n",
+  // With --acceptance: the contact loss as the criteria count it (events of at least their minimum duration).
+  std::vector<analysis::VerdictRow> verdict;
+  if (criteria) verdict = analysis::verdict(*criteria, results);
+  const bool counted = criteria && !criteria->contact_loss.empty();
+  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}{}{}\n",
              line ? ",f_mean,f_std,f_max,f_min,f_stat_max,f_stat_min,uplift_max_m" : "",
-             periodic ? ",floquet_max,stable" : ",converged");
+             periodic ? ",floquet_max,stable" : ",converged", counted ? ",loss_counted_pct" : "");
   std::size_t worst = results.size();
   int spans_max = 0;
   std::vector<std::string> unstable, unsettled;
@@ -651,6 +675,12 @@ int cmd_sweep(const SweepArgs& a) {
       fmt::print(out, ",{:.6g},{:d}", results[i].floquet, results[i].stable() ? 1 : 0);
     else
       fmt::print(out, ",{:d}", results[i].converged ? 1 : 0);
+    if (counted) {
+      double loss = NAN;
+      for (const auto& x : verdict)
+        if (x.speed == results[i].speed && x.pantograph == 1 && x.result.criterion == "contact_loss") loss = x.result.value;
+      fmt::print(out, ",{:.6g}", loss);
+    }
     fmt::print(out, "\n");
     const std::string speed = fmt::format("{:g}", a.cat.unit == "kmh" ? v[i] * 3.6 : v[i]);
     if (!results[i].stable()) unstable.push_back(fmt::format("{} (|μ| = {:.4g})", speed, results[i].floquet));
@@ -680,6 +710,8 @@ int cmd_sweep(const SweepArgs& a) {
     fmt::print("sigma_max = {:.3f} N at {:.4g} km/h ({:.4g} m/s); mean contact force there {:.2f} N{}\n",
                results[worst].stats.std, v[worst] * 3.6, v[worst], results[worst].stats.mean,
                unstable.empty() ? "" : " (over the stable speeds)");
+  const int verdict_code =
+      criteria ? cli::report_acceptance(a.out.empty() ? stderr : stdout, *criteria, verdict, a.out, a.acceptance.strict, a.cat.unit == "kmh") : 0;
   if (!unstable.empty()) {
     fmt::print(stderr,
                "unstable: the periodic solution is unstable at {} {} (largest Floquet multiplier ≥ 1: parametric "
@@ -687,7 +719,7 @@ int cmd_sweep(const SweepArgs& a) {
                fmt::join(unstable, ", "), unit);
     return exit_unstable;
   }
-  return 0;
+  return verdict_code;
 }
 
 struct FitArgs {
@@ -736,6 +768,7 @@ struct CheckReductionArgs {
   std::string model = INERTA_SOURCE_DIR "/models/pantograph-3mass.yaml", speeds;
   CatenaryArgs cat;
   double tolerance = 1.0;
+  std::string acceptance;
 };
 
 // The finite-element line's modal solve against its direct solve (docs/catenary-fe.md "Modal solver"):
@@ -751,6 +784,8 @@ int cmd_check_reduction(CheckReductionArgs a) {
   }
   const io::CatenaryFile probe = io::read_catenary_file(a.cat.catenary, io::split_overrides(a.model, a.cat.sets).second);
   if (!probe.fe) throw ModelError(fmt::format("{}: check-reduction needs a finite-element catenary (type: finite_element)", a.cat.catenary));
+  std::optional<analysis::AcceptanceCriteria> criteria;
+  if (!a.acceptance.empty()) criteria = io::load_acceptance(a.acceptance);
   CatenaryArgs direct = a.cat, modal = a.cat;
   direct.sets.push_back("solver.type=direct");
   modal.sets.push_back("solver.type=modal");
@@ -758,7 +793,9 @@ int cmd_check_reduction(CheckReductionArgs a) {
   auto [panto2, cand] = pantograph_setup(a.model, modal);
   fmt::print("reference: {}\ncandidate: {}\n", ref.catenary->describe(), cand.catenary->describe());
   const std::vector<catenary::PantographOnLine> train{{panto, 0.0, ref.contact}};
-  const auto rows = analysis::compare(train, *ref.catenary, *cand.catenary, v, analysis::RunOptions{});
+  analysis::RunOptions ro;
+  if (criteria) ro.filter_cutoff = criteria->filter_cutoff, ro.filter_order = criteria->filter_order;
+  const auto rows = analysis::compare(train, *ref.catenary, *cand.catenary, v, ro);
   auto pct = [](double a_, double b_) { return a_ != 0 ? 100 * (b_ - a_) / std::abs(a_) : 0.0; };
   double worst = 0;
   for (const auto& r : rows) {
@@ -777,6 +814,18 @@ int cmd_check_reduction(CheckReductionArgs a) {
     row("uplift max mm", 1e3 * up_d, 1e3 * up_m);
     row("wall s", r.reference_s, r.candidate_s);
     worst = std::max({worst, std::abs(pct(d.stats.std, m.stats.std)), std::abs(pct(d.filtered[0].std, m.filtered[0].std))});
+    if (criteria) {  // the same verdict from both solves? (reported; the exit code stays the σ tolerance's)
+      const auto vd = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{d});
+      const auto vm = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{m});
+      std::vector<std::string> differ;
+      for (std::size_t i = 0; i < vd.size() && i < vm.size(); ++i)
+        if (io::status_text(vd[i].result) != std::string(io::status_text(vm[i].result)))
+          differ.push_back(fmt::format("{} (direct {} {:.4g}, modal {} {:.4g})", vd[i].result.criterion, io::status_text(vd[i].result),
+                                       vd[i].result.value, io::status_text(vm[i].result), vm[i].result.value));
+      fmt::print("  acceptance {}: direct {}, modal {}{}\n", criteria->name, analysis::passed(vd) ? "PASS" : "FAIL",
+                 analysis::passed(vm) ? "PASS" : "FAIL",
+                 differ.empty() ? "; every criterion the same" : fmt::format("; criteria that differ: {}", fmt::join(differ, "; ")));
+    }
   }
   fmt::print("\nlargest difference of sigma (raw or 20 Hz): {:.3f} % (tolerance {:g} %)\n", worst, a.tolerance);
   if (worst > a.tolerance) {
@@ -1292,6 +1341,7 @@ int main(int argc, char** argv) {
       ->check(count_rule(analysis::spans_rule));
   sim->add_option("--positions", sa.positions,
                   "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200");
+  cli::add_acceptance_options(sim, sa.acceptance);
 
   AdmittanceArgs aa;
   auto* adm = app.add_subcommand("admittance", "Admittance Y = force / relative velocity of a network (CSV)");
@@ -1319,6 +1369,7 @@ int main(int argc, char** argv) {
   swp->add_option("--harmonics", wa.harmonics, "Periodic method: harmonics of the pumping frequency")
       ->capture_default_str()
       ->check(count_rule(analysis::harmonics_rule));
+  cli::add_acceptance_options(swp, wa.acceptance);
 
   ModesArgs ma;
   auto* mds =
@@ -1380,11 +1431,14 @@ int main(int argc, char** argv) {
   crd->add_option("--tolerance", cra.tolerance, "Largest difference of sigma accepted, % (exit 1 beyond)")
       ->capture_default_str()
       ->check(number_in(0, 1e6, "a percentage"));
+  crd->add_option("--acceptance", cra.acceptance,
+                  "Also say whether both solves reach the same acceptance verdict (a preset or a criteria file)");
   cat_cmd->require_subcommand(1);
 
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
   CLI::App* rms = inerta::cli::add_rms_command(app);         // apps/inerta/linear.cpp
   CLI::App* nets = inerta::cli::add_networks_command(app);   // apps/inerta/networks.cpp
+  CLI::App* pan = inerta::cli::add_pantograph_command(app);  // apps/inerta/acceptance.cpp
 
   OptimiseArgs oa;
   auto* opt = app.add_subcommand("optimise", "Optimise the suspension layouts of a study file (spec/07)");
@@ -1418,6 +1472,7 @@ int main(int argc, char** argv) {
     if (idn->parsed()) return inerta::cli::run_identify();
     if (rms->parsed()) return inerta::cli::run_rms();
     if (nets->parsed()) return inerta::cli::run_networks();
+    if (pan->parsed()) return inerta::cli::run_pantograph();
     if (opt->parsed()) return cmd_optimise(oa);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);

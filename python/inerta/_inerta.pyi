@@ -811,6 +811,8 @@ class RunOptions:
     samples_per_span: int
     integrator: IntegratorOptions
     fixed_spans: bool
+    filter_cutoff: float
+    filter_order: int
     def __init__(self, **kwargs: Any) -> None: ...
 
 class ContactStatistics:
@@ -941,6 +943,9 @@ class SpeedResult:
     @property
     def support_uplift(self) -> FloatArray: ...
     filtered: list[ContactStatistics]
+    loss_runs: list[list[int]]
+    sample_dt: float
+    uplift_limit: float
 
 class SweepResult:
     def __init__(self, results: Sequence[SpeedResult], wall_s: float = 0.0, method: str = "time") -> None: ...
@@ -985,6 +990,30 @@ def sweep(model: ModelsOnLine, catenary: CatenaryLike, speeds: ArrayLike, *, con
           positions: Optional[ArrayLike] = None, options: Optional[RunOptions] = None, method: Optional[str] = None,
           rtol: Optional[float] = None, atol: Optional[float] = None,
           progress: Optional[Callable[[int, int], None]] = None) -> SweepResult: ...
+class AcceptanceCriteria:
+    name: str
+    source: str
+    filter_cutoff: float
+    filter_order: int
+    has_target: bool
+    def target(self, speed: float) -> float: ...
+
+def load_acceptance(criteria: Union[str, os.PathLike[str]]) -> AcceptanceCriteria: ...
+def acceptance_presets() -> list[str]: ...
+def acceptance(result: Union[SweepResult, CoupledResult],
+               criteria: Union[str, os.PathLike[str], AcceptanceCriteria]) -> np.ndarray: ...
+
+class AeroFit:
+    reached: bool
+    a: float
+    mean: float
+    mean_without: float
+    target: float
+    runs: int
+
+def fit_aerodynamic(model: Model, catenary: CatenaryLike, speed: float,
+                    criteria: Union[str, os.PathLike[str], AcceptanceCriteria], *,
+                    contact: ContactLike = None) -> AeroFit: ...
 def sweep_periodic(model: Model, catenary: CatenaryLike, speeds: ArrayLike, *, contact: ContactLike = None,
                    harmonics: int = 8) -> SweepResult: ...
 class RunComparison:
@@ -1105,6 +1134,8 @@ class ContactLimits:
     loss_max: float
     statistical_min: float
     uplift_max: float
+    @property
+    def acceptance(self) -> Optional[AcceptanceCriteria]: ...
     def any(self) -> bool: ...
 
 class ElementBounds:
@@ -1167,6 +1198,8 @@ class StudyCost:
     loss_pct: float
     statistical_min: float
     uplift: float
+    binding: str
+    binding_margin: float
     def penalised(self) -> float: ...
 
 class LayoutResult:

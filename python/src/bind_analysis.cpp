@@ -7,6 +7,9 @@
 #include <chrono>
 
 #include "common.hpp"
+#include "inerta/io/acceptance_file.hpp"
+#include "inerta/analysis/acceptance.hpp"
+#include "inerta/analysis/aero_fit.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
@@ -177,7 +180,9 @@ void bind_analysis(py::module_& m) {
       .def_readwrite("window_spans", &analysis::RunOptions::window_spans, "statistics over the last spans")
       .def_readwrite("samples_per_span", &analysis::RunOptions::samples_per_span)
       .def_readwrite("integrator", &analysis::RunOptions::integrator)
-      .def_readwrite("fixed_spans", &analysis::RunOptions::fixed_spans, "run exactly min_spans spans");
+      .def_readwrite("fixed_spans", &analysis::RunOptions::fixed_spans, "run exactly min_spans spans")
+      .def_readwrite("filter_cutoff", &analysis::RunOptions::filter_cutoff, "Hz, the 20 Hz statistics' low-pass of a finite line")
+      .def_readwrite("filter_order", &analysis::RunOptions::filter_order, "order of each pass of that low-pass");
 
   py::class_<analysis::ContactStatistics>(m, "ContactStatistics",
                                           "Contact-force statistics over a window (N; compression positive).")
@@ -400,6 +405,10 @@ void bind_analysis(py::module_& m) {
                              "a finite line: supports in the analysis section, m")
       .def_property_readonly("support_uplift", [](const analysis::SpeedResult& s) { return copy(s.support_uplift); },
                              "a finite line: the largest uplift of each, m")
+      .def_readonly("loss_runs", &analysis::SpeedResult::loss_runs,
+                    "a finite line: per pantograph, the lengths (samples) of the section's runs of raw F <= 0")
+      .def_readonly("sample_dt", &analysis::SpeedResult::sample_dt, "s, the sampling step of a finite line's run")
+      .def_readonly("uplift_limit", &analysis::SpeedResult::uplift_limit, "m, the line's registration uplift limit (NaN: none)")
       .def_readonly("filtered", &analysis::SpeedResult::filtered,
                     "a finite line: each contact's statistics after the 20 Hz low-pass (EN 50317)")
       .def_property_readonly("t", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().t, self); },
@@ -413,7 +422,7 @@ void bind_analysis(py::module_& m) {
       .def(py::pickle(
           [](const analysis::SpeedResult& s) {
             return py::make_tuple(s.speed, s.stats, s.contacts, s.spans, s.sigma_change, s.converged, s.floquet, s.t, s.F,
-                                  s.support_x, s.support_uplift, s.filtered);
+                                  s.support_x, s.support_uplift, s.filtered, s.loss_runs, s.sample_dt, s.uplift_limit);
           },
           [](const py::tuple& t) {
             analysis::SpeedResult s;
@@ -423,6 +432,8 @@ void bind_analysis(py::module_& m) {
             s.t = t[7].cast<std::vector<double>>(), s.F = t[8].cast<std::vector<double>>();
             s.support_x = t[9].cast<std::vector<double>>(), s.support_uplift = t[10].cast<std::vector<double>>();
             s.filtered = t[11].cast<std::vector<analysis::ContactStatistics>>();
+            s.loss_runs = t[12].cast<std::vector<std::vector<long>>>(), s.sample_dt = t[13].cast<double>();
+            s.uplift_limit = t[14].cast<double>();
             return s;
           }));
 
@@ -713,6 +724,86 @@ void bind_analysis(py::module_& m) {
         "The lumped catenary alone under a constant upward force (N): steady acceleration amplitude against the "
         "pumping frequency f_p = v/L (Hz), as `inerta catenary-response`. catenary: a LumpedCatenary, a lumped "
         "Catenary or CatenaryFile.");
+
+  // ---- Acceptance (analysis/acceptance.hpp, docs/contact-quality.md "Acceptance") ----------------------
+  py::class_<analysis::AcceptanceCriteria, std::shared_ptr<analysis::AcceptanceCriteria>>(m, "AcceptanceCriteria",
+                                           "An acceptance criteria set (a preset or a file, load_acceptance).")
+      .def_readonly("name", &analysis::AcceptanceCriteria::name)
+      .def_readonly("source", &analysis::AcceptanceCriteria::source, "the file it was read from")
+      .def_readonly("filter_cutoff", &analysis::AcceptanceCriteria::filter_cutoff, "Hz")
+      .def_readonly("filter_order", &analysis::AcceptanceCriteria::filter_order)
+      .def_readonly("has_target", &analysis::AcceptanceCriteria::has_target)
+      .def("target", [](const analysis::AcceptanceCriteria& c, double v) {
+        if (!c.has_target) throw py::value_error(fmt::format("the criteria set '{}' has no target curve", c.name));
+        return c.target.at(v * 3.6);
+      }, py::arg("speed"), "the mean-force target at a speed in m/s, N")
+      .def("__repr__", [](const analysis::AcceptanceCriteria& c) { return fmt::format("AcceptanceCriteria('{}', {})", c.name, c.source); });
+  m.def("load_acceptance", [](const py::object& which) { return io::load_acceptance(path_arg(which)); }, py::arg("criteria"),
+        "An acceptance criteria set: a preset name (en50367-ac, en50367-dc3; inerta.acceptance_presets()) or a criteria "
+        "file. ModelError with file, line and key for a bad file.");
+  m.def("acceptance_presets", &io::acceptance_presets, "The names of the shipped acceptance criteria presets.");
+  m.def("acceptance", [](const py::object& result, const py::object& criteria) {
+    analysis::AcceptanceCriteria loaded;
+    const analysis::AcceptanceCriteria* c = nullptr;
+    if (py::isinstance<analysis::AcceptanceCriteria>(criteria))
+      c = &criteria.cast<const analysis::AcceptanceCriteria&>();
+    else
+      loaded = io::load_acceptance(path_arg(criteria)), c = &loaded;
+    std::vector<analysis::VerdictRow> rows;
+    if (py::isinstance<SweepResult>(result))
+      rows = analysis::verdict(*c, result.cast<const SweepResult&>().r);
+    else if (py::isinstance<CoupledResult>(result))
+      rows = analysis::verdict(*c, *result.cast<const CoupledResult&>().sim);
+    else
+      throw py::type_error(fmt::format("acceptance: result: expected the result of inerta.sweep or inerta.simulate_coupled, "
+                                       "got {}", py::str(py::type::of(result)).cast<std::string>()));
+    py::list items;
+    for (const auto& x : rows)
+      items.append(py::make_tuple(x.speed, x.pantograph, x.result.criterion, x.result.unit, x.result.value, x.result.limit,
+                                  x.result.margin, x.result.passed, x.result.assessed));
+    py::list dtype;
+    for (const auto& [name, type] : std::vector<std::pair<const char*, const char*>>{
+             {"speed", "f8"}, {"pantograph", "i4"}, {"criterion", "U16"}, {"unit", "U2"}, {"value", "f8"},
+             {"limit", "f8"}, {"margin", "f8"}, {"passed", "?"}, {"assessed", "?"}})
+      dtype.append(py::make_tuple(name, type));
+    return py::module_::import("numpy").attr("array")(items, py::arg("dtype") = dtype);
+  }, py::arg("result"), py::arg("criteria"),
+        "The acceptance verdict of a sweep (inerta.sweep) or a coupled simulation (inerta.simulate_coupled), as the "
+        "CLI's --acceptance: a NumPy structured array, one row per speed, pantograph and criterion, with fields speed "
+        "(m/s), pantograph (1 = the leading one), criterion, unit (N, %, m), value, limit, margin (positive: passes), "
+        "passed, assessed (False: outside the criterion's speeds or without the data it needs; passed is then False "
+        "and the row does not decide the verdict). criteria: a preset name, a file or an AcceptanceCriteria. The runs "
+        "give the 20 Hz statistics with their own filter (20 Hz, order 4 by default); a set with another filter needs "
+        "runs made with it (RunOptions.filter_cutoff / filter_order).");
+
+  py::class_<analysis::AeroFit>(m, "AeroFit", "The aerodynamic uplift a v² that brings the mean contact force to a target.")
+      .def_readonly("reached", &analysis::AeroFit::reached)
+      .def_readonly("a", &analysis::AeroFit::a, "N·s²/m² (b = c = 0)")
+      .def_readonly("mean", &analysis::AeroFit::mean, "N, the mean contact force with that a")
+      .def_readonly("mean_without", &analysis::AeroFit::mean_without, "N, with a = 0")
+      .def_readonly("target", &analysis::AeroFit::target, "N")
+      .def_readonly("runs", &analysis::AeroFit::runs)
+      .def("__repr__", [](const analysis::AeroFit& f) {
+        return fmt::format("AeroFit(reached={}, a={:.6g}, mean={:.3f} N, target={:.3f} N)", f.reached ? "True" : "False", f.a,
+                           f.mean, f.target);
+      });
+  m.def("fit_aerodynamic", [](const Model& model, const py::object& catenary, double speed, const py::object& criteria,
+                              const py::object& contact) {
+    const CatenaryArg cat = catenary_arg(catenary);
+    const catenary::Contact k = contact_arg(contact, cat);
+    const analysis::AcceptanceCriteria c = py::isinstance<analysis::AcceptanceCriteria>(criteria)
+                                               ? criteria.cast<analysis::AcceptanceCriteria>()
+                                               : io::load_acceptance(path_arg(criteria));
+    if (!c.has_target) throw py::value_error(fmt::format("the criteria set '{}' has no mean-force target curve", c.name));
+    analysis::RunOptions o;
+    o.filter_cutoff = c.filter_cutoff, o.filter_order = c.filter_order;
+    const auto stats = c.mean.empty() ? analysis::Statistics::Raw : c.mean.front().statistics;
+    return run(py::none(), [&](Call&) {
+      return analysis::fit_aerodynamic(model.p, *cat.catenary, k, speed, c.target.at(speed * 3.6), stats, o);
+    });
+  }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::arg("criteria"), py::kw_only(), py::arg("contact") = py::none(),
+        "The a >= 0 of an aerodynamic uplift a v² (b = c = 0) for which the mean contact force at `speed` (m/s) equals "
+        "the criteria set's target curve (as `inerta pantograph aero-fit`); reached is False if none does.");
 }
 
 }  // namespace inerta::python

@@ -83,6 +83,9 @@ void bind_optim(py::module_& m) {
       .def_readonly("loss_max", &optim::ContactLimits::loss_max, "%")
       .def_readonly("statistical_min", &optim::ContactLimits::statistical_min, "N, F_m − 3σ at least")
       .def_readonly("uplift_max", &optim::ContactLimits::uplift_max, "m, support uplift at most")
+      .def_property_readonly("acceptance", [](const optim::ContactLimits& l) {
+        return std::const_pointer_cast<analysis::AcceptanceCriteria>(l.acceptance);
+      }, "an acceptance criteria set as limits, or None")
       .def("any", &optim::ContactLimits::any);
   py::class_<optim::ElementBounds>(m, "ElementBounds", "The physical range [lo, hi] of one kind of element, SI.")
       .def_readonly("lo", &optim::ElementBounds::lo)
@@ -172,6 +175,9 @@ void bind_optim(py::module_& m) {
       .def_readonly("loss_pct", &optim::StudyCost::loss_pct, "largest contact loss, %")
       .def_readonly("statistical_min", &optim::StudyCost::statistical_min, "lowest F_m − 3σ, N")
       .def_readonly("uplift", &optim::StudyCost::uplift, "largest support uplift (a finite line), m; NaN otherwise")
+      .def_readonly("binding", &optim::StudyCost::binding,
+                    "with acceptance limits: the criterion with the least relative margin ('sigma at 300 km/h')")
+      .def_readonly("binding_margin", &optim::StudyCost::binding_margin, "its margin relative to its limit (< 0: fails)")
       .def("__repr__", [](const optim::StudyCost& c) {
         return fmt::format("StudyCost(J={:.4f} N at {:.4g} km/h, catenary {}{})", c.J, c.speed * 3.6, c.catenary,
                            c.feasible ? "" : "; outside the limits: " + c.violation);
@@ -179,7 +185,8 @@ void bind_optim(py::module_& m) {
       .def(py::pickle(  // exact (Dask workers return their layouts' results, docs/distributed.md)
           [](const optim::StudyCost& c) {
             return py::make_tuple(c.J, c.excess, c.feasible, c.violation, c.mean_min, c.mean_max, c.loss_pct,
-                                  c.statistical_min, c.uplift, c.speed, c.mean, c.catenary, c.unstable_speed, c.floquet);
+                                  c.statistical_min, c.uplift, c.speed, c.mean, c.catenary, c.unstable_speed, c.floquet,
+                                  c.binding, c.binding_margin);
           },
           [](const py::tuple& t) {
             optim::StudyCost c;
@@ -188,6 +195,7 @@ void bind_optim(py::module_& m) {
             c.loss_pct = t[6].cast<double>(), c.statistical_min = t[7].cast<double>(), c.uplift = t[8].cast<double>();
             c.speed = t[9].cast<double>(), c.mean = t[10].cast<double>(), c.catenary = t[11].cast<int>();
             c.unstable_speed = t[12].cast<double>(), c.floquet = t[13].cast<double>();
+            c.binding = t[14].cast<std::string>(), c.binding_margin = t[15].cast<double>();
             return c;
           }));
   py::class_<optim::LayoutResult>(m, "LayoutResult", "The optimum of one layout.")

@@ -312,11 +312,20 @@ BOUND = {
     "optim::ElementBounds": "ElementBounds",
     "optim::cost_of": "cost_of",
     "optim::search_variables": "search_variables",
+    # acceptance (analysis/acceptance.hpp, io/acceptance_file.hpp, analysis/aero_fit.hpp)
+    "analysis::AcceptanceCriteria": "AcceptanceCriteria",
+    "analysis::verdict": "acceptance",
+    "io::load_acceptance": "load_acceptance",
+    "io::acceptance_presets": "acceptance_presets",
+    "analysis::AeroFit": "AeroFit",
+    "analysis::fit_aerodynamic": "fit_aerodynamic",
 }
 
 _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the right-hand side (about a "
                "microsecond a call, less than Python's call overhead); what they compute reaches Python "
                "through outputs, constraints(), forces() and accelerations()")
+
+_ACCEPTANCE = "the verdict's parts; Python gets the whole table from inerta.acceptance (a NumPy structured array)"
 
 EXCLUDED = {
     "optim::structure_search": "the generic driver takes a C++ objective called from worker threads; Python calls "
@@ -412,4 +421,21 @@ EXCLUDED = {
     "io::yaml_load_file": "internal helper of the YAML readers",
     "io::yaml_number": "internal helper of the YAML readers",
     "io::yaml_bool": "internal helper of the YAML readers",
+    "analysis::SpeedCurve": _ACCEPTANCE,
+    "analysis::Statistics": _ACCEPTANCE,
+    "analysis::SpeedRange": _ACCEPTANCE,
+    "analysis::VerdictInput": _ACCEPTANCE,
+    "analysis::CriterionResult": _ACCEPTANCE,
+    "analysis::VerdictRow": _ACCEPTANCE,
+    "analysis::assess": _ACCEPTANCE,
+    "analysis::counted_loss_pct": _ACCEPTANCE,
+    "analysis::loss_runs": _ACCEPTANCE,
+    "analysis::passed": _ACCEPTANCE,
+    "analysis::verdict_inputs": _ACCEPTANCE,
+    "analysis::binding": _ACCEPTANCE,
+    "analysis::relative_margin": _ACCEPTANCE,
+    "analysis::with_aerodynamic": "fit_aerodynamic returns a; a model file or --set pantograph.aerodynamic.a sets it",
+    "io::acceptance_csv": "the CLI's OUT.acceptance.csv; Python has the table as a NumPy array (inerta.acceptance)",
+    "io::write_acceptance_csv": "the CLI's OUT.acceptance.csv; Python has the table as a NumPy array (inerta.acceptance)",
+    "io::status_text": "the CLI's words for a row; Python has passed and assessed",
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "inerta/analysis/acceptance.hpp"
 #include "inerta/error.hpp"
 
 namespace inerta::analysis {
@@ -80,6 +81,7 @@ ContactQuality contact_quality(const std::vector<double>& t, const std::vector<d
   q.raw = statistics(raw);
   q.filtered = statistics(std::vector<double>(smooth.begin() + begin, smooth.begin() + end));
   q.loss_pct = q.raw.loss_pct;
+  q.loss_runs = loss_runs(raw);
   q.psd = with_context([&] { return numerics::welch(raw, q.sample_rate, {.segment = o.psd_segment}); });
   return q;
 }

@@ -68,8 +68,11 @@ SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
     r.contacts.push_back(statistics(F[static_cast<std::size_t>(c)]));
     // EN 50317: the same after the 20 Hz low-pass (contact_quality.hpp).
     const auto cc = static_cast<std::size_t>(c);
-    r.filtered.push_back(contact_quality(ts[cc], xc[cc], Fall[cc], sec).filtered);
+    ContactQuality q = contact_quality(ts[cc], xc[cc], Fall[cc], sec, {.cutoff = o.filter_cutoff, .order = o.filter_order});
+    r.filtered.push_back(q.filtered);
+    r.loss_runs.push_back(std::move(q.loss_runs));
   }
+  r.sample_dt = T / o.samples_per_span;
   r.stats = r.contacts.front();
   r.spans = static_cast<int>(std::lround(t_end / T));
   std::vector<double> sx, su;
@@ -167,6 +170,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
       auto sys = catenary.couple(pantographs, speeds[i]);
       SpeedResult r = run_speed(*sys, options);
       r.t.clear(), r.F.clear();  // keep sweeps light
+      r.uplift_limit = catenary.uplift_limit();
       results[i] = std::move(r);
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);

@@ -155,13 +155,15 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   if (line) {  // EN 50317 / 50318 outputs over the section
     for (int c = 0; c < nc; ++c) {
       const TimeHistory& h = r.histories[static_cast<std::size_t>(c)];
-      r.quality.push_back(contact_quality(h.t, h.columns[h.columns.size() - 2], force[static_cast<std::size_t>(c)], r.section));
+      r.quality.push_back(contact_quality(h.t, h.columns[h.columns.size() - 2], force[static_cast<std::size_t>(c)], r.section,
+                                          {.cutoff = o.filter_cutoff, .order = o.filter_order}));
     }
     std::vector<std::vector<double>> rows(r.supports.t.size(), std::vector<double>(r.support_x.size()));
     for (std::size_t i = 0; i < rows.size(); ++i)
       for (std::size_t j = 0; j < r.support_x.size(); ++j) rows[i][j] = r.supports.columns[j][i];
     r.uplift = support_uplift(r.supports.t, r.support_x, rows, r.section.from, r.section.to);
   }
+  r.uplift_limit = catenary.uplift_limit();
   return r;
 }
 

@@ -63,6 +63,9 @@ void FeCatenaryData::validate() const {
   non_negative("supports", "mass", support_mass, "kg");
   positive("registration", "stiffness", registration_stiffness, "N/m");
   non_negative("registration", "mass", registration_mass, "kg");
+  if (!std::isnan(registration_uplift_limit) && !(registration_uplift_limit > 0 && registration_uplift_limit <= 10))
+    throw InvalidArgument("finite-element catenary: registration", "uplift_limit",
+                          fmt::format("expected > 0 and at most 10 m, got {} m", registration_uplift_limit));
   positive("mesh", "element_length", element_length, "m");
   if (element_length < 1e-3 || span / element_length > 1e5)
     throw InvalidArgument("finite-element catenary: mesh", "element_length",

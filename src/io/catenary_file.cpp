@@ -188,6 +188,7 @@ const std::vector<FeField>& fe_fields() {
       INERTA_FE_FIELD("supports", "mass", "kg", false, false, support_mass),
       INERTA_FE_FIELD("registration", "stiffness", "N/m", true, false, registration_stiffness),
       INERTA_FE_FIELD("registration", "mass", "kg", false, false, registration_mass),
+      INERTA_FE_FIELD("registration", "uplift_limit", "m", false, false, registration_uplift_limit),
       INERTA_FE_FIELD("mesh", "element_length", "m", false, false, element_length),
       INERTA_FE_FIELD("damping", "rayleigh_mass", "1/s", false, false, rayleigh_mass),
       INERTA_FE_FIELD("damping", "rayleigh_stiffness", "s", false, false, rayleigh_stiffness),

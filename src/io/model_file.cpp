@@ -98,7 +98,7 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
   if (!overrides.empty()) detail::apply_overrides(root, overrides, source);
   detail::Loader ld{detail::Reader(source), {}};
   ld.rd.set_notes(&ld.model.notes);
-  std::pair<int, int> panto{-1, -1};
+  pantograph::Pantograph panto;
   const detail::Reader& rd = ld.rd;
   try {
     if (!root.IsMap()) rd.fail(root, "", "expected a model (a mapping with bodies, joints, forces, outputs)");
@@ -131,7 +131,8 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
   } catch (const YAML::Exception& e) {  // safety net: no yaml-cpp exception leaves without file:line
     throw ModelError(fmt::format("{}:{}: {}", source, e.mark.line + 1, e.msg));
   }
-  return {std::move(ld.model), panto.first, panto.second, {}};
+  panto.model = std::move(ld.model);
+  return panto;
 }
 
 std::string read_text(const std::string& path) { return read_input_text(path, "model file"); }

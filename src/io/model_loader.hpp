@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "inerta/mbs/model.hpp"
+#include "inerta/pantograph/pantograph.hpp"
 #include "model_reader.hpp"
 
 namespace inerta::io::detail {
@@ -41,8 +42,9 @@ struct Loader {
   void assembly(const YAML::Node& n);                               // model_joints.cpp
   void forces(const YAML::Node& n, const Eigen::VectorXd& q_init);  // model_forces.cpp (after assembly)
   void outputs(const YAML::Node& n);                                // model_outputs.cpp
-  /// The `pantograph:` section: {contact marker, rig joint} indices, −1 where absent (model_pantograph.cpp).
-  std::pair<int, int> pantograph(const YAML::Node& n);
+  /// The `pantograph:` section: the contact marker and rig joint indices (−1 where absent) and the
+  /// aerodynamic uplift on the contact marker's body (model_pantograph.cpp).
+  pantograph::Pantograph pantograph(const YAML::Node& n);
 };
 
 /// Whether an override NAME.KEY belongs to the model file: NAME a force element or body, or a joint

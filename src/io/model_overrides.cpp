@@ -39,12 +39,26 @@ struct Slot {
 
 const char* const kSections[] = {"forces", "bodies", "joints"};
 
-Slot locate(YAML::Node& root, const std::string& dotted, const std::function<void(const std::string&)>& fail) {
+Slot locate_slot(YAML::Node& root, const std::string& dotted, const std::function<void(const std::string&)>& fail) {
   std::vector<std::string> path;
   std::stringstream ps(dotted);
   for (std::string part; std::getline(ps, part, '.');) path.push_back(part);
   if (path.size() < 2 || std::any_of(path.begin(), path.end(), [](const std::string& p) { return p.empty(); }))
     fail("expected NAME.KEY with NAME a force element, body or joint, e.g. c2.c, head.mass or drive.amplitude");
+  // pantograph.aerodynamic.{a,b,c}: the pantograph section's aerodynamic uplift (created if absent).
+  if (path[0] == "pantograph") {
+    const YAML::Node p = static_cast<const YAML::Node&>(root)["pantograph"];
+    if (!p.IsDefined() || !p.IsMap()) fail("the model has no 'pantograph:' section");
+    if (path.size() != 3 || path[1] != "aerodynamic" || (path[2] != "a" && path[2] != "b" && path[2] != "c"))
+      fail("expected pantograph.aerodynamic.a, .b or .c (the uplift a v² + b v + c, N, v in m/s)");
+    YAML::Node sec;
+    sec.reset(p);
+    if (!p["aerodynamic"].IsDefined()) sec["aerodynamic"] = YAML::Node(YAML::NodeType::Map);
+    YAML::Node aero;
+    aero.reset(static_cast<const YAML::Node&>(sec)["aerodynamic"]);
+    if (!aero.IsMap()) fail("'aerodynamic' is not a mapping in the file");
+    return Slot{aero, path[2], -1, true};
+  }
   YAML::Node cur;
   bool found = false, joint = false;
   std::string names;
@@ -112,6 +126,7 @@ Slot locate(YAML::Node& root, const std::string& dotted, const std::function<voi
 
 bool names_model_item(const YAML::Node& root, const std::string& name, const std::string& key) {
   if (is_lumped_pantograph(root)) return name == "lumped_pantograph";
+  if (name == "pantograph") return root["pantograph"].IsDefined();
   for (const char* section : kSections) {
     const YAML::Node list = root[section];
     if (!list.IsDefined() || !list.IsSequence()) continue;
@@ -144,7 +159,7 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
       std::istringstream vs(v);
       if (!(vs >> value) || !(vs >> std::ws).eof() || !std::isfinite(value)) fail("'" + v + "' is not a number");
     }
-    Slot s = locate(root, o.substr(0, eq), fail);
+    Slot s = locate_slot(root, o.substr(0, eq), fail);
     s.assign(std::isinf(value) ? std::string(".inf") : fmt::format("{:.17g}", value));
   }
 }
@@ -159,7 +174,7 @@ std::optional<double> model_value(const std::string& text, const std::string& so
     throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", source, e.mark.line + 1, e.msg));
   }
   if (detail::is_lumped_pantograph(root)) return detail::lumped_value(root, source, key);
-  detail::Slot s = detail::locate(root, key, [&](const std::string& what) {
+  detail::Slot s = detail::locate_slot(root, key, [&](const std::string& what) {
     throw ModelError(fmt::format("{}: parameter '{}': {}", source, key, what));
   });
   if (!s.exists) return std::nullopt;

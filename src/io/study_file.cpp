@@ -8,6 +8,7 @@
 
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/acceptance_file.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/yaml_errors.hpp"
@@ -22,7 +23,7 @@ constexpr double max_study_speeds = 10000;
 // `limits: {mean: [lo, hi], contact_loss: %, statistical_min: N, support_uplift: m}` (optim::ContactLimits).
 optim::ContactLimits read_limits(const std::string& path, const YAML::Node& n) {
   optim::ContactLimits l;
-  if (!n.IsMap()) yaml_fail(path, n, "limits", "expected a map of mean, contact_loss, statistical_min, support_uplift");
+  if (!n.IsMap()) yaml_fail(path, n, "limits", "expected a map of mean, contact_loss, statistical_min, support_uplift, acceptance");
   for (auto it = n.begin(); it != n.end(); ++it) {
     const std::string k = it->first.as<std::string>();
     const YAML::Node v = it->second;
@@ -36,8 +37,19 @@ optim::ContactLimits read_limits(const std::string& path, const YAML::Node& n) {
       l.statistical_min = yaml_number(path, v, k);
     } else if (k == "support_uplift") {
       l.uplift_max = yaml_number_in(path, v, k, 1e-6, 10, "> 0 (m)");
+    } else if (k == "acceptance") {  // a preset, or a criteria file relative to the study file
+      if (!v.IsScalar()) yaml_fail(path, v, k, "expected a preset (en50367-ac, en50367-dc3) or a criteria file");
+      std::string what = v.Scalar();
+      const bool file = what.find('/') != std::string::npos || what.ends_with(".yaml") || what.ends_with(".yml");
+      if (file && std::filesystem::path(what).is_relative())
+        what = (std::filesystem::path(path).parent_path() / what).string();
+      try {
+        l.acceptance = std::make_shared<const analysis::AcceptanceCriteria>(load_acceptance(what));
+      } catch (const ModelError& e) {
+        yaml_fail(path, v, k, e.what());
+      }
     } else {
-      yaml_fail(path, it->first, k, "unknown key in limits; expected mean, contact_loss, statistical_min, support_uplift");
+      yaml_fail(path, it->first, k, "unknown key in limits; expected mean, contact_loss, statistical_min, support_uplift, acceptance");
     }
   }
   return l;
@@ -216,6 +228,9 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     s.limits = read_limits(path, l);
     if (!std::isnan(s.limits.uplift_max) && std::isinf(s.catenaries.front()->line_length()))
       yaml_fail(path, l["support_uplift"], "support_uplift", "a support uplift needs a finite line (a finite-element catenary)");
+    if (s.limits.acceptance && std::isinf(s.catenaries.front()->line_length()))
+      yaml_fail(path, l["acceptance"], "acceptance",
+                "acceptance criteria need a finite line (a finite-element catenary: the 20 Hz statistics, the registrations' uplift)");
   }
   if (const YAML::Node b = root["bounds"]; b.IsDefined()) s.bounds = read_bounds(path, b);
   if (!coarse && root["refine"].IsDefined() && !root["coarse"].IsDefined())
@@ -239,10 +254,11 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
       merged[k] = it->second;
     }
     if (!c["catenaries"].IsDefined() && c["catenary"].IsDefined()) merged.remove("catenaries");
-    if (!c["limits"].IsDefined() && root["limits"].IsDefined() && root["limits"].IsMap() && root["limits"]["support_uplift"].IsDefined()) {
+    if (!c["limits"].IsDefined() && root["limits"].IsDefined() && root["limits"].IsMap() &&
+        (root["limits"]["support_uplift"].IsDefined() || root["limits"]["acceptance"].IsDefined())) {
       YAML::Node l(YAML::NodeType::Map);
       for (auto it = root["limits"].begin(); it != root["limits"].end(); ++it)
-        if (it->first.as<std::string>() != "support_uplift") l[it->first] = it->second;
+        if (it->first.as<std::string>() != "support_uplift" && it->first.as<std::string>() != "acceptance") l[it->first] = it->second;
       merged["limits"] = l;
     }
     auto sub = std::make_shared<optim::Study>(read_study(path, merged, true));

@@ -45,6 +45,7 @@ Json study_results_json(const std::string& study, const optim::StudyCost& defaul
     l["mean_N"] = r.cost.mean;
     l["evaluations"] = r.evaluations;
     if (!r.cost.feasible) l["feasible"] = false, l["violation"] = r.cost.violation;
+    if (!r.cost.binding.empty()) l["binding"] = r.cost.binding, l["binding_margin"] = r.cost.binding_margin;
     if (r.coarse_evaluations > 0) {
       Json cv = Json::object();
       for (const auto& [k, v] : r.coarse_values) cv[k] = value_json(v);
@@ -75,15 +76,18 @@ std::string study_table(const optim::Study& study, const optim::StudyCost& def,
                      r.expression, v("b"), v("c"), v("k"), r.cost.J, reduction_pct(r.cost, def), r.cost.speed * 3.6,
                      r.cost.mean, r.budget_exhausted ? "  budget exhausted" : "",
                      r.cost.feasible ? "" : "  outside the limits: " + r.cost.violation);
+    if (study.limits.acceptance && !r.cost.binding.empty())
+      t += fmt::format("  {:<12} binds: {} (margin {:+.1f} % of its limit)\n", "", r.cost.binding, 100 * r.cost.binding_margin);
   }
   if (marked) t += "  *: on a bound (the search's lo/hi, an element kind's bounds, open or rigid)\n";
   const optim::ContactLimits& L = study.limits;
   if (L.any())
-    t += fmt::format("  limits (every catenary and speed):{}{}{}{}\n",
+    t += fmt::format("  limits (every catenary and speed):{}{}{}{}{}\n",
                      std::isnan(L.mean_min) ? "" : fmt::format(" mean {:g}–{:g} N;", L.mean_min, L.mean_max),
                      std::isnan(L.loss_max) ? "" : fmt::format(" contact loss ≤ {:g} %;", L.loss_max),
                      std::isnan(L.statistical_min) ? "" : fmt::format(" F_m − 3σ ≥ {:g} N;", L.statistical_min),
-                     std::isnan(L.uplift_max) ? "" : fmt::format(" support uplift ≤ {:g} m", L.uplift_max));
+                     std::isnan(L.uplift_max) ? "" : fmt::format(" support uplift ≤ {:g} m", L.uplift_max),
+                     L.acceptance ? fmt::format("{}every criterion of the acceptance set {} ({})", std::isnan(L.uplift_max) ? " " : "; ", L.acceptance->name, L.acceptance->source) : "");
   if (study.coarse) {
     t += fmt::format("\n  multi-fidelity: J2 [N] of the coarse optimum on the coarse study and here, and after the refinement\n"
                      "  {:<12} {:>12} {:>12} {:>12} {:>9} {:>12}\n",

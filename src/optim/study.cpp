@@ -90,6 +90,17 @@ StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::Sp
         if (u > lim.uplift_max)
           breach((u - lim.uplift_max) / lim.uplift_max, fmt::format("support uplift {:.4g} m > {:.4g} m{}", u, lim.uplift_max, at));
       }
+      if (lim.acceptance)  // every criterion a hard limit; the one with the least relative margin binds
+        for (const analysis::VerdictInput& in : analysis::verdict_inputs(x))
+          for (const analysis::CriterionResult& r : analysis::assess(*lim.acceptance, in)) {
+            if (!r.assessed) continue;
+            const double rel = analysis::relative_margin(r);
+            if (std::isnan(c.binding_margin) || rel < c.binding_margin)
+              c.binding_margin = rel, c.binding = fmt::format("{} at {:.0f} km/h{}", r.criterion, x.speed * 3.6, where);
+            if (!r.passed)
+              breach(-rel, fmt::format("{} {:.4g} {} {} {:.4g} {} ({}){}", r.criterion, r.value, r.unit, r.upper ? ">" : "<",
+                                       r.limit, r.unit, lim.acceptance->name, at));
+          }
     }
   }
   c.feasible = excess == 0;
@@ -129,7 +140,10 @@ StudyCost evaluate_time(const Study& study, const network::Network& net) {
     p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
     std::vector<catenary::PantographOnLine> train;
     for (double x0 : study.positions) train.push_back({p, x0, study.contact});
-    sweeps[i] = analysis::sweep(train, *study.catenaries[i], study.speeds, analysis::RunOptions{});
+    analysis::RunOptions o;
+    if (study.limits.acceptance)  // the criteria's filter for the 20 Hz statistics
+      o.filter_cutoff = study.limits.acceptance->filter_cutoff, o.filter_order = study.limits.acceptance->filter_order;
+    sweeps[i] = analysis::sweep(train, *study.catenaries[i], study.speeds, o);
   });
   return cost_of(study, sweeps);
 }

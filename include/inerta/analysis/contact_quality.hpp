@@ -45,6 +45,7 @@ struct ContactQuality {
   ContactStatistics raw;        ///< of the raw section force
   ContactStatistics filtered;   ///< of the low-passed force over the section (loss_pct informative)
   double loss_pct = 0;          ///< % of section samples with raw F ≤ 0 (the reported contact loss)
+  std::vector<long> loss_runs;  ///< lengths (samples) of the section's maximal runs of raw F ≤ 0, in order
   numerics::Spectrum psd;       ///< of the raw section force, N²/Hz
 };
 

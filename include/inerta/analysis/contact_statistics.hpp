@@ -1,5 +1,6 @@
 #pragma once
 // Contact-quality statistics (spec/06 §6.1) and the speed run that produces them.
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,6 +30,8 @@ struct RunOptions {
   int samples_per_span = 400;
   solve::IntegratorOptions integrator;
   bool fixed_spans = false;  ///< run exactly min_spans spans (no convergence test)
+  double filter_cutoff = 20;  ///< Hz: a finite line's filtered statistics (contact_quality.hpp)
+  int filter_order = 4;
 };
 /// Each speed of a sweep (the CLI's --speeds, in its unit; Python's speeds, m/s): "speeds: 0 is out of
 /// range; expected > 0".
@@ -57,6 +60,11 @@ struct SpeedResult {
   std::vector<double> support_x, support_uplift;
   /// A finite line: each contact's statistics after the 20 Hz low-pass (EN 50317, contact_quality.hpp).
   std::vector<ContactStatistics> filtered;
+  /// A finite line: each contact's loss events over the section (lengths in samples of the maximal
+  /// runs of raw F ≤ 0, acceptance.hpp) and the sampling step, s.
+  std::vector<std::vector<long>> loss_runs;
+  double sample_dt = 0;
+  double uplift_limit = NAN;  ///< m: the line's registration uplift limit (Catenary::uplift_limit), set by sweep
 };
 
 /// A finite line (Coupled::line_length): one pass from the static state until the leading

@@ -71,6 +71,8 @@ struct CoupledOptions {
   double sample = -1;  ///< s; ≤ 0: L / (400 v)
   int window_spans = 2;  ///< contact statistics over the last window_spans spans
   solve::IntegratorOptions integrator;
+  double filter_cutoff = 20;  ///< Hz: a finite line's filtered statistics (contact_quality.hpp)
+  int filter_order = 4;
 };
 /// The rules of CoupledOptions (the CLI's --spans, --t-end, --sample; Python's simulate_coupled).
 inline constexpr CountRule spans_rule{1, 10000};
@@ -102,6 +104,7 @@ struct CoupledSimulation {
   TimeHistory supports;
   std::vector<ContactQuality> quality;  ///< per contact: EN 50317 statistics raw and filtered, PSD
   std::vector<SupportUplift> uplift;    ///< the supports in the section: max uplift and when
+  double uplift_limit = NAN;            ///< m: the line's registration uplift limit (Catenary::uplift_limit)
 };
 
 /// Couples the pantographs to the catenary at `speed` (m/s), starts from the static equilibrium

@@ -104,6 +104,9 @@ class Catenary {
   virtual double line_length() const { return std::numeric_limits<double>::infinity(); }
   /// The analysis section of a finite line (EN 50317 statistics are taken there).
   virtual Section section() const { return {0, line_length()}; }
+  /// m: the line's design limit of the contact wire's uplift at its registrations (acceptance
+  /// criterion support_uplift, analysis/acceptance.hpp); NaN: none given.
+  virtual double uplift_limit() const { return std::numeric_limits<double>::quiet_NaN(); }
   /// The catenary without its variation along the line (for modes about a static equilibrium).
   virtual std::shared_ptr<const Catenary> mean() const = 0;
   /// The point model with time-periodic coefficients (eq. 7.1), if the catenary is one: the

@@ -66,6 +66,9 @@ struct FeCatenaryData {
   double support_mass = 0;                   ///< kg, at each messenger support
   double registration_stiffness = 2673.58;   ///< N/m, contact-wire registration (steady arm) at each mast
   double registration_mass = 0;              ///< kg, at each registration
+  /// m, the design limit of the contact wire's uplift at a registration (steady arm); NaN: not given
+  /// (the acceptance criterion support_uplift is then not assessed). Not part of the dynamics.
+  double registration_uplift_limit = NAN;
   double element_length = 0.25;              ///< m, largest element; nodes at every dropper and mast
   double rayleigh_mass = 0.0125;             ///< a, 1/s
   double rayleigh_stiffness = 1e-4;          ///< b, s
@@ -280,6 +283,7 @@ class FeCatenary final : public Catenary {
   int max_pantographs() const override { return 64; }
   double line_length() const override { return line_->length(); }
   Section section() const override;
+  double uplift_limit() const override { return line_->data().registration_uplift_limit; }
   std::shared_ptr<const Catenary> mean() const override;
   /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep
   /// or a study decomposes a window once); nullptr with solver: direct.

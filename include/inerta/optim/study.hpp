@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "inerta/analysis/acceptance.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
@@ -25,9 +26,12 @@ struct ContactLimits {
   double loss_max = NAN;                  ///< %: contact loss (samples with F <= 0) at most this
   double statistical_min = NAN;           ///< N: the statistical minimum F_m − 3σ at least this
   double uplift_max = NAN;                ///< m: the largest support uplift (a finite line) at most this
+  /// Every criterion of an acceptance set as a hard limit (`limits: {acceptance: PRESET|FILE}`), with the
+  /// others above: all apply. Needs a finite line (the 20 Hz statistics, the registrations' uplift).
+  std::shared_ptr<const analysis::AcceptanceCriteria> acceptance;
   bool any() const {
     return !std::isnan(mean_min) || !std::isnan(mean_max) || !std::isnan(loss_max) || !std::isnan(statistical_min) ||
-           !std::isnan(uplift_max);
+           !std::isnan(uplift_max) || acceptance;
   }
 };
 
@@ -108,6 +112,10 @@ struct StudyCost {
   bool feasible = true;
   double excess = 0;      ///< Σ relative excess of the limits broken
   std::string violation;  ///< the largest relative excess, in words ("" if feasible)
+  /// With acceptance limits: the criterion with the smallest margin relative to its limit over every
+  /// catenary, speed and pantograph ("sigma at 300 km/h"), and that relative margin (< 0: it fails).
+  std::string binding;
+  double binding_margin = NAN;
   // The limited quantities, worst over catenaries and speeds (for the report).
   double mean_min = NAN, mean_max = NAN, loss_pct = 0, statistical_min = NAN, uplift = NAN;
   /// What the search minimises and designs are ranked by: J if every limit holds, else

@@ -1,0 +1,170 @@
+// The acceptance verdict in the CLI and `inerta pantograph aero-fit` (docs/cli.md).
+#include "acceptance.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "checks.hpp"
+#include "inerta/analysis/aero_fit.hpp"
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/acceptance_file.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/io/file_kind.hpp"
+#include "inerta/io/model_file.hpp"
+
+namespace inerta::cli {
+
+void add_acceptance_options(CLI::App* app, AcceptanceArgs& a) {
+  app->add_option("--acceptance", a.criteria,
+                  "Judge the run by an acceptance criteria set: a preset (en50367-ac, en50367-dc3) or a criteria file "
+                  "(docs/contact-quality.md); prints the verdict and writes OUT.acceptance.csv");
+  app->add_flag("--strict", a.strict, "With --acceptance: exit 6 if a criterion fails (default: a report, exit 0)");
+}
+
+std::string acceptance_path(const std::string& out) {
+  if (out.empty()) return "";
+  const std::string stem = out.size() > 4 && out.ends_with(".csv") ? out.substr(0, out.size() - 4) : out;
+  return stem + ".acceptance.csv";
+}
+
+namespace {
+// A value in the unit a reader expects: uplift in mm, forces in N, loss in %.
+std::string shown(const analysis::CriterionResult& r, double x) {
+  if (std::isnan(x)) return "-";
+  if (r.unit == "m") return fmt::format("{:.1f} mm", 1e3 * x);
+  if (r.unit == "%") return fmt::format("{:.3f} %", x);
+  return fmt::format("{:.2f} N", x);
+}
+}  // namespace
+
+int report_acceptance(std::FILE* info, const analysis::AcceptanceCriteria& c, const std::vector<analysis::VerdictRow>& rows,
+                      const std::string& out, bool strict, bool kmh) {
+  fmt::print(info, "\nacceptance: {} ({}); force statistics over the analysis section, filtered: {:g} Hz low-pass of order {}\n",
+             c.name, c.source, c.filter_cutoff, c.filter_order);
+  const char* unit = kmh ? "km/h" : "m/s";
+  fmt::print(info, "  {:>8} {:>5}  {:<16} {:>12} {:>12} {:>12}  {}\n", fmt::format("v {}", unit), "panto", "criterion", "value",
+             "limit", "margin", "verdict");
+  std::map<std::string, int> failed;  // criterion → rows that failed
+  std::vector<std::string> failing_speeds;
+  double last = NAN;
+  for (const auto& x : rows) {
+    const analysis::CriterionResult& r = x.result;
+    const double v = kmh ? 3.6 * x.speed : x.speed;
+    fmt::print(info, "  {:>8.4g} {:>5}  {:<16} {:>12} {:>12} {:>12}  {}{}\n", v, x.pantograph, r.criterion, shown(r, r.value),
+               shown(r, r.limit), shown(r, r.margin), io::status_text(r), r.note.empty() ? "" : " (" + r.note + ")");
+    if (r.assessed && !r.passed) {
+      ++failed[r.criterion];
+      if (last != x.speed) failing_speeds.push_back(fmt::format("{:.4g}", v)), last = x.speed;
+    }
+  }
+  const bool ok = failed.empty();
+  std::vector<std::string> which;
+  for (const auto& [k, n] : failed) which.push_back(fmt::format("{} ({} row{})", k, n, n > 1 ? "s" : ""));
+  if (ok)
+    fmt::print(info, "verdict: PASS (every assessed criterion at every speed)\n");
+  else
+    fmt::print(info, "verdict: FAIL at {} {}: {}\n", fmt::join(failing_speeds, ", "), unit, fmt::join(which, ", "));
+  if (const std::string path = acceptance_path(out); !path.empty()) {
+    io::write_acceptance_csv(path, rows);
+    fmt::print(info, "wrote {}\n", path);
+  }
+  return ok || !strict ? 0 : exit_acceptance_failed;
+}
+
+// ---- inerta pantograph aero-fit -------------------------------------------------------------------
+
+namespace {
+
+struct AeroFitArgs {
+  std::string model, catenary, criteria, unit = "ms", speeds;
+  double speed = 0;
+  std::vector<std::string> sets;
+};
+AeroFitArgs aero_args;
+CLI::App* aero_cmd = nullptr;
+
+// "V0:DV:V1" → the speeds (inclusive within 1e-9 DV), at most 1000.
+std::vector<double> speed_list(const std::string& spec) {
+  double a = 0, d = 0, b = 0;
+  char c1 = 0, c2 = 0;
+  std::istringstream in(spec);
+  if (!(in >> a >> c1 >> d >> c2 >> b) || c1 != ':' || c2 != ':' || !(in >> std::ws).eof() || !(a > 0) || !(d > 0) ||
+      !(b >= a) || !std::isfinite(b) || (b - a) / d > 1000)
+    throw CLI::ValidationError("--speeds", "expected V0:DV:V1 with 0 < V0 <= V1, DV > 0 and at most 1000 speeds, got '" + spec + "'");
+  std::vector<double> v;
+  for (long k = 0; k <= static_cast<long>(std::floor((b - a) / d + 1e-9)); ++k) v.push_back(a + static_cast<double>(k) * d);
+  return v;
+}
+
+int aero_fit() {
+  const AeroFitArgs& a = aero_args;
+  const analysis::AcceptanceCriteria c = io::load_acceptance(a.criteria);
+  if (!c.has_target)
+    throw ModelError(fmt::format("{}: the criteria set '{}' has no mean-force 'target' curve; aero-fit needs one", c.source, c.name));
+  const auto [panto_sets, cat_sets] = io::split_overrides(a.model, a.sets);
+  const pantograph::Pantograph p = io::load_pantograph(a.model, panto_sets);
+  const io::CatenaryFile cat = io::load_catenary(a.catenary, cat_sets);
+  const double k = a.unit == "kmh" ? 1 / 3.6 : 1.0;  // to m/s
+  const double v = a.speed * k, target = c.target.at(v * 3.6);
+  const analysis::Statistics stats = c.mean.empty() ? analysis::Statistics::Raw : c.mean.front().statistics;
+  analysis::RunOptions o;
+  o.filter_cutoff = c.filter_cutoff, o.filter_order = c.filter_order;
+  fmt::print("aero-fit: {} on {}; target mean contact force at {:.4g} km/h: {:.2f} N ({}: {:g} v² + {:g} v + {:g}, v in km/h)\n",
+             a.model, cat.catenary->describe(), v * 3.6, target, c.name, c.target.v2, c.target.v1, c.target.v0);
+  const analysis::AeroFit fit = analysis::fit_aerodynamic(p, *cat.catenary, cat.contact, v, target, stats, o);
+  fmt::print("mean contact force without aerodynamic uplift: {:.2f} N ({} statistics)\n", fit.mean_without,
+             stats == analysis::Statistics::Raw ? "raw" : "20 Hz");
+  if (!fit.reached) {
+    if (fit.mean_without > target)
+      fmt::print(stderr, "aero-fit: no a >= 0 reaches the target: the mean force without uplift, {:.2f} N, is already above "
+                         "{:.2f} N; lower the pantograph's static uplift\n", fit.mean_without, target);
+    else
+      fmt::print(stderr, "aero-fit: no a >= 0 reached {:.2f} N within 0.05 N in {} runs (last a = {:.6g} N·s²/m², mean {:.2f} N)\n",
+                 target, fit.runs, fit.a, fit.mean);
+    return 2;
+  }
+  fmt::print("a = {:.6g} N·s²/m² (b = c = 0): aerodynamic uplift {:.2f} N at {:.4g} km/h; mean contact force {:.2f} N ({} runs)\n",
+             fit.a, fit.a * v * v, v * 3.6, fit.mean, fit.runs);
+  const std::string section = io::file_kind(a.model) == io::FileKind::LumpedPantograph ? "lumped_pantograph" : "pantograph";
+  fmt::print("in the model file: {0}: {{aerodynamic: {{a: {1:.6g}, b: 0, c: 0}}}}, or --set {0}.aerodynamic.a={1:.6g}\n",
+             section, fit.a);
+  if (!a.speeds.empty()) {
+    std::vector<double> vs;
+    for (double s : speed_list(a.speeds)) vs.push_back(s * k);
+    const auto rs = analysis::sweep(analysis::with_aerodynamic(p, fit.a), *cat.catenary, cat.contact, vs, o);
+    fmt::print("  {:>8} {:>10} {:>10} {:>10}\n", "v km/h", "target N", "mean N", "diff N");
+    for (const auto& r : rs) {
+      const double m = stats == analysis::Statistics::Filtered && !r.filtered.empty() ? r.filtered.front().mean : r.stats.mean;
+      fmt::print("  {:>8.4g} {:>10.2f} {:>10.2f} {:>+10.2f}\n", r.speed * 3.6, c.target.at(r.speed * 3.6), m, m - c.target.at(r.speed * 3.6));
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+CLI::App* add_pantograph_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("pantograph", "Pantograph tools");
+  aero_cmd = cmd->add_subcommand("aero-fit",
+                                 "Find the aerodynamic uplift a v² that brings the mean contact force to the criteria set's "
+                                 "target at a speed (writes nothing)");
+  AeroFitArgs& a = aero_args;
+  aero_cmd->add_option("model", a.model, "Pantograph model file (YAML)")->required();
+  aero_cmd->add_option("--catenary", a.catenary, "Catenary file")->required();
+  aero_cmd->add_option("--acceptance", a.criteria, "Criteria set with a 'target' curve: en50367-ac, en50367-dc3 or a file")->required();
+  aero_cmd->add_option("--speed", a.speed, "Speed of the fit, in --unit")->required()->check(number_in(1e-3, 1e4, "0.001 … 1e4"));
+  aero_cmd->add_option("--unit", a.unit, "Speed unit: ms (m/s) or kmh")->check(CLI::IsMember({"ms", "kmh"}))->capture_default_str();
+  aero_cmd->add_option("--speeds", a.speeds, "Also print the mean force with the fitted a at V0:DV:V1 (in --unit)");
+  aero_cmd->add_option("--set", a.sets, "Override a model or catenary value NAME.KEY=VALUE (repeatable)");
+  cmd->require_subcommand(1);
+  return cmd;
+}
+
+int run_pantograph() { return aero_cmd && aero_cmd->parsed() ? aero_fit() : 0; }
+
+}  // namespace inerta::cli

@@ -1,0 +1,70 @@
+"""The acceptance verdict from Python (inerta.acceptance): the CLI's table as a NumPy structured array."""
+import csv
+
+import numpy as np
+import pytest
+
+import inerta
+from conftest import model, run_cli
+
+
+def short_line():
+    return inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 4})
+
+
+def test_a_sweep_verdict_has_every_speed_and_criterion_and_reads_the_run_statistics():
+    m = inerta.load_model(model("pantograph-3mass.yaml"))
+    r = inerta.sweep(m, short_line(), inerta.kmh([200.0, 300.0]))
+    t = inerta.acceptance(r, "en50367-ac")
+    assert t.dtype.names == ("speed", "pantograph", "criterion", "unit", "value", "limit", "margin", "passed", "assessed")
+    assert len(t) == 2 * 7
+    sigma = t[t["criterion"] == "sigma"]
+    # σ ≤ 0.3 F_m of the 20 Hz statistics, as the run gives them
+    for row, s in zip(sigma, r):
+        assert row["value"] == s.filtered[0].std
+        assert row["limit"] == pytest.approx(0.3 * s.filtered[0].mean, rel=1e-15)
+        assert row["passed"] == (row["margin"] >= 0)
+    lower = t[t["criterion"] == "mean_lower"]
+    assert lower["limit"] == pytest.approx([0.00047 * 200**2 + 60, 0.00047 * 300**2 + 60])
+    uplift = t[t["criterion"] == "support_uplift"]
+    assert not uplift["assessed"].any()  # the bundled line has no registration.uplift_limit
+    # The same set given as an object, and the CLI's table of the same runs.
+    c = inerta.load_acceptance("en50367-ac")
+    assert c.name == "en50367-ac" and c.has_target and c.target(300 / 3.6) == pytest.approx(132.3)
+    assert np.array_equal(inerta.acceptance(r, c)["passed"], t["passed"])
+
+
+def test_the_cli_and_python_give_the_same_table(tmp_path):
+    out = tmp_path / "s.csv"
+    run_cli("sweep", model("pantograph-3mass.yaml"), "--catenary", model("catenary-fe.yaml"), "--set", "line.spans=4",
+            "--speeds", "250:50:300", "--unit", "kmh", "--acceptance", "en50367-ac", "--out", out)
+    with open(tmp_path / "s.acceptance.csv", encoding="utf-8") as f:
+        cli = list(csv.DictReader(f))
+    m = inerta.load_model(model("pantograph-3mass.yaml"))
+    t = inerta.acceptance(inerta.sweep(m, short_line(), inerta.kmh([250.0, 300.0])), "en50367-ac")
+    assert [r["criterion"] for r in cli] == list(t["criterion"])
+    assert [r["status"] for r in cli] == ["not assessed" if not a else "PASS" if p else "FAIL"
+                                          for p, a in zip(t["passed"], t["assessed"])]
+    for r, value in zip(cli, t["value"]):
+        assert (r["value"] == "nan" and np.isnan(value)) or float(r["value"]) == pytest.approx(value, rel=1e-5)
+
+
+def test_errors_name_what_is_wrong():
+    with pytest.raises(inerta.ModelError, match="unknown preset 'nope'"):
+        inerta.load_acceptance("nope")
+    assert inerta.acceptance_presets() == ["en50367-ac", "en50367-dc3"]
+    with pytest.raises(TypeError, match="expected the result of inerta.sweep"):
+        inerta.acceptance(42, "en50367-ac")
+
+
+def test_the_aerodynamic_fit_brings_the_mean_force_to_the_target():
+    m = inerta.load_model(model("pantograph-3mass.yaml"))
+    f = inerta.fit_aerodynamic(m, short_line(), 300 / 3.6, "en50367-ac")
+    assert f.reached and f.a > 0
+    assert f.target == pytest.approx(0.00047 * 300**2 + 90)
+    assert abs(f.mean - f.target) <= 0.05
+    assert f.mean_without < f.target
+    # The fitted uplift in the model gives that mean force (the same runs: the same statistics).
+    fitted = inerta.load_model(model("pantograph-3mass.yaml"), {"lumped_pantograph.aerodynamic.a": f.a})
+    r = inerta.sweep(fitted, short_line(), [300 / 3.6])
+    assert r[0].filtered[0].mean == pytest.approx(f.mean, abs=1e-9)

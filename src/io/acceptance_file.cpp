@@ -1,0 +1,218 @@
+// Acceptance-criteria files: the YAML form of analysis::AcceptanceCriteria (docs/contact-quality.md
+// "Acceptance"). Every field of a criterion given is required: a set says what it checks.
+#include "inerta/io/acceptance_file.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "inerta/error.hpp"
+#include "inerta/io/yaml_errors.hpp"
+
+namespace inerta::io {
+
+namespace {
+
+using analysis::AcceptanceCriteria;
+using analysis::SpeedCurve;
+using analysis::SpeedRange;
+using analysis::Statistics;
+
+// Band edges are checked up to this speed when a range is open above (km/h).
+constexpr double kBandCheckTo = 1000;
+
+std::string preset_dir() { return INERTA_CRITERIA_DIR; }
+
+bool is_preset_name(const std::string& s) {
+  if (s.empty() || s.ends_with(".yaml") || s.ends_with(".yml")) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
+}
+
+void keys(const std::string& f, const YAML::Node& n, const std::string& section, const std::set<std::string>& allowed) {
+  if (!n.IsMap()) yaml_fail(f, n, section, fmt::format("expected a map of {}", fmt::join(allowed, ", ")));
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string k = it->first.Scalar();
+    if (!allowed.count(k)) yaml_fail(f, it->first, section + "." + k, fmt::format("unknown key; expected {}", fmt::join(allowed, ", ")));
+  }
+}
+
+double number(const std::string& f, const YAML::Node& sec, const std::string& section, const std::string& key) {
+  const YAML::Node v = sec[key];
+  if (!v.IsDefined()) yaml_fail(f, sec, section + "." + key, "missing; expected a number");
+  return yaml_number(f, v, section + "." + key);
+}
+
+double number_in(const std::string& f, const YAML::Node& sec, const std::string& section, const std::string& key, double lo,
+                 double hi, const std::string& range) {
+  const double v = number(f, sec, section, key);
+  if (!(v >= lo && v <= hi)) yaml_fail(f, sec[key], section + "." + key, fmt::format("{}; expected {}", sec[key].Scalar(), range));
+  return v;
+}
+
+SpeedCurve curve(const std::string& f, const YAML::Node& sec, const std::string& section) {
+  keys(f, sec, section, {"v2", "v1", "v0"});
+  return {number(f, sec, section, "v2"), number(f, sec, section, "v1"), number(f, sec, section, "v0")};
+}
+
+Statistics statistics(const std::string& f, const YAML::Node& sec, const std::string& section) {
+  const YAML::Node v = sec["statistics"];
+  const std::string key = section + ".statistics";
+  if (!v.IsDefined()) yaml_fail(f, sec, key, "missing; expected raw or filtered (the 20 Hz low-pass)");
+  if (v.IsScalar() && v.Scalar() == "raw") return Statistics::Raw;
+  if (v.IsScalar() && v.Scalar() == "filtered") return Statistics::Filtered;
+  yaml_fail(f, v, key, fmt::format("'{}'; expected raw or filtered (the 20 Hz low-pass)", v.IsScalar() ? v.Scalar() : "a list or map"));
+}
+
+SpeedRange speeds(const std::string& f, const YAML::Node& sec, const std::string& section) {
+  SpeedRange r;
+  const YAML::Node v = sec["speeds"];
+  if (!v.IsDefined()) return r;
+  const std::string key = section + ".speeds";
+  if (!v.IsSequence() || v.size() != 2) yaml_fail(f, v, key, "expected [from, to] in km/h, from <= v < to (to may be .inf)");
+  r.from = yaml_number(f, v[0], key);
+  const bool inf = v[1].IsScalar() && (v[1].Scalar() == ".inf" || v[1].Scalar() == "inf");
+  r.to = inf ? INFINITY : yaml_number(f, v[1], key);
+  if (!(r.from >= 0) || !(r.to > r.from)) yaml_fail(f, v, key, "expected 0 <= from < to (km/h)");
+  return r;
+}
+
+// lower(v) ≤ upper(v) over the range: the difference is a quadratic, so its ends and its vertex decide.
+void check_band(const std::string& f, const YAML::Node& sec, const std::string& key, const AcceptanceCriteria::MeanBand& b) {
+  const double a = b.upper.v2 - b.lower.v2, c1 = b.upper.v1 - b.lower.v1;
+  const double lo = b.speeds.from, hi = std::isinf(b.speeds.to) ? std::max(kBandCheckTo, lo) : b.speeds.to;
+  std::vector<double> vs{lo, hi};
+  if (a != 0) {
+    const double vertex = -c1 / (2 * a);
+    if (vertex > lo && vertex < hi) vs.push_back(vertex);
+  }
+  for (double v : vs)
+    if (b.lower.at(v) > b.upper.at(v))
+      yaml_fail(f, sec, key,
+                fmt::format("the lower edge {:.4g} N exceeds the upper edge {:.4g} N at {:.4g} km/h; expected lower <= upper "
+                            "over the band's speeds",
+                            b.lower.at(v), b.upper.at(v), v));
+}
+
+// A criterion's section: one map, or a list of maps with disjoint speed ranges; `one` reads an entry.
+template <class Entry, class Read>
+std::vector<Entry> entries(const std::string& f, const YAML::Node& root, const std::string& name, Read one) {
+  std::vector<Entry> list;
+  const YAML::Node s = root[name];
+  if (!s.IsDefined()) return list;
+  if (s.IsSequence()) {
+    if (s.size() == 0) yaml_fail(f, s, name, "an empty list; expected a map or a list of maps with disjoint speeds");
+    for (std::size_t i = 0; i < s.size(); ++i) list.push_back(one(s[i], fmt::format("{}[{}]", name, i)));
+  } else {
+    list.push_back(one(s, name));
+  }
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (list[i].speeds.from < list[j].speeds.to && list[j].speeds.from < list[i].speeds.to)
+        yaml_fail(f, s, name,
+                  fmt::format("entries {} and {} overlap in speed ([{:g}, {:g}] and [{:g}, {:g}] km/h); expected disjoint "
+                              "speeds",
+                              j, i, list[j].speeds.from, list[j].speeds.to, list[i].speeds.from, list[i].speeds.to));
+  return list;
+}
+
+AcceptanceCriteria read(const std::string& f) {
+  const YAML::Node root = yaml_load_file(f, "acceptance criteria file");
+  if (!root.IsMap()) yaml_fail(f, root, "criteria", "expected a map with name, filter and criteria");
+  keys(f, root, "criteria",
+       {"name", "filter", "mean_force", "sigma", "statistical_min", "max_force", "contact_loss", "support_uplift", "target"});
+  AcceptanceCriteria c;
+  c.source = f;
+  if (!root["name"].IsDefined() || !root["name"].IsScalar()) yaml_fail(f, root, "name", "missing; expected the set's name");
+  c.name = root["name"].Scalar();
+  const YAML::Node filter = root["filter"];
+  if (!filter.IsDefined()) yaml_fail(f, root, "filter", "missing; expected {cutoff: Hz, order: n} (EN 50317: 20 Hz)");
+  keys(f, filter, "filter", {"cutoff", "order"});
+  c.filter_cutoff = number_in(f, filter, "filter", "cutoff", 0.1, 1000, "a cutoff from 0.1 to 1000 Hz");
+  if (!filter["order"].IsDefined()) yaml_fail(f, filter, "filter.order", "missing; expected a whole number from 1 to 8");
+  c.filter_order = yaml_whole(f, filter["order"], "filter.order", 1, 8);
+  using C = AcceptanceCriteria;
+  c.mean = entries<C::MeanBand>(f, root, "mean_force", [&](const YAML::Node& s, const std::string& k) {
+    keys(f, s, k, {"lower", "upper", "statistics", "speeds"});
+    for (const char* e : {"lower", "upper"})
+      if (!s[e].IsDefined()) yaml_fail(f, s, fmt::format("{}.{}", k, e), "missing; expected {v2, v1, v0} (N, v in km/h)");
+    C::MeanBand b{curve(f, s["lower"], k + ".lower"), curve(f, s["upper"], k + ".upper"), statistics(f, s, k), speeds(f, s, k)};
+    check_band(f, s, k, b);
+    return b;
+  });
+  c.sigma = entries<C::SigmaRatio>(f, root, "sigma", [&](const YAML::Node& s, const std::string& k) {
+    keys(f, s, k, {"max_ratio", "statistics", "speeds"});
+    return C::SigmaRatio{number_in(f, s, k, "max_ratio", 1e-6, 10, "> 0 (σ / F_m)"), statistics(f, s, k), speeds(f, s, k)};
+  });
+  c.statistical_min = entries<C::StatisticalMin>(f, root, "statistical_min", [&](const YAML::Node& s, const std::string& k) {
+    keys(f, s, k, {"min", "statistics", "speeds"});
+    return C::StatisticalMin{number(f, s, k, "min"), statistics(f, s, k), speeds(f, s, k)};
+  });
+  c.max_force = entries<C::MaxForce>(f, root, "max_force", [&](const YAML::Node& s, const std::string& k) {
+    keys(f, s, k, {"max", "statistics", "speeds"});
+    return C::MaxForce{number_in(f, s, k, "max", 1e-6, 1e6, "> 0 (N)"), statistics(f, s, k), speeds(f, s, k)};
+  });
+  c.contact_loss = entries<C::ContactLoss>(f, root, "contact_loss", [&](const YAML::Node& s, const std::string& k) {
+    keys(f, s, k, {"max_pct", "min_duration", "speeds"});
+    return C::ContactLoss{number_in(f, s, k, "max_pct", 0, 100, "a percentage from 0 to 100"),
+                          number_in(f, s, k, "min_duration", 0, 10, "0 to 10 s"), speeds(f, s, k)};
+  });
+  c.support_uplift = entries<C::SupportUplift>(f, root, "support_uplift", [&](const YAML::Node& s, const std::string& k) {
+    keys(f, s, k, {"clearance_factor", "speeds"});
+    return C::SupportUplift{number_in(f, s, k, "clearance_factor", 1, 10, "1 to 10"), speeds(f, s, k)};
+  });
+  if (const YAML::Node s = root["target"]; s.IsDefined()) {
+    c.has_target = true;
+    c.target = curve(f, s, "target");
+  }
+  if (c.mean.empty() && c.sigma.empty() && c.statistical_min.empty() && c.max_force.empty() && c.contact_loss.empty() &&
+      c.support_uplift.empty())
+    yaml_fail(f, root, "criteria",
+              "no criterion; expected at least one of mean_force, sigma, statistical_min, max_force, contact_loss, support_uplift");
+  return c;
+}
+
+}  // namespace
+
+std::vector<std::string> acceptance_presets() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(preset_dir(), ec))
+    if (e.path().extension() == ".yaml") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+analysis::AcceptanceCriteria load_acceptance(const std::string& s) {
+  if (!is_preset_name(s)) return read(s);
+  const std::vector<std::string> presets = acceptance_presets();
+  if (std::find(presets.begin(), presets.end(), s) == presets.end())
+    throw ModelError(fmt::format("acceptance: unknown preset '{}'; expected one of {} (in {}) or a criteria file "
+                                 "(a path with '/' or ending in .yaml)",
+                                 s, presets.empty() ? std::string("(none found)") : fmt::format("{}", fmt::join(presets, ", ")),
+                                 preset_dir()));
+  return read(preset_dir() + "/" + s + ".yaml");
+}
+
+const char* status_text(const analysis::CriterionResult& r) {
+  return !r.assessed ? "not assessed" : r.passed ? "PASS" : "FAIL";
+}
+
+std::string acceptance_csv(const std::vector<analysis::VerdictRow>& rows) {
+  std::string out = "v_kmh,v_ms,pantograph,criterion,unit,value,limit,margin,status,note\n";
+  for (const analysis::VerdictRow& x : rows) {
+    const analysis::CriterionResult& r = x.result;
+    out += fmt::format("{:.6g},{:.6g},{},{},{},{:.6g},{:.6g},{:.6g},{},{}\n", x.speed * 3.6, x.speed, x.pantograph, r.criterion,
+                       r.unit, r.value, r.limit, r.margin, status_text(r), csv_field(r.note));
+  }
+  return out;
+}
+
+void write_acceptance_csv(const std::string& path, const std::vector<analysis::VerdictRow>& rows) {
+  write_text_file(path, acceptance_csv(rows));
+}
+
+}  // namespace inerta::io
