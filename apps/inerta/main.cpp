@@ -803,16 +803,37 @@ int cmd_check_reduction(CheckReductionArgs a) {
     const double up_d = d.support_uplift.empty() ? 0 : *std::max_element(d.support_uplift.begin(), d.support_uplift.end());
     const double up_m = m.support_uplift.empty() ? 0 : *std::max_element(m.support_uplift.begin(), m.support_uplift.end());
     fmt::print("\nv = {:.4g} {} (analysis section, EN 50317)\n  {:<16}{:>12}{:>12}{:>10}\n", a.cat.unit == "kmh" ? r.speed * 3.6 : r.speed,
-               a.cat.unit == "kmh" ? "km/h" : "m/s", "quantity", "direct", "modal", "diff %");
-    auto row = [&](const char* q, double x, double y) { fmt::print("  {:<16}{:>12.4f}{:>12.4f}{:>+10.3f}\n", q, x, y, pct(x, y)); };
+               a.cat.unit == "kmh" ? "km/h" : "m/s", "quantity", "direct", "modal", "diff");
+    // The difference relative to the direct solve (%), or where that means little in the quantity's own
+    // unit: the minimum force (near 0 N) in N, the contact loss (a share) in percentage points.
+    auto row = [&](const char* q, double x, double y, const char* unit = "%") {
+      const double diff = std::string(unit) == "%" ? pct(x, y) : y - x;
+      fmt::print("  {:<16}{:>12.4f}{:>12.4f}{:>+10.3f} {}\n", q, x, y, diff, unit);
+    };
     row("mean N", d.stats.mean, m.stats.mean);
     row("sigma N", d.stats.std, m.stats.std);
     row("sigma 20 Hz N", d.filtered[0].std, m.filtered[0].std);
     row("max N", d.stats.max, m.stats.max);
-    row("min N", d.stats.min, m.stats.min);
-    row("loss %", d.stats.loss_pct, m.stats.loss_pct);
+    row("min N", d.stats.min, m.stats.min, "N");
+    row("min 20 Hz N", d.filtered[0].min, m.filtered[0].min, "N");
+    row("loss %", d.stats.loss_pct, m.stats.loss_pct, "pp");
     row("uplift max mm", 1e3 * up_d, 1e3 * up_m);
     row("wall s", r.reference_s, r.candidate_s);
+    // Where the two solves lose contact differently (the leading pantograph, x = v t from x0 = 0).
+    if (const auto diffs = analysis::loss_differences(d, m); !diffs.empty()) {
+      std::vector<std::string> where;
+      const catenary::Section sec = ref.catenary->section();
+      for (std::size_t k = 0; k < diffs.size() && k < 6; ++k) {
+        const auto& e = diffs[k];
+        const double x0 = r.speed * e.t_from, x1 = r.speed * e.t_to;
+        where.push_back(fmt::format("{} only at x = {}{}", e.candidate ? "modal" : "direct",
+                                    e.t_to > e.t_from ? fmt::format("{:.2f}–{:.2f} m (t = {:.4f}–{:.4f} s)", x0, x1, e.t_from, e.t_to)
+                                                      : fmt::format("{:.2f} m (t = {:.4f} s)", x0, e.t_from),
+                                    x1 >= sec.from && x0 <= sec.to ? ", in the section" : ""));
+      }
+      fmt::print("  contact loss differs in {} place{} over the run: {}{}\n", diffs.size(), diffs.size() > 1 ? "s" : "",
+                 fmt::join(where, "; "), diffs.size() > 6 ? "; …" : "");
+    }
     worst = std::max({worst, std::abs(pct(d.stats.std, m.stats.std)), std::abs(pct(d.filtered[0].std, m.filtered[0].std))});
     if (criteria) {  // the same verdict from both solves? (reported; the exit code stays the σ tolerance's)
       const auto vd = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{d});

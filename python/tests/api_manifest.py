@@ -434,6 +434,9 @@ EXCLUDED = {
     "analysis::verdict_inputs": _ACCEPTANCE,
     "analysis::binding": _ACCEPTANCE,
     "analysis::relative_margin": _ACCEPTANCE,
+    "analysis::loss_differences": "check-reduction's report of where two solves lose contact differently (CLI); "
+                                  "Python compares RunComparison.reference.F and candidate.F directly",
+    "analysis::LossDifference": "see analysis::loss_differences",
     "analysis::with_aerodynamic": "fit_aerodynamic returns a; a model file or --set pantograph.aerodynamic.a sets it",
     "io::acceptance_csv": "the CLI's OUT.acceptance.csv; Python has the table as a NumPy array (inerta.acceptance)",
     "io::write_acceptance_csv": "the CLI's OUT.acceptance.csv; Python has the table as a NumPy array (inerta.acceptance)",

@@ -200,7 +200,6 @@ std::vector<RunComparison> compare(const std::vector<catenary::PantographOnLine>
     auto sys = c.couple(pantographs, v);
     SpeedResult r = run_speed(*sys, options);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.t.clear(), r.F.clear();
     return r;
   };
   for (double v : speeds) {
@@ -209,6 +208,23 @@ std::vector<RunComparison> compare(const std::vector<catenary::PantographOnLine>
     c.reference = timed(reference, v, c.reference_s);
     c.candidate = timed(candidate, v, c.candidate_s);
     out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<LossDifference> loss_differences(const SpeedResult& a, const SpeedResult& b) {
+  std::vector<LossDifference> out;
+  const std::size_t n = std::min({a.t.size(), a.F.size(), b.t.size(), b.F.size()});
+  bool open = false;  // the previous sample differed, in the last entry's direction
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool la = a.F[i] <= 0, lb = b.F[i] <= 0;
+    if (la == lb) {
+      open = false;
+    } else if (open && out.back().candidate == lb) {
+      out.back().t_to = a.t[i];
+    } else {
+      out.push_back({a.t[i], a.t[i], lb}), open = true;
+    }
   }
   return out;
 }

@@ -198,4 +198,23 @@ TEST(Acceptance, AsAStudyLimitADesignAtTheEdgePassesOnOneSideAndFailsOnTheOther)
   EXPECT_NEAR(in.binding_margin, 1e-9, 1e-12);
 }
 
+TEST(Acceptance, LossDifferencesAreTheRunsWhereOnlyOneSolveLosesContact) {
+  analysis::SpeedResult a, b;
+  a.t = b.t = {0, 1, 2, 3, 4, 5, 6, 7};
+  a.F = {5, 0, 0, 5, 5, 5, -1, 5};
+  b.F = {5, 0, 5, 5, -1, -1, 5, 5};
+  const auto d = analysis::loss_differences(a, b);
+  ASSERT_EQ(d.size(), 3u);
+  EXPECT_EQ(d[0].t_from, 2);  // the reference only
+  EXPECT_EQ(d[0].t_to, 2);
+  EXPECT_FALSE(d[0].candidate);
+  EXPECT_EQ(d[1].t_from, 4);  // the candidate only, two samples
+  EXPECT_EQ(d[1].t_to, 5);
+  EXPECT_TRUE(d[1].candidate);
+  EXPECT_EQ(d[2].t_from, 6);
+  EXPECT_EQ(d[2].t_to, 6);
+  EXPECT_FALSE(d[2].candidate);
+  EXPECT_TRUE(analysis::loss_differences(a, a).empty());
+}
+
 }  // namespace test_analysis_acceptance

@@ -110,6 +110,9 @@ TEST_F(AcceptanceCli, CheckReductionSaysWhetherBothSolvesReachTheSameVerdict) {
                      "--acceptance en50367-ac");
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_TRUE(contains(r.out, "acceptance en50367-ac: direct ")) << r.out;
+  // The minimum force differs in N, the contact loss in percentage points (not a relative % of a share).
+  EXPECT_TRUE(contains(r.out, " N\n  min 20 Hz N")) << r.out;
+  EXPECT_TRUE(contains(r.out, " pp\n  uplift max mm")) << r.out;
 }
 
 TEST_F(AcceptanceCli, AeroFitBringsTheMeanForceToTheTarget) {

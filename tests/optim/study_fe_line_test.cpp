@@ -185,6 +185,26 @@ TEST(StudyFidelity, AFiniteElementLineIsStudiedInTheTimeDomainWithItsSupportUpli
   EXPECT_NEAR(c.mean, 71, 5);  // relaxed at the line's static state: the default's static force
 }
 
+TEST(StudyFidelity, AnAcceptanceSetIsAStudyLimitThatNamesItsBindingCriterion) {
+  // A criteria file beside the study (relative path), σ ≤ 2 F_m: the default keeps it; the binding
+  // criterion is the only one, its margin that of the run's own 20 Hz statistics.
+  write_study("lenient.yaml", "name: lenient\nfilter: {cutoff: 20, order: 4}\nsigma: {max_ratio: 2, statistics: filtered}\n");
+  const optim::Study s = io::load_study(write_study("fe_acc.yaml", kFe + "limits: {acceptance: lenient.yaml}\n"));
+  ASSERT_TRUE(s.limits.acceptance);
+  EXPECT_EQ(s.limits.acceptance->name, "lenient");
+  const optim::StudyCost c = optim::evaluate(s, optim::default_suspension(s));
+  EXPECT_TRUE(c.feasible) << c.violation;
+  EXPECT_EQ(c.binding, "sigma at 200 km/h");
+  const auto ref = analysis::sweep(s.pantograph, *s.catenaries[0], s.contact, s.speeds, analysis::RunOptions{});
+  const double margin = 2 * ref[0].filtered[0].mean - ref[0].filtered[0].std;
+  EXPECT_NEAR(c.binding_margin, margin / (2 * ref[0].filtered[0].mean), 1e-9);
+  // The preset's mean-force band fails without aerodynamic uplift: infeasible, named.
+  const optim::Study p = io::load_study(write_study("fe_preset.yaml", kFe + "limits: {acceptance: en50367-ac}\n"));
+  const optim::StudyCost cp = optim::evaluate(p, optim::default_suspension(p));
+  EXPECT_FALSE(cp.feasible);
+  EXPECT_NE(cp.violation.find("(en50367-ac)"), std::string::npos) << cp.violation;
+}
+
 TEST(StudyFidelity, TwoPantographsTakeJ2AndTheLimitsOverBothContacts) {
   // Two copies on the 3-span line, the leading one 40 m ahead: J2 is the larger σ of the two contacts.
   const optim::Study s = io::load_study(write_study("fe_two.yaml", kFe + "pantographs: [0, 40]\n"));
@@ -219,6 +239,9 @@ TEST(StudyFidelity, FileErrorsOfTheNewKeys) {
   fails(kFe + "pantographs: [40, 0]\n", "expected increasing positions");
   fails(kFe + "pantographs: 200\n", "expected 1 to 8 positions");
   fails(kLumped + "limits: {support_uplift: 0.1}\n", "a support uplift needs a finite line");
+  fails(kLumped + "limits: {acceptance: en50367-ac}\n", "acceptance criteria need a finite line");
+  fails(kFe + "limits: {acceptance: nope}\n", "unknown preset 'nope'");
+  fails(kFe + "limits: {acceptance: missing.yaml}\n", "missing.yaml");
   fails(kLumped + "limits: {mean: [90, 60]}\n", "expected 0 < lo < hi (N)");
   fails(kLumped + "limits: {contact_loss: 120}\n", "a percentage from 0 to 100");
   fails(kLumped + "limits: {noise: 1}\n", "unknown key in limits");

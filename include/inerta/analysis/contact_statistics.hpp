@@ -98,8 +98,19 @@ struct RunComparison {
   SpeedResult reference, candidate;
   double reference_s = 0, candidate_s = 0;
 };
+/// The results keep the leading contact's history (t, F) for loss_differences.
 std::vector<RunComparison> compare(const std::vector<catenary::PantographOnLine>& pantographs,
                                    const catenary::Catenary& reference, const catenary::Catenary& candidate,
                                    const std::vector<double>& speeds, const RunOptions& options);
+
+/// Where two runs of the same sampling lose contact differently: the maximal runs of samples in which
+/// exactly one of the two leading contacts has F ≤ 0, from the first to the last sample time of each
+/// (s), and which run loses contact there (true: the candidate). Over the common samples of the two
+/// histories (SpeedResult::t, F); empty if they agree.
+struct LossDifference {
+  double t_from = 0, t_to = 0;
+  bool candidate = false;
+};
+std::vector<LossDifference> loss_differences(const SpeedResult& reference, const SpeedResult& candidate);
 
 }  // namespace inerta::analysis
