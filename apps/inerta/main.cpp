@@ -157,8 +157,11 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
     fmt::print("droppers: {} a span, {} in all; EA = {:g} N, {:g} kg/m, clamps {:g} kg (messenger), {:g} kg (contact wire)\n",
                n, n * static_cast<std::size_t>(d.spans), d.dropper_EA, d.dropper_mass_per_length, d.clamp_mass_messenger,
                d.clamp_mass_contact);
-    fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg\n", d.support_stiffness, d.support_mass,
-               d.registration_stiffness, d.registration_mass);
+    fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg{}\n", d.support_stiffness, d.support_mass,
+               d.registration_stiffness, d.registration_mass,
+               std::isnan(d.registration_uplift_limit)
+                   ? ""
+                   : fmt::format("; uplift limit {:g} m (acceptance criterion support_uplift)", d.registration_uplift_limit));
     fmt::print("mesh: element length <= {:g} m (nodes at every dropper and mast)\n", d.element_length);
     fmt::print("damping: Rayleigh a = {:g} 1/s, b = {:g} s; integration: HHT-alpha, alpha = {:g}, time step {:g} s\n",
                d.rayleigh_mass, d.rayleigh_stiffness, d.hht_alpha, d.time_step);

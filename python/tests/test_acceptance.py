@@ -68,3 +68,19 @@ def test_the_aerodynamic_fit_brings_the_mean_force_to_the_target():
     fitted = inerta.load_model(model("pantograph-3mass.yaml"), {"lumped_pantograph.aerodynamic.a": f.a})
     r = inerta.sweep(fitted, short_line(), [300 / 3.6])
     assert r[0].filtered[0].mean == pytest.approx(f.mean, abs=1e-9)
+
+
+def test_a_pickled_sweep_keeps_what_the_verdict_reads():
+    # Dask workers return SpeedResults by pickle: the loss events, the sampling step and the line's
+    # uplift limit travel with them, so a distributed sweep's verdict equals the serial one.
+    import pickle
+
+    m = inerta.load_model(model("pantograph-3mass.yaml"))
+    line = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 4, "registration.uplift_limit": 0.2})
+    r = inerta.sweep(m, line, inerta.kmh([300.0]))
+    s = pickle.loads(pickle.dumps(r[0]))
+    assert s.loss_runs == r[0].loss_runs and s.sample_dt == r[0].sample_dt and s.uplift_limit == 0.2
+    back = inerta.SweepResult([s])
+    a, b = inerta.acceptance(r, "en50367-ac"), inerta.acceptance(back, "en50367-ac")
+    assert np.array_equal(a["passed"], b["passed"]) and np.array_equal(a["value"], b["value"], equal_nan=True)
+    assert a[a["criterion"] == "support_uplift"]["assessed"].all()  # the line's limit: assessed now
