@@ -1252,8 +1252,8 @@ int cmd_optimise(const OptimiseArgs& a) {
   if (!study.admittance_degrees.empty()) {
     std::vector<optim::BoundCandidate> cands{{"default " + network::to_string(baseline, true), baseline, def.J, def.J}};
     for (const auto& r : results) try {  // a layout without a design (values missing) is skipped
-        cands.push_back({r.layout + " " + network::to_string(network::resolve(r.layout, r.values), true),
-                         network::resolve(r.layout, r.values), r.cost.J, r.cost.J});
+        cands.push_back({r.layout + " " + network::to_string(optim::design_network(r.layout, r.values), true),
+                         optim::design_network(r.layout, r.values), r.cost.J, r.cost.J});
       } catch (const network::NetworkError&) {
       }
     const auto bounds = optim::admittance_bounds(

@@ -214,7 +214,7 @@ void bind_optim(py::module_& m) {
       .def_readonly("ends", &optim::LayoutResult::ends, "where each start of the search ended: (values, cost), best first")
       .def_readonly("refined_from", &optim::LayoutResult::refined_from,
                     "multi-fidelity: how many coarse end points the refinement started from")
-      .def("network", [](const optim::LayoutResult& r) { return network::resolve(r.layout, r.values); },
+      .def("network", [](const optim::LayoutResult& r) { return optim::design_network(r.layout, r.values); },
            "the bound network of the optimum")
       .def(py::pickle(
           [](const optim::LayoutResult& r) {

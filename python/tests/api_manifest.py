@@ -229,6 +229,7 @@ BOUND = {
     "optim::evaluate": "evaluate",
     "optim::evaluate_time": "evaluate_time",
     "optim::free_parameters": "free_parameters",
+    "optim::design_network": "LayoutResult.network",
     "optim::optimise_layout": "optimise_layout",
     "optim::SpeedCurve": "SpeedCurve",
     "optim::sigma_curves": "sigma_curves",

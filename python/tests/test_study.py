@@ -72,6 +72,9 @@ def test_optimised_layouts_equal_cli(study, cli_out):
         assert inerta.evaluate(study, r.network()).J == pytest.approx(r.cost.J, rel=1e-12)
     assert seen
     assert inerta.free_parameters("S2-1*") == ["b", "k"]
+    # A layout that fixes a value (S2-default's c): its result lists it, and network() keeps the layout's own.
+    d = inerta.optimise_layout(study, "S2-default")
+    assert "c" in d.values and inerta.to_string(d.network(), True) == inerta.to_string(inerta.default_suspension(study), True)
 
 
 def test_time_domain_recheck_equals_cli(study, cli_out):

@@ -193,7 +193,7 @@ Report make_report(const Study& study, const std::vector<LayoutResult>& results,
     b = static_cast<std::size_t>(options.best);
   }
   r.best = {"best (" + results[b].layout + ")", results[b].layout, results[b].values,
-            network::resolve(results[b].layout, results[b].values)};
+            design_network(results[b].layout, results[b].values)};
 
   step(1, study.method == Study::Method::Time ? "σ(v) of the default and the best design (time domain)"
                                                : "σ(v) of the default and the best design (periodic)");

@@ -148,6 +148,13 @@ StudyCost evaluate_time(const Study& study, const network::Network& net) {
   return cost_of(study, sweeps);
 }
 
+network::Network design_network(const std::string& layout, const network::Params& values) {
+  network::Params free;
+  for (const auto& name : free_parameters(layout))
+    if (const auto it = values.find(name); it != values.end()) free[name] = it->second;
+  return network::resolve(layout, free);
+}
+
 std::vector<numerics::Variable> search_variables(const Study& study, const std::string& layout) {
   std::vector<numerics::Variable> vars;
   for (const auto& name : free_parameters(layout)) {

@@ -127,6 +127,29 @@ TEST(Report, TheReportedDesignCanBeChosen) {
       std::invalid_argument);
 }
 
+TEST(Report, ADefaultThatBeatsEveryCandidateIsReportedWithItsFixedValues) {
+  // S2-default fixes c = 10440 N·s/m: its result lists c, and resolving the layout with every listed
+  // value would refuse it ("layout S2-default fixes c"). A study whose default wins (here against an
+  // open network, a spring of 1 N/m) reports it with the layout's own network.
+  const optim::Study s = io::load_study(write_study(
+      "report_default_wins.yaml", study_text("[[catenary.kc0=7000]]", "{from: 150, to: 250, step: 50, unit: kmh}", "[S2-default, k]")));
+  optim::LayoutResult def = optim::optimise_layout(s, "S2-default");
+  ASSERT_TRUE(def.values.count("c"));
+  optim::LayoutResult weak = def;
+  weak.layout = weak.expression = "k";
+  weak.values = {{"k", 1.0}};
+  weak.cost = optim::evaluate(s, network::resolve("k", weak.values));
+  ASSERT_GT(weak.cost.penalised(), def.cost.penalised());
+  optim::ReportOptions o;
+  o.map_size = 0;
+  o.frf_f = {1.0};
+  const optim::Report r = optim::make_report(s, {def, weak}, o);
+  EXPECT_EQ(r.best.layout, "S2-default");
+  EXPECT_EQ(network::to_string(r.best.net, true), network::to_string(optim::default_suspension(s), true));
+  EXPECT_DOUBLE_EQ(r.best_cost.J, def.cost.J);
+  EXPECT_THROW(network::resolve("S2-default", def.values), network::NetworkError);  // the old path
+}
+
 TEST(Report, ReportDataAndCsvFiles) {
   const optim::Study s = io::load_study(write_study(
       "report_study_r.yaml",

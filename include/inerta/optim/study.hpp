@@ -170,6 +170,11 @@ std::vector<numerics::Variable> search_variables(const Study& study, const std::
 /// named layout fixes, in order of appearance.
 std::vector<std::string> free_parameters(const std::string& layout);
 
+/// The network of a design: `layout` with the free values of `values` (a layout result's values also
+/// list what a named layout fixes, e.g. S2-default's c; those stay the layout's). ModelError if a
+/// free value is missing.
+network::Network design_network(const std::string& layout, const network::Params& values);
+
 /// Optimises one layout (no free values: just evaluates it). progress(start, evaluations, best J).
 /// `warm`: other designs' element values as further starts (as for model studies:
 /// optim::optimise_layout(const ModelStudy&, …)), so the result is never worse than any of them.
