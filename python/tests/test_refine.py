@@ -42,7 +42,7 @@ def test_the_study_attribute(tmp_path):
         assert inerta.load_study(str(p)).refine_optimiser == name
     p.write_text(LUMPED.format(src=SRC, refine="max_evaluations: 20"))
     study = inerta.load_study(str(p))
-    assert study.refine_optimiser == "pattern"
+    assert study.refine_optimiser == "cobyla"  # the default (docs/studies.md "Refinement optimisers")
     p.write_text(LUMPED.format(src=SRC, refine="optimiser: simplex"))
     with pytest.raises(inerta.ModelError, match=r"s\.yaml:8: 'optimiser': unknown optimiser"):
         inerta.load_study(str(p))

@@ -253,6 +253,9 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     sub->name = s.name + " (coarse)";
     s.refine.starts = 0;
     s.refine.initial_step = 0.25, s.refine.min_step = 0.02, s.refine.max_evaluations = 60;
+    // COBYLA by default: on the FE-line study it ended better than the pattern search and BOBYQA
+    // (docs/studies.md "Refinement optimisers").
+    s.refine_optimiser = numerics::Optimiser::Cobyla;
     if (const YAML::Node r = root["refine"]; r.IsDefined()) read_search(path, r, s, true);
     s.coarse = std::move(sub);
   }
