@@ -7,6 +7,7 @@
 #include "common.hpp"
 #include "inerta/numerics/cubic_spline.hpp"
 #include "inerta/numerics/floquet.hpp"
+#include "inerta/numerics/model_search.hpp"
 #include "inerta/numerics/pattern_search.hpp"
 
 namespace inerta::python {
@@ -95,6 +96,32 @@ void bind_numerics(py::module_& m) {
         "Minimises cost(values) (a Python callable taking a list of floats, returning a float; inf for a point it "
         "cannot evaluate) by the log-scaled multi-start pattern search. The cost is called under the GIL from the "
         "library's worker threads (one at a time); an exception it raises propagates.");
+  m.def("model_search", [](const std::vector<numerics::Variable>& vars, const py::object& cost,
+                           const py::object& options, const std::string& optimiser, const py::object& progress) {
+    const numerics::Options o = options.is_none() ? numerics::Options{} : options.cast<numerics::Options>();
+    const auto which = numerics::parse_optimiser(optimiser);
+    if (!which) throw py::value_error("optimiser: 'bobyqa', 'cobyla' or 'pattern'");
+    return run(progress, [&](Call& call) {
+      auto fg = [&](const std::vector<double>& values) {
+        call.poll();
+        py::gil_scoped_acquire gil;
+        const py::object r = cost(values);
+        if (py::isinstance<py::tuple>(r)) {
+          const auto t = r.cast<py::tuple>();
+          if (t.size() != 2) throw py::value_error("model_search: the cost returns f or (f, g)");
+          return numerics::Evaluation{t[0].cast<double>(), t[1].cast<double>()};
+        }
+        return numerics::Evaluation{r.cast<double>(), 0.0};
+      };
+      return numerics::model_search(vars, fg, o, *which, [&](int start, int evals, double best) {
+        call.post([start, evals, best](const py::object& cb) { cb(start, evals, best); });
+      });
+    });
+  }, py::arg("variables"), py::arg("cost"), py::arg("options"), py::kw_only(), py::arg("optimiser") = "bobyqa",
+        py::arg("progress") = py::none(),
+        "Minimises cost(values) -> f or (f, g) (g <= 0: feasible) from each of options.initial_values by NLopt's "
+        "BOBYQA (g as an exact penalty) or COBYLA (g as a constraint) on the log-scaled values, 0 and inf by a final "
+        "limit check ('pattern': pattern_search on the ranks). SearchResult.cost: f, or 1e100 (1 + g) if g > 0.");
 
   py::class_<numerics::CubicSpline> spline(m, "CubicSpline",
                                            "C² cubic spline through (x, y), x increasing; natural or periodic ends.");

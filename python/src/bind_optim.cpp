@@ -126,6 +126,8 @@ void bind_optim(py::module_& m) {
                     "multi-fidelity: the refinement first at the start's worst speed only")
       .def_readonly("refine_candidates", &Study::refine_candidates,
                     "multi-fidelity: the refinement starts from this many best coarse end points")
+      .def_property_readonly("refine_optimiser", [](const Study& s) { return numerics::optimiser_name(s.refine_optimiser); },
+                             "multi-fidelity: the refinement's optimiser, 'pattern', 'bobyqa' or 'cobyla'")
       .def_property_readonly("all_networks", [](const Study& s) { return s.all.has_value(); },
                              "`layouts: all`: the layouts are every network the study's networks options allow")
       .def_readonly("operating_length", &Study::operating_length,
@@ -264,8 +266,20 @@ void bind_optim(py::module_& m) {
       .def(py::init<>())
       .def_readonly("cost", &optim::DesignCost::cost, "J2 penalised by the limits, N (inf: no design)")
       .def_readonly("unstable", &optim::DesignCost::unstable, "a periodic solution was unstable at some speed")
-      .def(py::pickle([](const optim::DesignCost& c) { return py::make_tuple(c.cost, c.unstable); },
-                      [](const py::tuple& t) { return optim::DesignCost{t[0].cast<double>(), t[1].cast<bool>()}; }))
+      .def_readonly("J", &optim::DesignCost::J, "J2 alone, N (inf: no design)")
+      .def_readonly("excess", &optim::DesignCost::excess, "total relative excess of the limits (0: feasible)")
+      .def(py::pickle([](const optim::DesignCost& c) { return py::make_tuple(c.cost, c.unstable, c.J, c.excess); },
+                      [](const py::tuple& t) {
+                        optim::DesignCost c{t[0].cast<double>(), t[1].cast<bool>()};
+                        if (t.size() >= 4) {
+                          c.J = t[2].cast<double>(), c.excess = t[3].cast<double>();
+                        } else if (c.cost < 1e100) {  // an earlier version's (cost, unstable): J or the penalty
+                          c.J = c.cost;
+                        } else {
+                          c.excess = c.cost / 1e100 - 1;
+                        }
+                        return c;
+                      }))
       .def("__repr__", [](const optim::DesignCost& c) {
         return fmt::format("DesignCost({:.6g}{})", c.cost, c.unstable ? ", unstable" : "");
       });

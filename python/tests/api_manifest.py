@@ -75,6 +75,7 @@ BOUND = {
     "numerics::monodromy": "monodromy",
     "numerics::describe": "describe",
     "numerics::pattern_search": "pattern_search",
+    "numerics::model_search": "model_search",
     # mbs: the model and what can be asked of it
     "mbs::Model": "Model",
     "pantograph::Pantograph": "Model",  # contact_marker, rig_joint, has_rig: one Python class for both
@@ -329,6 +330,11 @@ _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the 
 _ACCEPTANCE = "the verdict's parts; Python gets the whole table from inerta.acceptance (a NumPy structured array)"
 
 EXCLUDED = {
+    "numerics::Optimiser": "given by name in Python: model_search(optimiser='bobyqa'), Study.refine_optimiser",
+    "numerics::optimiser_name": "the names are the Python form of numerics::Optimiser",
+    "numerics::parse_optimiser": "the names are the Python form of numerics::Optimiser",
+    "numerics::Evaluation": "an (f, g) tuple returned by model_search's cost",
+    "numerics::ranked": "SearchResult.cost of model_search is it",
     "optim::structure_search": "the generic driver takes a C++ objective called from worker threads; Python calls "
                                "optimise_all on a study",
     "optim::StructureOutcome": "what a C++ objective returns to structure_search (not bound)",

@@ -181,7 +181,7 @@ DesignCost design_cost(const Study& study, const std::string& layout, const netw
   if (network::simplify(net).kind == network::Network::Kind::Rigid) return {static_cast<double>(INFINITY), false};
   try {
     const StudyCost c = evaluate(study, net);
-    return {c.penalised(), c.unstable_speed > 0};
+    return {c.penalised(), c.unstable_speed > 0, c.J, c.excess};
   } catch (const NumericalError&) {
     return {static_cast<double>(INFINITY), false};  // no static equilibrium or steady state for these values
   }
@@ -227,6 +227,31 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
       return out;
     };
   const auto J = cost_on(study);
+  // The search on study `s` (this one, or its worst speed alone; `send`: polls through `batch`): the
+  // pattern search, or a multi-fidelity refinement's NLopt optimiser on J2 and the limits' excess.
+  const bool model = study.coarse && study.refine_optimiser != numerics::Optimiser::Pattern;
+  auto search_with = [&](const Study& s, const numerics::Cost& cost, const numerics::Options& o, bool send) {
+    if (!model) return numerics::pattern_search(vars, cost, o, progress, send ? polls : numerics::BatchCost{});
+    auto evaluation = [&](const DesignCost& c) {
+      if (c.unstable) ++unstable;
+      return numerics::Evaluation{c.J, c.excess};  // ranked() of it is c.cost (StudyCost::penalised)
+    };
+    const numerics::ConstrainedCost one = [&](const std::vector<double>& values) {
+      return evaluation(design_cost(s, layout, params_of(values)));
+    };
+    numerics::ConstrainedBatch many;
+    if (send && polls)
+      many = [&](const std::vector<std::vector<double>>& values) {
+        std::vector<network::Params> designs;
+        for (const auto& v : values) designs.push_back(params_of(v));
+        const std::vector<DesignCost> c = batch(designs);
+        if (c.size() != values.size()) throw std::invalid_argument("optimise_layout: the batch gave a wrong number of costs");
+        std::vector<numerics::Evaluation> out;
+        for (const DesignCost& d : c) out.push_back(evaluation(d));
+        return out;
+      };
+    return numerics::model_search(vars, one, o, study.refine_optimiser, progress, many);
+  };
   numerics::Options search = study.search;
   if (study.coarse) {  // multi-fidelity: the coarse study's optimum is the one start of the refinement
     const LayoutResult c = optimise_layout(*study.coarse, layout, progress, warm);
@@ -269,17 +294,17 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
     const auto J1 = cost_on(one);
     numerics::Options first = search;
     first.max_evaluations = std::max(1, search.max_evaluations / 2);
-    const numerics::Result s1 = numerics::pattern_search(vars, J1, first, progress);
+    const numerics::Result s1 = search_with(one, J1, first, false);
     numerics::Options second = search;
     second.initial_values = {s1.values};
     second.initial_step = std::max(search.min_step, 0.5 * search.initial_step);
     second.max_evaluations = std::max(1, search.max_evaluations - s1.evaluations);
-    const numerics::Result s2 = numerics::pattern_search(vars, J, second, progress, polls);
+    const numerics::Result s2 = search_with(study, J, second, true);
     best = s2.values;
     r.evaluations = s1.evaluations + s2.evaluations;
     r.budget_exhausted = s2.exhausted;
   } else {
-    numerics::Result s = numerics::pattern_search(vars, J, search, progress, polls);
+    numerics::Result s = search_with(study, J, search, true);
     best = s.values;
     r.evaluations = s.evaluations;
     r.budget_exhausted = s.exhausted;

@@ -14,6 +14,7 @@
 #include "inerta/mbs/model.hpp"
 #include "inerta/network/enumeration.hpp"
 #include "inerta/network/network.hpp"
+#include "inerta/numerics/model_search.hpp"
 #include "inerta/numerics/pattern_search.hpp"
 
 namespace inerta::optim {
@@ -63,6 +64,10 @@ struct Study {
   /// points of the coarse search's starts (best first; fewer if fewer differ), each with `refine`'s
   /// budget, and keeps the best (1: the coarse optimum only).
   int refine_candidates = 1;
+  /// Multi-fidelity, `refine: {optimiser: bobyqa | cobyla | pattern}`: the refinement's optimiser — the
+  /// pattern search, or NLopt's BOBYQA (the limits as an exact penalty) or COBYLA (the limits as a
+  /// constraint) on the same log-scaled variables (numerics/model_search.hpp, docs/studies.md).
+  numerics::Optimiser refine_optimiser = numerics::Optimiser::Pattern;
   pantograph::Pantograph pantograph;
   /// `pantographs: [0, 200]`: copies of the pantograph at these positions along the line, m (the time
   /// domain only); J2 and the limits are taken over every contact (the trailing one's too).
@@ -184,6 +189,8 @@ network::Network design_network(const std::string& layout, const network::Params
 struct DesignCost {
   double cost = 0;
   bool unstable = false;
+  double J = INFINITY;  ///< J2 alone, N (StudyCost::J; ∞: no design)
+  double excess = 0;    ///< Σ relative excess of the limits (StudyCost::excess; 0: feasible)
 };
 DesignCost design_cost(const Study& study, const std::string& layout, const network::Params& params);
 
