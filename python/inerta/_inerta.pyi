@@ -811,6 +811,7 @@ class RunOptions:
     samples_per_span: int
     integrator: IntegratorOptions
     fixed_spans: bool
+    allow_supercritical: bool
     def __init__(self, **kwargs: Any) -> None: ...
 
 class ContactStatistics:
@@ -920,7 +921,8 @@ def simulate_coupled(model: ModelsOnLine, catenary: CatenaryLike, speed: float, 
                      window_spans: int = 2, integrator: Optional[IntegratorOptions] = None,
                      method: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None,
                      max_step: Optional[float] = None,
-                     progress: Optional[Callable[[float, float], None]] = None) -> CoupledResult: ...
+                     progress: Optional[Callable[[float, float], None]] = None,
+                     max_seconds: Optional[float] = 600.0, allow_supercritical: bool = False) -> CoupledResult: ...
 
 class SpeedResult:
     speed: float
@@ -984,7 +986,8 @@ class SweepResult:
 def sweep(model: ModelsOnLine, catenary: CatenaryLike, speeds: ArrayLike, *, contact: ContactLike = None,
           positions: Optional[ArrayLike] = None, options: Optional[RunOptions] = None, method: Optional[str] = None,
           rtol: Optional[float] = None, atol: Optional[float] = None,
-          progress: Optional[Callable[[int, int], None]] = None) -> SweepResult: ...
+          progress: Optional[Callable[[int, int], None]] = None,
+          max_seconds: Optional[float] = 600.0) -> SweepResult: ...
 def sweep_periodic(model: Model, catenary: CatenaryLike, speeds: ArrayLike, *, contact: ContactLike = None,
                    harmonics: int = 8) -> SweepResult: ...
 class RunComparison:

@@ -319,6 +319,16 @@ _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the 
                "through outputs, constraints(), forces() and accelerations()")
 
 EXCLUDED = {
+    "analysis::format_duration": "the cost guard's wording; simulate_coupled and sweep apply it (max_seconds=)",
+    "analysis::cost_note": "the cost guard: simulate_coupled and sweep print it on sys.stderr",
+    "analysis::check_cost": "the cost guard: simulate_coupled and sweep apply it (max_seconds=; a ModelError)",
+    "analysis::check_memory": "the cost guard: simulate_coupled and sweep apply it (a ModelError)",
+    "analysis::CostLimitError": "raised as ModelError (its base) by simulate_coupled and sweep",
+    "analysis::check_run_speed": "applied by simulate_coupled and sweep (allow_supercritical=, RunOptions)",
+    "analysis::speed_warning": "simulate_coupled and sweep print it on sys.stderr",
+    "catenary::mesh_unknowns": "inside estimate_cost, which FeCatenary.estimated_seconds (inerta.estimated_seconds) uses",
+    "catenary::estimate_cost": "FeCatenary.estimated_seconds (inerta.estimated_seconds) is built on it",
+    "catenary::FeCostEstimate": "FeCatenary.estimated_seconds (inerta.estimated_seconds) is built on it",
     "optim::structure_search": "the generic driver takes a C++ objective called from worker threads; Python calls "
                                "optimise_all on a study",
     "optim::StructureOutcome": "what a C++ objective returns to structure_search (not bound)",
@@ -408,6 +418,7 @@ EXCLUDED = {
     "io::yaml_number_in": "internal helper of the YAML readers",
     "io::yaml_integer": "internal helper of the YAML readers",
     "io::yaml_whole": "internal helper of the YAML readers",
+    "io::yaml_syntax_error": "internal helper of the YAML readers",
     "io::yaml_fail": "internal helper of the YAML readers (their errors are bound as ModelError)",
     "io::yaml_load_file": "internal helper of the YAML readers",
     "io::yaml_number": "internal helper of the YAML readers",

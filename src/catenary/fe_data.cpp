@@ -55,6 +55,10 @@ void FeCatenaryData::validate() const {
     throw InvalidArgument("finite-element catenary: droppers", "nominal_length",
                           fmt::format("needs one value per dropper ({}), got {}", dropper_x.size(),
                                       nominal_dropper_length.size()));
+  for (std::size_t i = 0; i < nominal_dropper_length.size(); ++i)  // issue 38: .nan was accepted
+    if (!(std::isfinite(nominal_dropper_length[i]) && nominal_dropper_length[i] > 0))
+      throw InvalidArgument("finite-element catenary: droppers", fmt::format("nominal_length[{}]", i),
+                            fmt::format("must be a finite length > 0 (m), got {}", nominal_dropper_length[i]));
   positive("droppers", "EA", dropper_EA, "N");
   non_negative("droppers", "mass_per_length", dropper_mass_per_length, "kg/m");
   non_negative("droppers", "clamp_mass_messenger", clamp_mass_messenger, "kg");

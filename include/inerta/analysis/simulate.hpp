@@ -71,6 +71,7 @@ struct CoupledOptions {
   double sample = -1;  ///< s; ≤ 0: L / (400 v)
   int window_spans = 2;  ///< contact statistics over the last window_spans spans
   solve::IntegratorOptions integrator;
+  bool allow_supercritical = false;  ///< run above the catenary's wave speed (check_run_speed)
 };
 /// The rules of CoupledOptions (the CLI's --spans, --t-end, --sample; Python's simulate_coupled).
 inline constexpr CountRule spans_rule{1, 10000};
