@@ -90,6 +90,9 @@ std::vector<catenary::PantographOnLine> train(const py::object& model, const py:
 
 analysis::RunOptions run_options(const py::object& options, const py::object& method, const py::object& rtol,
                                  const py::object& atol) {
+  if (!options.is_none() && !py::isinstance<analysis::RunOptions>(options))  // not pybind's "Unable to cast"
+    throw py::type_error("options: expected a RunOptions, got " +
+                         py::str(py::type::of(options).attr("__name__")).cast<std::string>());
   analysis::RunOptions o = options.is_none() ? analysis::RunOptions{} : options.cast<analysis::RunOptions>();
   o.integrator = integrator_arg(py::cast(o.integrator), method, rtol, atol, py::none());
   return o;
@@ -546,7 +549,7 @@ void bind_analysis(py::module_& m) {
                                 const py::object& contact, const py::object& positions) {
     const CatenaryArg cat = catenary_arg(catenary);
     return cat.catenary->estimated_seconds(train(model, positions, contact_arg(contact, cat)), speed,
-                                           t_end.is_none() ? -1.0 : t_end.cast<double>());
+                                           t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule));
   }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::arg("t_end") = py::none(), py::kw_only(),
         py::arg("contact") = py::none(), py::arg("positions") = py::none(),
         "A rough wall time (s) of one run (simulate_coupled) on the 2-core reference machine "

@@ -104,3 +104,12 @@ def test_a_model_too_large_for_the_dense_system_matrix_is_refused_at_its_line():
     with pytest.raises(inerta.ModelError, match=r"<text>:\d+: 'bodies': 3334 bodies \(10002 coordinates\): at most 10000"):
         inerta.parse_model("name: big\nbodies:\n" + bodies)
     inerta.parse_model("name: ok\nbodies:\n" + bodies[: bodies.index("  - {name: b100,")])  # 100 bodies: as before
+
+
+def test_a_wrong_argument_type_is_named():
+    # pybind's "Unable to cast Python instance of type ... to C++ type" named neither argument nor type.
+    hsx = inerta.load_pantograph(model("hsx.yaml"))
+    with pytest.raises(TypeError, match="options: expected a RunOptions, got dict"):
+        inerta.sweep(hsx, model("catenary.yaml"), [50.0], options={"max_spans": 6})
+    with pytest.raises(TypeError, match="t_end: expected a number, got str"):
+        inerta.estimated_seconds(hsx, model("catenary-fe.yaml"), 50.0, "10")

@@ -75,6 +75,12 @@ void FeCatenaryData::validate() const {
   non_negative("damping", "stiffness", rayleigh_stiffness, "s");
   non_negative("line", "gravity", gravity, "m/s²");
   positive("integration", "time_step", time_step, "s");
+  if (time_step < 1e-5)  // issue 38: 1e-7 s ended in the multibody integrator's "the model is stiff"
+    throw InvalidArgument("finite-element catenary: integration", "time_step",
+                          fmt::format("must be >= 1e-5 s (each pantograph is stepped with the line: a smaller step "
+                                      "holds its integrator below its own limit; 1e-3 s is the bundled value, and "
+                                      "halving it changes sigma by < 0.1 %), got {} s",
+                                      time_step));
   if (time_step > 0.01)
     throw InvalidArgument("finite-element catenary: integration", "time_step",
                           fmt::format("must be <= 0.01 s (a wire carries waves of tens of hertz), got {} s", time_step));

@@ -280,6 +280,9 @@ TEST(FeCatenaryFile, SolverSectionAndItsErrors) {
     EXPECT_NE(e.find("is not a number"), std::string::npos) << bad << ": " << e;
   }
   EXPECT_EQ(io::read_fe_catenary_data(write(kLine + "solver: modal\n"), {"solver.cutoff=+80"}).modal_cutoff, 80);
+  // A structural step of 1e-7 s ended in the pantograph integrator's "the model is stiff" (issue 38).
+  e = error_of(kLine, {"integration.time_step=1e-7"});
+  EXPECT_NE(e.find("must be >= 1e-5 s"), std::string::npos) << e;
   // A solver section without its type (issue 38): not the direct solve in silence.
   e = error_of(kLine + "solver: {cutoff: 80}\n");
   EXPECT_NE(e.find(":14:"), std::string::npos) << e;
