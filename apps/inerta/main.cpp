@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -27,6 +28,7 @@
 #include "inerta/analysis/acceptance.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/cost_guard.hpp"
 #include "inerta/analysis/frf.hpp"
 #include "inerta/io/model_study_file.hpp"
 #include "inerta/analysis/periodic.hpp"
@@ -165,6 +167,13 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
     fmt::print("mesh: element length <= {:g} m (nodes at every dropper and mast)\n", d.element_length);
     fmt::print("damping: Rayleigh a = {:g} 1/s, b = {:g} s; integration: HHT-alpha, alpha = {:g}, time step {:g} s\n",
                d.rayleigh_mass, d.rayleigh_stiffness, d.hht_alpha, d.time_step);
+    if (d.solver == catenary::FeCatenaryData::Solver::Direct)
+      fmt::print("solver: direct (HHT-alpha on the whole line)\n");
+    else if (d.window_behind < 0 || d.window_ahead < 0)
+      fmt::print("solver: modal, modes below {:g} Hz, the whole line\n", d.modal_cutoff);
+    else
+      fmt::print("solver: modal, modes below {:g} Hz, a window of {} span(s) behind and {} ahead\n", d.modal_cutoff,
+                 d.window_behind, d.window_ahead);
     if (d.section_first > 0)
       fmt::print("analysis section: spans {} to {}\n", d.section_first, d.section_last);
     else
@@ -209,6 +218,7 @@ struct CatenaryArgs {
   std::string catenary, unit = "ms", suspension, contact;
   std::vector<std::string> sets, params;
   bool relaxed = false;  ///< relax --suspension at the operating point under the catenary (as a study)
+  bool allow_supercritical = false;  ///< run above the contact wire's wave speed (analysis::check_run_speed)
 };
 
 network::Params parse_params(const std::vector<std::string>& list) {
@@ -234,8 +244,12 @@ network::Params parse_params(const std::vector<std::string>& list) {
 double to_ms(double v, const std::string& unit) { return unit == "kmh" ? v / 3.6 : v; }
 
 // The pantograph with the requested suspension, and the catenary file with its overrides.
+// `before_work`: called once both are read and before anything is computed on the catenary (the
+// cost guard: a finite-element line is built when first used, catenary/fe_catenary.hpp).
+using BeforeWork = std::function<void(const pantograph::Pantograph&, const io::CatenaryFile&)>;
 std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::string& path, const CatenaryArgs& c,
-                                                                     bool no_centripetal = false) {
+                                                                     bool no_centripetal = false,
+                                                                     const BeforeWork& before_work = {}) {
   // --set NAME.KEY: to the model if NAME is one of its elements, bodies or joints (or lumped_pantograph),
   // else to the catenary file.
   const auto [panto_sets, cat_sets] = io::split_overrides(path, c.sets);
@@ -244,6 +258,7 @@ std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::
   io::CatenaryFile cat = io::load_catenary(c.catenary, cat_sets);
   if (!c.contact.empty())
     cat.contact.kind = c.contact == "penalty" ? catenary::Contact::Kind::Penalty : catenary::Contact::Kind::Bilateral;
+  if (before_work) before_work(p, cat);
   if (!c.suspension.empty()) {
     network::Network net;
     try {
@@ -276,6 +291,8 @@ void add_catenary_options(CLI::App* app, CatenaryArgs& c, bool required) {
       ->check(CLI::IsMember({"bilateral", "penalty"}));
   app->add_option("--suspension", c.suspension, "Replace the actuator's dynamic network by this layout or expression");
   app->add_option("--param", c.params, "Suspension element value NAME=VALUE (repeatable)");
+  app->add_flag("--allow-supercritical", c.allow_supercritical,
+                "Run above the contact wire's wave speed (refused otherwise; a warning from 70 % of it)");
   app->add_flag("--relaxed", c.relaxed,
                 "Relax the --suspension network at the static equilibrium with the model's own suspension under this "
                 "catenary, as a study's candidates (default: at the replaced network's reference length)");
@@ -290,6 +307,7 @@ struct SimulateArgs {
   double speed = -1;
   int spans = 12;
   cli::AcceptanceArgs acceptance;
+  double max_seconds = analysis::default_max_seconds;
 };
 
 // "0,200.5" → {0, 200.5}: positions along the line, m.
@@ -362,7 +380,11 @@ void print_line_outputs(std::FILE* info, const analysis::CoupledSimulation& r,
       fmt::print(info, "  pantograph {}: contact lost in {} samples over the run; first at t = {:.6g} s, x = {:.6g} m\n",
                  k + 1, cs.lost_samples, cs.first_loss_t, cs.first_loss_x);
   }
-  double worst = 0, x_worst = 0;
+  if (r.uplift.empty()) {  // issue 38: not "max 0 mm at x = 0 m", a support outside the section
+    fmt::print(info, "support uplift in the section: no support in the section (a line of one span has none)\n");
+    return;
+  }
+  double worst = r.uplift.front().max_uplift, x_worst = r.uplift.front().x;
   for (const auto& u : r.uplift)
     if (u.max_uplift > worst) worst = u.max_uplift, x_worst = u.x;
   fmt::print(info, "support uplift in the section: max {:.2f} mm at the support x = {:g} m ({} supports)\n",
@@ -399,15 +421,17 @@ void write_line_files(std::FILE* info, const std::string& out, const analysis::C
   fmt::print(info, "wrote {0}.supports.csv (support uplift, m) and {0}.psd.csv (contact-force PSD, N²/Hz)\n", stem);
 }
 
-// A run whose estimate (Catenary::estimated_seconds) is beyond a minute says so before it starts.
-void note_long_run(double seconds, const std::string& what) {
-  if (!(seconds > 60)) return;
-  const std::string t = seconds < 3600 ? fmt::format("{:.0f} min", seconds / 60) : fmt::format("{:.1f} h", seconds / 3600);
-  fmt::print(stderr,
-             "note: {} is estimated at about {} on a 2-core machine (docs/benchmarks.md \"Run-time estimate\"); "
-             "Ctrl-C stops it and leaves no partial output file\n",
-             what, t);
+// The cost guard (analysis/cost_guard.hpp): an estimate beyond 10 s is printed on standard error
+// before the work starts; beyond max_seconds (--max-seconds; ≤ 0: no limit) the command is refused
+// (exit 2) with how to proceed.
+void cost_guard(double seconds, double bytes, double max_seconds, const std::string& what, const std::string& cheaper) {
+  analysis::check_memory(bytes, what, cheaper);
+  if (max_seconds > 0) analysis::check_cost(seconds, max_seconds, what, "give --max-seconds", cheaper);
+  if (const std::string note = analysis::cost_note(seconds, what); !note.empty()) fmt::print(stderr, "{}\n", note);
 }
+// What makes work on a finite-element line cheaper (the keys of --set).
+constexpr const char* kFeCheaper =
+    "fewer spans with --set line.spans=N, a coarser mesh with mesh.element_length, the modal solve with solver.type=modal";
 
 int cmd_simulate(const SimulateArgs& a) {
   solve::IntegratorOptions opt;
@@ -438,19 +462,30 @@ int cmd_simulate(const SimulateArgs& a) {
     std::optional<analysis::AcceptanceCriteria> criteria;
     if (!a.acceptance.criteria.empty()) criteria = io::load_acceptance(a.acceptance.criteria);
     io::check_output_path(cli::acceptance_path(a.out), {a.model, a.cat.catenary, a.out});
-    auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
+    const double v = to_ms(a.speed, a.cat.unit);
+    const std::vector<double> x0s = a.positions.empty() ? std::vector<double>{0.0} : parse_positions(a.positions);
+    auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal,
+                                         [&](const pantograph::Pantograph& p, const io::CatenaryFile& c) {
+                                           analysis::check_run_speed(*c.catenary, v, a.t_end > 0 ? 0 : a.spans,
+                                                                     a.cat.allow_supercritical);
+                                           if (const std::string w = analysis::speed_warning(*c.catenary, v); !w.empty())
+                                             fmt::print(stderr, "{}\n", w);
+                                           std::vector<catenary::PantographOnLine> tr;
+                                           for (double x0 : x0s) tr.push_back({p, x0, c.contact});
+                                           cost_guard(c.catenary->estimated_seconds(tr, v, a.t_end),
+                                                      c.catenary->estimated_bytes(tr, v, a.t_end), a.max_seconds,
+                                                      "this run", std::string(kFeCheaper) + ", or a shorter --t-end");
+                                         });
     for (const auto& note : panto.model.notes) fmt::print(info, "note: {}\n", note);
     std::vector<catenary::PantographOnLine> train;
-    for (double x0 : a.positions.empty() ? std::vector<double>{0.0} : parse_positions(a.positions))
-      train.push_back({panto, x0, cat.contact});
+    for (double x0 : x0s) train.push_back({panto, x0, cat.contact});
     analysis::CoupledOptions co;
     co.spans = a.spans;
     co.t_end = a.t_end;
     co.sample = a.sample;
     co.integrator = opt;
     if (criteria) co.filter_cutoff = criteria->filter_cutoff, co.filter_order = criteria->filter_order;
-    const double v = to_ms(a.speed, a.cat.unit);
-    note_long_run(cat.catenary->estimated_seconds(train, v, co.t_end), "this run");
+    co.allow_supercritical = a.cat.allow_supercritical;
     const analysis::CoupledSimulation r = analysis::simulate_coupled(train, *cat.catenary, v, co, progress);
     clear_progress();
     std::vector<const analysis::TimeHistory*> hs;
@@ -609,6 +644,7 @@ struct SweepArgs {
   double rtol = 1e-6, atol = 1e-8;
   bool no_centripetal = false;
   cli::AcceptanceArgs acceptance;
+  double max_seconds = analysis::default_max_seconds;
 };
 
 int cmd_sweep(const SweepArgs& a) {
@@ -618,22 +654,33 @@ int cmd_sweep(const SweepArgs& a) {
     criteria = io::load_acceptance(a.acceptance.criteria);
     io::check_output_path(cli::acceptance_path(a.out), {a.model, a.cat.catenary, a.out});
   }
-  auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal);
-  for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
   for (double s : v_user) {
     if (const std::string e = analysis::speed_rule.check(s, fmt::format("{:g}", s)); !e.empty())
       throw CLI::ValidationError("--speeds", e);  // the library's rule (Python's speeds)
     v.push_back(to_ms(s, a.cat.unit));
   }
+  auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal,
+                                       [&](const pantograph::Pantograph& p, const io::CatenaryFile& c) {
+                                         if (a.method == "periodic") return;
+                                         for (double s : v)
+                                           analysis::check_run_speed(*c.catenary, s, analysis::RunOptions{}.max_spans,
+                                                                     a.cat.allow_supercritical);
+                                         if (const std::string w = analysis::speed_warning(
+                                                 *c.catenary, *std::max_element(v.begin(), v.end()));
+                                             !w.empty())
+                                           fmt::print(stderr, "{}\n", w);
+                                         cost_guard(analysis::estimated_sweep_seconds({{p, 0.0, c.contact}}, *c.catenary, v),
+                                                    c.catenary->estimated_bytes({{p, 0.0, c.contact}}, 0, 0), a.max_seconds, fmt::format("this sweep of {} speeds", v.size()),
+                                                    std::string(kFeCheaper) + ", or fewer --speeds");
+                                       });
+  for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   analysis::RunOptions o;
   o.integrator.method = solve::parse_method(a.integrator);
   o.integrator.rtol = a.rtol;
   o.integrator.atol = a.atol;
   if (criteria) o.filter_cutoff = criteria->filter_cutoff, o.filter_order = criteria->filter_order;
-  if (a.method != "periodic")
-    note_long_run(analysis::estimated_sweep_seconds({{panto, 0.0, cat.contact}}, *cat.catenary, v),
-                  fmt::format("this sweep of {} speeds", v.size()));
+  o.allow_supercritical = a.cat.allow_supercritical;
   const bool tty = isatty(STDOUT_FILENO);
   const auto wall0 = std::chrono::steady_clock::now();
   fmt::print("sweep: {} speeds, {} contact, {}, suspension {}\n", v.size(), catenary::kind_name(cat.contact.kind),
@@ -729,6 +776,7 @@ struct FitArgs {
   std::string catenary, out, table;
   int span = 0;
   std::vector<std::string> sets;
+  double max_seconds = analysis::default_max_seconds;
 };
 
 // The lumped catenary of eq. 7.1 from a finite-element one (catenary::fit_lumped).
@@ -738,6 +786,13 @@ int cmd_catenary_fit(const FitArgs& a) {
   if (a.table == a.out) throw InvalidArgument(fmt::format("--table and --out are both '{}'; give two file names", a.out));
   const catenary::FeCatenaryData d = io::read_fe_catenary_data(a.catenary, a.sets);
   const io::CatenaryFile file = io::read_catenary_file(a.catenary, a.sets);
+  // Building the line, then 220 static solves along one span (about as much again).
+  {
+    catenary::FeCatenaryData direct = d;
+    direct.solver = catenary::FeCatenaryData::Solver::Direct;
+    const catenary::FeCostEstimate e = catenary::estimate_cost(direct, {}, 1.0, d.time_step);
+    cost_guard(2 * e.setup, e.bytes, a.max_seconds, "this fit", kFeCheaper);
+  }
   const catenary::FeLine line(d);
   const catenary::LumpedFit fit = catenary::fit_lumped(line, a.span);
   const catenary::LumpedCatenary& c = fit.lumped;
@@ -772,6 +827,7 @@ struct CheckReductionArgs {
   CatenaryArgs cat;
   double tolerance = 1.0;
   std::string acceptance;
+  double max_seconds = analysis::default_max_seconds;
 };
 
 // The finite-element line's modal solve against its direct solve (docs/catenary-fe.md "Modal solver"):
@@ -789,6 +845,20 @@ int cmd_check_reduction(CheckReductionArgs a) {
   if (!probe.fe) throw ModelError(fmt::format("{}: check-reduction needs a finite-element catenary (type: finite_element)", a.cat.catenary));
   std::optional<analysis::AcceptanceCriteria> criteria;
   if (!a.acceptance.empty()) criteria = io::load_acceptance(a.acceptance);
+  {  // both solves at every speed, each line built and (modal) decomposed once
+    double total = 0, bytes = 0;
+    for (const auto solver : {catenary::FeCatenaryData::Solver::Direct, catenary::FeCatenaryData::Solver::Modal}) {
+      catenary::FeCatenaryData d = *probe.fe;
+      d.solver = solver;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const catenary::FeCostEstimate e = catenary::estimate_cost(d, {0.0}, v[i], -1, i == 0, i == 0);
+        total += e.total();
+        bytes = std::max(bytes, e.bytes);
+      }
+    }
+    cost_guard(total, bytes, a.max_seconds, fmt::format("this comparison at {} speed(s)", v.size()),
+               "fewer spans with --set line.spans=N, a coarser mesh with mesh.element_length, or fewer --speeds");
+  }
   CatenaryArgs direct = a.cat, modal = a.cat;
   direct.sets.push_back("solver.type=direct");
   modal.sets.push_back("solver.type=modal");
@@ -875,7 +945,12 @@ int cmd_modes(const ModesArgs& a) {
   analysis::ModalAnalysis ma;
   const bool plain = a.cat.catenary.empty() && !io::load_model_file(a.model, a.cat.sets).has_rig();
   if (!a.cat.catenary.empty()) {
-    auto [panto, cat] = pantograph_setup(a.model, a.cat);
+    // A finite-element line is built for its mean (fitted lumped) catenary: its estimate first.
+    auto [panto, cat] = pantograph_setup(a.model, a.cat, false, [&](const pantograph::Pantograph& p, const io::CatenaryFile& c) {
+      const std::vector<catenary::PantographOnLine> tr{{p, 0.0, c.contact}};
+      cost_guard(c.catenary->estimated_setup_seconds(tr), c.catenary->estimated_bytes(tr, 0, 0), 0,
+                 "building this catenary", kFeCheaper);
+    });
     ma = analysis::modal_analysis(panto, *cat.catenary, cat.contact);
   } else if (const pantograph::Pantograph p = io::load_model_file(a.model, a.cat.sets); p.has_rig()) {
     ma = analysis::modal_analysis_free_head(p);
@@ -1053,6 +1128,7 @@ struct OptimiseArgs {
   bool no_plots = false, force = false;
   int workers = 0;        ///< > 0: a local Dask cluster of this many processes
   std::string scheduler;  ///< a Dask scheduler's address
+  double max_seconds = 0;  ///< > 0: refuse a study whose estimate (at its limit of evaluations) is above
 };
 
 // `optimise --workers N | --scheduler ADDRESS`: the study on Dask, by the Python module's driver
@@ -1062,6 +1138,9 @@ int run_distributed(const OptimiseArgs& a) {
     throw InvalidArgument(fmt::format("--workers/--scheduler: {} is a model study; only J2 studies (catenary:) are "
                                       "distributed so far — run it without", a.study));
   if (a.map != 15) throw InvalidArgument("--map: not available with --workers/--scheduler (the report uses the default map)");
+  if (a.max_seconds > 0)
+    throw InvalidArgument("--max-seconds: not available with --workers/--scheduler (the cluster's cost is not estimated); "
+                          "run without it");
   std::vector<std::string> args{INERTA_PYTHON, "-m", "inerta.distributed", "optimise", a.study};
   if (a.workers > 0) args.insert(args.end(), {"--workers", std::to_string(a.workers)});
   else args.insert(args.end(), {"--scheduler", a.scheduler});
@@ -1129,7 +1208,8 @@ int cmd_optimise(const OptimiseArgs& a) {
                                           static_cast<long>(study.layouts.size());
     if (e > 1) fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,
                           study.catenaries.size(), study.speeds.size());
-    note_long_run(e * static_cast<double>(evals), fmt::format("this study, at its limit of {} evaluations,", evals));
+    cost_guard(e * static_cast<double>(evals), 0, a.max_seconds, fmt::format("this study, at its limit of {} evaluations,", evals),
+               "fewer layouts, starts or search.max_evaluations, fewer speeds, or a coarse: stage");
   }
   const network::Network baseline = optim::default_suspension(study);
   const optim::StudyCost def = optim::evaluate(study, baseline);
@@ -1366,6 +1446,8 @@ int main(int argc, char** argv) {
   sim->add_option("--positions", sa.positions,
                   "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200");
   cli::add_acceptance_options(sim, sa.acceptance);
+  sim->add_option("--max-seconds", sa.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
+      ->check(number_rule(analysis::max_seconds_rule));
 
   AdmittanceArgs aa;
   auto* adm = app.add_subcommand("admittance", "Admittance Y = force / relative velocity of a network (CSV)");
@@ -1394,6 +1476,8 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(count_rule(analysis::harmonics_rule));
   cli::add_acceptance_options(swp, wa.acceptance);
+  swp->add_option("--max-seconds", wa.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
+      ->check(number_rule(analysis::max_seconds_rule));
 
   ModesArgs ma;
   auto* mds =
@@ -1443,6 +1527,8 @@ int main(int argc, char** argv) {
   fit->add_option("--span", fit_args.span, "Span to fit (1-based; default: the middle span)")->check(count_in(0, 100000));
   fit->add_option("--table", fit_args.table, "Also write the fit along the span (CSV: x, elasticity FE/fit, mass, damping)");
   fit->add_option("--set", fit_args.sets, "Override a catenary value (repeatable), e.g. messenger.tension=17000");
+  fit->add_option("--max-seconds", fit_args.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
+      ->check(number_rule(analysis::max_seconds_rule));
   CheckReductionArgs cra;
   auto* crd = cat_cmd->add_subcommand(
       "check-reduction", "Run the finite-element line's modal and direct solves side by side and compare the statistics");
@@ -1457,6 +1543,8 @@ int main(int argc, char** argv) {
       ->check(number_in(0, 1e6, "a percentage"));
   crd->add_option("--acceptance", cra.acceptance,
                   "Also say whether both solves reach the same acceptance verdict (a preset or a criteria file)");
+  crd->add_option("--max-seconds", cra.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
+      ->check(number_rule(analysis::max_seconds_rule));
   cat_cmd->require_subcommand(1);
 
   CLI::App* idn = inerta::cli::add_identify_commands(app);  // apps/inerta/identify.cpp
@@ -1474,7 +1562,18 @@ int main(int argc, char** argv) {
   auto* workers = opt->add_option("--workers", oa.workers, "Run the layouts on a local Dask cluster of N processes (docs/distributed.md)")
                       ->check(count_in(1, 1024));
   opt->add_option("--scheduler", oa.scheduler, "Run the layouts on the Dask cluster of this scheduler, tcp://HOST:PORT")
-      ->excludes(workers);
+      ->excludes(workers)
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {  // '' would run serially without a word
+            return v.find_first_not_of(" \t") == std::string::npos
+                       ? "empty; expected the address of a running scheduler, tcp://HOST:PORT"
+                       : "";
+          },
+          "ADDRESS"));
+  opt->add_option("--max-seconds", oa.max_seconds,
+                  "Refuse (exit 2) a study whose estimate at its limit of evaluations is above S seconds (default: no "
+                  "limit; the estimate is printed beyond 10 s)")
+      ->check(number_rule(analysis::max_seconds_rule));
   opt->add_flag("--force", oa.force,
                 "Use an --out folder that is not empty: the files a study writes there are removed first");
 

@@ -816,6 +816,7 @@ class RunOptions:
     fixed_spans: bool
     filter_cutoff: float
     filter_order: int
+    allow_supercritical: bool
     def __init__(self, **kwargs: Any) -> None: ...
 
 class ContactStatistics:
@@ -925,7 +926,8 @@ def simulate_coupled(model: ModelsOnLine, catenary: CatenaryLike, speed: float, 
                      window_spans: int = 2, integrator: Optional[IntegratorOptions] = None,
                      method: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None,
                      max_step: Optional[float] = None,
-                     progress: Optional[Callable[[float, float], None]] = None) -> CoupledResult: ...
+                     progress: Optional[Callable[[float, float], None]] = None,
+                     max_seconds: Optional[float] = 600.0, allow_supercritical: bool = False) -> CoupledResult: ...
 
 class SpeedResult:
     speed: float
@@ -992,7 +994,9 @@ class SweepResult:
 def sweep(model: ModelsOnLine, catenary: CatenaryLike, speeds: ArrayLike, *, contact: ContactLike = None,
           positions: Optional[ArrayLike] = None, options: Optional[RunOptions] = None, method: Optional[str] = None,
           rtol: Optional[float] = None, atol: Optional[float] = None,
-          progress: Optional[Callable[[int, int], None]] = None) -> SweepResult: ...
+          progress: Optional[Callable[[int, int], None]] = None,
+          max_seconds: Optional[float] = 600.0) -> SweepResult: ...
+
 class AcceptanceCriteria:
     name: str
     source: str

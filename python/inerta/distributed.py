@@ -238,8 +238,10 @@ def _main(argv=None):
     o.add_argument("--checkpoint", default=None, help="default: OUT/checkpoint.pkl with --out")
     o.add_argument("--no-plots", action="store_true")
     args = p.parse_args(argv)
-    if args.workers is not None and args.workers < 1:
-        p.error(f"--workers: {args.workers} is out of range; expected >= 1")
+    if args.workers is not None and not 1 <= args.workers <= 1024:  # the CLI's range (inerta optimise --workers)
+        p.error(f"--workers: {args.workers} is out of range; expected 1 ... 1024")
+    if args.scheduler is not None and not args.scheduler.strip():
+        p.error("--scheduler: empty; expected the address of a running scheduler, tcp://HOST:PORT")
     checkpoint = args.checkpoint or (os.path.join(args.out, "checkpoint.pkl") if args.out else None)
     resuming = bool(checkpoint) and os.path.exists(checkpoint) and not args.force
     if args.out and not resuming:  # a folder with its study's checkpoint is this study's: resume there

@@ -4,6 +4,7 @@
 // Python objects).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "common.hpp"
@@ -12,6 +13,7 @@
 #include "inerta/analysis/aero_fit.hpp"
 #include "inerta/analysis/catenary_response.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/cost_guard.hpp"
 #include "inerta/analysis/frf.hpp"
 #include "inerta/analysis/modal.hpp"
 #include "inerta/analysis/periodic.hpp"
@@ -91,6 +93,9 @@ std::vector<catenary::PantographOnLine> train(const py::object& model, const py:
 
 analysis::RunOptions run_options(const py::object& options, const py::object& method, const py::object& rtol,
                                  const py::object& atol) {
+  if (!options.is_none() && !py::isinstance<analysis::RunOptions>(options))  // not pybind's "Unable to cast"
+    throw py::type_error("options: expected a RunOptions, got " +
+                         py::str(py::type::of(options).attr("__name__")).cast<std::string>());
   analysis::RunOptions o = options.is_none() ? analysis::RunOptions{} : options.cast<analysis::RunOptions>();
   o.integrator = integrator_arg(py::cast(o.integrator), method, rtol, atol, py::none());
   return o;
@@ -128,6 +133,23 @@ void set_frf_matrix(analysis::Frf& f, const py::array_t<std::complex<double>, py
 }
 
 const char* method_name_of(const solve::IntegratorOptions& o) { return o.method == solve::Method::Bdf ? "bdf" : "rk"; }
+
+// A warning of the library on sys.stderr (the CLI's standard error); "" prints nothing.
+void print_warning(const std::string& w) {
+  if (!w.empty()) py::print(w, py::arg("file") = py::module_::import("sys").attr("stderr"));
+}
+
+// The cost guard (analysis/cost_guard.hpp) as the CLI's: refused above max_seconds (None: no limit),
+// the estimate on sys.stderr beyond 10 s, both before any work on the catenary.
+void cost_guard(double seconds, double bytes, const py::object& max_seconds, const std::string& what) {
+  analysis::check_memory(bytes, what, "fewer spans ('line.spans'), a coarser mesh ('mesh.element_length')");
+  if (!max_seconds.is_none())
+    analysis::check_cost(seconds, rule_arg(max_seconds, "max_seconds", analysis::max_seconds_rule), what,
+                         "pass max_seconds=",
+                         "fewer spans ('line.spans'), a coarser mesh ('mesh.element_length'), the modal solve "
+                         "('solver.type': 'modal') or a shorter t_end");
+  print_warning(analysis::cost_note(seconds, what));
+}
 
 }  // namespace
 
@@ -182,7 +204,9 @@ void bind_analysis(py::module_& m) {
       .def_readwrite("integrator", &analysis::RunOptions::integrator)
       .def_readwrite("fixed_spans", &analysis::RunOptions::fixed_spans, "run exactly min_spans spans")
       .def_readwrite("filter_cutoff", &analysis::RunOptions::filter_cutoff, "Hz, the 20 Hz statistics' low-pass of a finite line")
-      .def_readwrite("filter_order", &analysis::RunOptions::filter_order, "order of each pass of that low-pass");
+      .def_readwrite("filter_order", &analysis::RunOptions::filter_order, "order of each pass of that low-pass")
+      .def_readwrite("allow_supercritical", &analysis::RunOptions::allow_supercritical,
+                     "run above the catenary's wave speed (else ModelError, as the CLI without --allow-supercritical)");
 
   py::class_<analysis::ContactStatistics>(m, "ContactStatistics",
                                           "Contact-force statistics over a window (N; compression positive).")
@@ -289,6 +313,9 @@ void bind_analysis(py::module_& m) {
     // Given: the CLI's rule and message (--t-end, --sample); None (-1): the model's options.
     o.t_end = t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule);
     o.sample = sample.is_none() ? -1.0 : rule_arg(sample, "sample", analysis::sample_rule);
+    // The CLI's --steady-from (>= 0 s, at most 1e7 s); a negative value (the default −1): off. NaN is refused.
+    if (!(steady_from < 0) && !(steady_from >= 0 && steady_from <= 1e7))
+      throw InvalidArgument(fmt::format("steady_from: {} is out of range; expected >= 0 s, at most 1e7 s (or < 0: off)", steady_from));
     o.from_equilibrium = from_equilibrium, o.steady_from = steady_from;
     o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
     return run(progress, [&](Call& call) {
@@ -360,9 +387,16 @@ void bind_analysis(py::module_& m) {
                                const py::object& t_end, const py::object& sample, const py::object& window_spans,
                                const py::object& integrator, const py::object& method,
                                const py::object& rtol, const py::object& atol, const py::object& max_step,
-                               const py::object& progress) {
+                               const py::object& progress, const py::object& max_seconds, bool allow_supercritical) {
     const CatenaryArg cat = catenary_arg(catenary);
     const auto pantographs = train(model, positions, contact_arg(contact, cat));
+    analysis::check_run_speed(*cat.catenary, speed,
+                              t_end.is_none() ? static_cast<int>(rule_arg(spans, "spans", analysis::spans_rule)) : 0,
+                              allow_supercritical);
+    print_warning(analysis::speed_warning(*cat.catenary, speed));
+    cost_guard(cat.catenary->estimated_seconds(pantographs, speed, t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule)),
+               cat.catenary->estimated_bytes(pantographs, speed, t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule)),
+               max_seconds, "this run");
     analysis::CoupledOptions o;
     // The CLI's rules and messages (--spans, --t-end, --sample); None: by spans, L/(400 v).
     o.spans = static_cast<int>(rule_arg(spans, "spans", analysis::spans_rule));
@@ -370,6 +404,7 @@ void bind_analysis(py::module_& m) {
     o.t_end = t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule);
     o.sample = sample.is_none() ? -1.0 : rule_arg(sample, "sample", analysis::sample_rule);
     o.integrator = integrator_arg(integrator, method, rtol, atol, max_step);
+    o.allow_supercritical = allow_supercritical;
     return run(progress, [&](Call& call) {
       const auto t0 = Clock::now();
       auto sim = std::make_shared<analysis::CoupledSimulation>(
@@ -382,12 +417,17 @@ void bind_analysis(py::module_& m) {
         py::arg("positions") = py::none(), py::arg("spans") = 12, py::arg("t_end") = py::none(), py::arg("sample") = py::none(),
         py::arg("window_spans") = 2, py::arg("integrator") = py::none(), py::arg("method") = py::none(),
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("max_step") = py::none(),
-        py::arg("progress") = py::none(),
+        py::arg("progress") = py::none(), py::arg("max_seconds") = analysis::default_max_seconds,
+        py::arg("allow_supercritical") = false,
         "Pantographs under a catenary at `speed` (m/s) from the coupled static equilibrium "
         "(analysis::simulate_coupled, as `inerta simulate --catenary`). model: a pantograph Model (copies at "
         "`positions`, m along the line; default one at 0) or a list of PantographOnLine. catenary: a Catenary, a "
         "CatenaryFile (its contact law is the default) or a file name. Run length: `spans` spans, or t_end (s); "
-        "sample (s; default L/(400 v)). progress(t, t_end); Ctrl-C stops the run.");
+        "sample (s; default L/(400 v)). progress(t, t_end); Ctrl-C stops the run. The cost guard: an estimate "
+        "(estimated_seconds) beyond 10 s is printed on sys.stderr before the run; above max_seconds (default 600; "
+        "None: no limit) the run is refused with ModelError, before the line is built. A speed above the contact wire's "
+        "wave speed is refused unless allow_supercritical (the CLI's --allow-supercritical); above 1000 m/s, or one "
+        "whose run would last beyond 1e7 s, always (ModelError).");
 
   // ---- Speed sweeps -----------------------------------------------------------------------------------
   py::class_<analysis::SpeedResult>(m, "SpeedResult", "The contact force at one speed.")
@@ -485,11 +525,19 @@ void bind_analysis(py::module_& m) {
   m.def("sweep", [](const py::object& model, const py::object& catenary, const py::object& speeds,
                     const py::object& contact, const py::object& positions, const py::object& options,
                     const py::object& method, const py::object& rtol, const py::object& atol,
-                    const py::object& progress) {
+                    const py::object& progress, const py::object& max_seconds) {
     const CatenaryArg cat = catenary_arg(catenary);
     const auto pantographs = train(model, positions, contact_arg(contact, cat));
     const std::vector<double> v = doubles(speeds);
     const analysis::RunOptions o = run_options(options, method, rtol, atol);
+    for (double s : v) {  // before the estimate (which divides by them)
+      require(analysis::speed_rule, s, "speeds");
+      analysis::check_run_speed(*cat.catenary, s, o.max_spans, o.allow_supercritical);
+    }
+    if (!v.empty()) print_warning(analysis::speed_warning(*cat.catenary, *std::max_element(v.begin(), v.end())));
+    cost_guard(analysis::estimated_sweep_seconds(pantographs, *cat.catenary, v), cat.catenary->estimated_bytes(pantographs, 0, 0),
+               max_seconds,
+               fmt::format("this sweep of {} speeds", v.size()));
     return run(progress, [&](Call& call) {
       const auto t0 = Clock::now();
       auto r = analysis::sweep(pantographs, *cat.catenary, v, o, [&](int done, int total) {
@@ -500,17 +548,19 @@ void bind_analysis(py::module_& m) {
   }, py::arg("model"), py::arg("catenary"), py::arg("speeds"), py::kw_only(), py::arg("contact") = py::none(),
         py::arg("positions") = py::none(), py::arg("options") = py::none(), py::arg("method") = py::none(),
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("progress") = py::none(),
+        py::arg("max_seconds") = analysis::default_max_seconds,
         "Speed sweep in the time domain (analysis::sweep, as `inerta sweep`): at every speed (m/s; inerta.kmh "
         "converts) the pantographs are coupled to the catenary and run span by span until σ settles, the speeds in "
         "parallel on all cores (oneTBB; the GIL is released). options: RunOptions; method/rtol/atol override its "
         "integrator. progress(done, total) after each speed, on this thread; Ctrl-C cancels the sweep "
-        "(KeyboardInterrupt once the running speeds finish).");
+        "(KeyboardInterrupt once the running speeds finish). The cost guard as simulate_coupled's: the estimate "
+        "(estimated_sweep_seconds) beyond 10 s on sys.stderr; above max_seconds (default 600; None: no limit) ModelError.");
 
   m.def("estimated_seconds", [](const py::object& model, const py::object& catenary, double speed, const py::object& t_end,
                                 const py::object& contact, const py::object& positions) {
     const CatenaryArg cat = catenary_arg(catenary);
     return cat.catenary->estimated_seconds(train(model, positions, contact_arg(contact, cat)), speed,
-                                           t_end.is_none() ? -1.0 : t_end.cast<double>());
+                                           t_end.is_none() ? -1.0 : rule_arg(t_end, "t_end", analysis::t_end_rule));
   }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::arg("t_end") = py::none(), py::kw_only(),
         py::arg("contact") = py::none(), py::arg("positions") = py::none(),
         "A rough wall time (s) of one run (simulate_coupled) on the 2-core reference machine "

@@ -12,6 +12,7 @@
 #include "inerta/catenary/wire_profile.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/file_kind.hpp"
+#include "inerta/io/files.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/pantograph/lumped.hpp"
 #include "inerta/mbs/applied_forces.hpp"
@@ -55,11 +56,9 @@ Model parse_model_handle(const std::string& text, const std::string& source, con
 }
 
 Model load_model_handle(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) return make_model(io::load_model_file(path, overrides));  // throws the library's "cannot open" error
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parse_model_handle(ss.str(), path, overrides);
+  // The CLI's reader: regular files only (a device such as /dev/zero or a FIFO is refused, never read
+  // without end), at most 256 MiB.
+  return parse_model_handle(io::read_input_text(path, "model file"), path, overrides);
 }
 
 std::vector<std::string> Model::override_list() const {

@@ -229,6 +229,12 @@ std::vector<double> doubles(const py::object& o);
 /// value as Python writes it. A count (CountRule) must be a whole number in its range.
 template <class Rule>
 double rule_arg(const py::object& v, const char* name, const Rule& rule) {
+  // A number, not a bool (True would be 1) nor a string: a TypeError naming the argument, not
+  // pybind's "Unable to cast Python instance" (issue 38).
+  if (py::isinstance<py::bool_>(v) || !PyNumber_Check(v.ptr()) || py::isinstance<py::str>(v))
+    throw py::type_error(std::string(name) + ": expected a number, got " +
+                         py::str(py::type::of(v).attr("__name__")).cast<std::string>() + " " +
+                         py::repr(v).cast<std::string>());
   const double x = v.cast<double>();
   if (const std::string e = rule.check(x, py::str(v).cast<std::string>()); !e.empty())
     throw InvalidArgument(std::string(name) + ": " + e);

@@ -1,4 +1,6 @@
 // The extension module inerta._inerta (docs/python.md); python/inerta/__init__.py re-exports it.
+#include <cstring>
+
 #include "common.hpp"
 #include "inerta/error.hpp"
 #include "inerta/network/network.hpp"
@@ -18,7 +20,11 @@ PyObject* new_exception(py::module_& m, const char* name, std::initializer_list<
 }
 
 void raise(PyObject* type, const char* what, const char* attr = nullptr, py::object value = py::none()) {
-  py::object inst = py::reinterpret_steal<py::object>(PyObject_CallFunction(type, "s", what));
+  // A message quoting a file's bytes may not be UTF-8: escaped, never a UnicodeDecodeError instead of it.
+  py::object text = py::reinterpret_steal<py::object>(
+      PyUnicode_DecodeUTF8(what, static_cast<Py_ssize_t>(std::strlen(what)), "backslashreplace"));
+  if (!text) return;
+  py::object inst = py::reinterpret_steal<py::object>(PyObject_CallFunctionObjArgs(type, text.ptr(), nullptr));
   if (!inst) return;  // the call set an error
   if (attr) inst.attr(attr) = value;
   PyErr_SetObject(type, inst.ptr());

@@ -223,12 +223,14 @@ def test_run_time_estimates_follow_the_solvers_cost_laws():
 
 
 def test_a_run_estimated_at_hours_says_so_first_and_ctrl_c_leaves_no_file(tmp_path):
-    """The cost guard: an FE line of 300 spans with the direct solve (hours) prints its estimate before
-    the run; SIGINT then stops it and no output file, complete or partial, is left."""
+    """The cost guard: an FE line of 300 spans with the direct solve (hours; refused without --max-seconds,
+    tests/apps/guard_cli_test.cpp) prints its estimate before the run; SIGINT then stops it and no output
+    file, complete or partial, is left."""
     out = tmp_path / "long.csv"
     p = subprocess.Popen([str(CLI), "simulate", model("pantograph-3mass.yaml"), "--catenary", model("catenary-fe.yaml"),
                           "--speed", "250", "--unit", "kmh", "--set", "line.spans=300", "--set", "solver.type=direct",
-                          "--out", str(out)], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True, cwd=SRC)
+                          "--out", str(out), "--max-seconds", "100000"],  # above the default limit (600 s): allowed
+                         stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True, cwd=SRC)
     try:
         line = p.stderr.readline()
         assert line.startswith("note: this run is estimated at about ") and "on a 2-core machine" in line, line

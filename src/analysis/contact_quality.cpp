@@ -101,6 +101,7 @@ std::vector<SupportUplift> support_uplift(const std::vector<double>& t, const st
                                       t.size()));
   if (!std::isfinite(x_from) || !std::isfinite(x_to) || x_from > x_to)
     throw InvalidArgument(fmt::format("{}: section [{}, {}] m: needs finite x_from <= x_to", what, x_from, x_to));
+  if (support_x.empty()) return {};  // a line of one span: no support to report (issue 38)
   if (t.empty()) throw InvalidArgument(fmt::format("{}: the history is empty", what));
   for (std::size_t i = 0; i < uplift.size(); ++i)
     if (uplift[i].size() != support_x.size())

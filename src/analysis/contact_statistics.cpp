@@ -9,9 +9,11 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <mutex>
 
 #include "inerta/analysis/contact_quality.hpp"
+#include "inerta/analysis/simulate.hpp"
 #include "inerta/error.hpp"
 
 namespace inerta::analysis {
@@ -33,6 +35,29 @@ ContactStatistics statistics(const std::vector<double>& F) {
 }
 
 namespace {
+// check_run_speed from the catenary's figures (a Coupled system has them too, but no wave speed).
+void check_speed(double span, double line_length, double wave, double speed, int spans, bool allow_supercritical) {
+  constexpr double limit = t_end_rule.hi;
+  if (!(speed <= max_run_speed))
+    throw ModelError(fmt::format("speed {:.4g} m/s ({:.4g} km/h) is above the fastest run accepted, {:g} m/s ({:g} km/h): "
+                                 "no train runs there, and the statistics would be of a line that barely moves",
+                                 speed, speed * 3.6, max_run_speed, max_run_speed * 3.6));
+  const bool line = std::isfinite(line_length);
+  const double length = line ? line_length : spans * span;
+  if (spans > 0 && !(length / speed <= limit))
+    throw ModelError(fmt::format("speed {:.4g} m/s ({:.4g} km/h): a run over {} ({:g} m) would last {:.3g} s, beyond the "
+                                 "limit of {:g} s (that of --t-end); the slowest speed accepted here is {:.3g} m/s",
+                                 speed, speed * 3.6, line ? std::string("the line") : fmt::format("{} spans", spans),
+                                 length, length / speed, limit, length / limit));
+  if (speed > wave && !allow_supercritical)
+    throw ModelError(fmt::format("speed {:.4g} km/h is above the contact wire's wave speed sqrt(T/rho A) = {:.4g} km/h "
+                                 "(inerta check prints it): the wire cannot carry the pantograph's wave ahead of it and "
+                                 "the results (large contact loss) are not those of a catenary in service; keep below "
+                                 "about 70 % of it, raise the contact-wire tension, or give --allow-supercritical "
+                                 "(Python: allow_supercritical=True) to run it anyway",
+                                 speed * 3.6, wave * 3.6));
+}
+
 // A finite line (the finite-element catenary): one pass from the static state until the leading
 // pantograph is 1 m short of the end; statistics of each contact over the analysis section.
 SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
@@ -95,8 +120,21 @@ void check(const RunOptions& o) {
   require(NumberRule{0, 1, "0 … 1"}, o.tolerance, "tolerance");
 }
 
+void check_run_speed(const catenary::Catenary& catenary, double speed, int spans, bool allow_supercritical) {
+  check_speed(catenary.span(), catenary.line_length(), catenary.wave_speed(), speed, spans, allow_supercritical);
+}
+
+std::string speed_warning(const catenary::Catenary& catenary, double speed) {
+  const double wave = catenary.wave_speed();
+  if (!(speed >= 0.7 * wave)) return {};
+  return fmt::format("warning: {:.4g} km/h is {:.0f} % of the contact wire's wave speed ({:.4g} km/h); the usual design "
+                     "rule keeps a pantograph below 70 % of it (wave reflections, contact loss)",
+                     speed * 3.6, 100 * speed / wave, wave * 3.6);
+}
+
 SpeedResult run_speed(catenary::Coupled& sys, const RunOptions& o) {
   check(o);
+  check_speed(sys.span(), sys.line_length(), std::numeric_limits<double>::infinity(), sys.speed(), o.max_spans, true);
   if (std::isfinite(sys.line_length())) return run_line(sys, o);
   const double T = sys.span() / sys.speed();  // one span
   const int nc = sys.n_contacts();
@@ -148,11 +186,13 @@ SpeedResult run_speed(catenary::Coupled& sys, const RunOptions& o) {
 
 double estimated_sweep_seconds(const std::vector<catenary::PantographOnLine>& pantographs,
                                const catenary::Catenary& catenary, const std::vector<double>& speeds) {
+  // The line's one-off work (setup, first modes) once, before the parallel loop; the runs shared.
+  const double once = catenary.estimated_setup_seconds(pantographs);
   double total = 0;
   for (double v : speeds)
-    if (v > 0) total += catenary.estimated_seconds(pantographs, v, -1);
+    if (v > 0) total += catenary.estimated_seconds(pantographs, v, -1) - once;
   const int cores = std::max(1, std::min(tbb::info::default_concurrency(), static_cast<int>(speeds.size())));
-  return total / cores;
+  return once + total / cores;
 }
 
 std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pantographs,
@@ -164,6 +204,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
   int done = 0;
   check(options);                 // before any work
   for (double v : speeds) require(speed_rule, v, "speeds");
+  for (double v : speeds) check_run_speed(catenary, v, options.max_spans, options.allow_supercritical);
   catenary.prepare(pantographs);  // once, before the runs (a finite-element line's modes)
   tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t i) {
     try {
@@ -195,6 +236,8 @@ std::vector<RunComparison> compare(const std::vector<catenary::PantographOnLine>
                                    const catenary::Catenary& reference, const catenary::Catenary& candidate,
                                    const std::vector<double>& speeds, const RunOptions& options) {
   std::vector<RunComparison> out;
+  for (double v : speeds)
+    for (const catenary::Catenary* c : {&reference, &candidate}) check_run_speed(*c, v, options.max_spans, options.allow_supercritical);
   auto timed = [&](const catenary::Catenary& c, double v, double& seconds) {
     const auto t0 = std::chrono::steady_clock::now();
     auto sys = c.couple(pantographs, v);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/error.hpp"
 #include "inerta/mbs/output.hpp"
 
@@ -91,6 +92,11 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
                                    const catenary::Catenary& catenary, double speed, const CoupledOptions& o,
                                    const TimeProgress& progress) {
   check(o);
+  if (!(o.t_end > 0)) {
+    check_run_speed(catenary, speed, o.spans, o.allow_supercritical);
+  } else {  // the run's length is given (t_end_rule): only the speed itself
+    check_run_speed(catenary, speed, 0, o.allow_supercritical);
+  }
   auto sys = catenary.couple(pantographs, speed);
   CoupledSimulation r;
   r.speed = speed;

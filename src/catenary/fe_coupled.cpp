@@ -328,14 +328,32 @@ class FeCoupled final : public Coupled {
 
 }  // namespace
 
-FeCatenary::FeCatenary(FeCatenaryData data) : line_(std::make_shared<FeLine>(std::move(data))) {
-  if (line_->data().solver == FeCatenaryData::Solver::Modal)
-    modal_ = std::make_shared<FeModalLine>(line_, ModeStore::from_environment());
+FeCatenary::FeCatenary(FeCatenaryData data) : data_(std::move(data)) { data_.validate(); }
+
+void FeCatenary::build() const {
+  std::call_once(built_, [&] {
+    auto line = std::make_shared<const FeLine>(data_);
+    if (data_.solver == FeCatenaryData::Solver::Modal)
+      modal_ = std::make_shared<FeModalLine>(line, ModeStore::from_environment());
+    line_ = std::move(line);
+    line_ready_.store(true);
+  });
+}
+
+const FeLine& FeCatenary::line() const {
+  build();
+  return *line_;
+}
+
+std::shared_ptr<const FeModalLine> FeCatenary::modal() const {
+  build();
+  return modal_;
 }
 
 std::string FeCatenary::describe() const {
+  build();
   std::string s = line_->describe();
-  const FeCatenaryData& d = line_->data();
+  const FeCatenaryData& d = data_;
   if (modal_)
     s += d.window_behind < 0 || d.window_ahead < 0
              ? fmt::format("; modal solve below {:g} Hz, the whole line", d.modal_cutoff)
@@ -347,30 +365,42 @@ std::string FeCatenary::describe() const {
 }
 
 void FeCatenary::prepare(const std::vector<PantographOnLine>& pantographs) const {
+  build();
   if (!modal_ || pantographs.empty()) return;
   double lo = line_->length(), hi = 0;
   for (const PantographOnLine& p : pantographs) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
   modal_->prepare(modal_->window_spans(std::max(0.0, hi - lo)));
 }
 
-double FeCatenary::estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
-  // Measured on the reference machine (3-mass and HSX, 5–160 spans): a direct step costs ≈ 35 ns per
-  // unknown of the line, a modal step ≈ 4 ns per unknown of the window, a pantograph ≈ 20 µs a step
-  // (3-mass ≈ 10, HSX ≈ 30); a line's first window modes ≈ 1.5 s unless read from the mode store.
-  const FeCatenaryData& d = line_->data();
-  double lo = line_->length(), hi = 0;
-  for (const PantographOnLine& p : pantographs) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
-  if (pantographs.empty()) lo = 0;
-  const double T = t_end > 0 ? t_end : std::max(0.0, line_->length() - lo) / speed;
-  const double steps = T / d.time_step, per_pantograph = 20e-6 * static_cast<double>(pantographs.size());
-  if (!modal_) return steps * (35e-9 * line_->n_dofs() + per_pantograph);
-  const double window = std::min(1.0, static_cast<double>(modal_->window_spans(std::max(0.0, hi - lo))) / d.spans);
-  const double first_modes = modal_->decompositions() + modal_->loaded() == 0 ? 1.5 : 0.0;
-  return steps * (4e-9 * window * line_->n_dofs() + per_pantograph) + first_modes;
+FeCostEstimate FeCatenary::estimate(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
+  // Before the line is built (the cost guard runs first): its setup and first modes too.
+  bool built = false, modes = false;
+  if (line_ready_.load()) {
+    built = true;
+    modes = !modal_ || modal_->decompositions() + modal_->loaded() > 0;
+  }
+  std::vector<double> x0;
+  for (const PantographOnLine& p : pantographs) x0.push_back(p.x0);
+  return estimate_cost(data_, x0, speed, t_end, !built, !modes);
 }
 
+double FeCatenary::estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
+  return estimate(pantographs, speed, t_end).total();
+}
+
+double FeCatenary::estimated_bytes(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
+  return speed > 0 ? estimate(pantographs, speed, t_end).bytes : estimate(pantographs, 1.0, data_.time_step).bytes;
+}
+
+double FeCatenary::estimated_setup_seconds(const std::vector<PantographOnLine>& pantographs) const {
+  const FeCostEstimate e = estimate(pantographs, 1.0, data_.time_step);
+  return e.setup + e.modes;
+}
+
+double FeCatenary::line_length() const { return data_.span * data_.spans; }
+
 Section FeCatenary::section() const {
-  const FeCatenaryData& d = line_->data();
+  const FeCatenaryData& d = data_;
   int first = d.section_first, last = d.section_last;
   if (first < 0) {  // default: without the first and last quarter of the spans (at least one span each end)
     const int skip = d.spans >= 3 ? std::max(1, d.spans / 4) : 0;
@@ -381,13 +411,14 @@ Section FeCatenary::section() const {
 
 std::shared_ptr<const Catenary> FeCatenary::mean() const {
   // The fitted lumped catenary without its variation along the span (modes about a static state).
-  LumpedCatenary c = fit_lumped(*line_).lumped;
+  LumpedCatenary c = fit_lumped(line()).lumped;
   for (int i = 1; i < 4; ++i) c.k[static_cast<std::size_t>(i)] = c.m[static_cast<std::size_t>(i)] = c.c[static_cast<std::size_t>(i)] = 0;
   return std::make_shared<Lumped>(c);
 }
 
 std::unique_ptr<Coupled> FeCatenary::make_coupled(const std::vector<PantographOnLine>& pantographs,
                                                   double speed) const {
+  build();
   return std::make_unique<FeCoupled>(line_, modal_, pantographs, speed, section());
 }
 

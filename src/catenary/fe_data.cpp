@@ -55,6 +55,10 @@ void FeCatenaryData::validate() const {
     throw InvalidArgument("finite-element catenary: droppers", "nominal_length",
                           fmt::format("needs one value per dropper ({}), got {}", dropper_x.size(),
                                       nominal_dropper_length.size()));
+  for (std::size_t i = 0; i < nominal_dropper_length.size(); ++i)  // issue 38: .nan was accepted
+    if (!(std::isfinite(nominal_dropper_length[i]) && nominal_dropper_length[i] > 0))
+      throw InvalidArgument("finite-element catenary: droppers", fmt::format("nominal_length[{}]", i),
+                            fmt::format("must be a finite length > 0 (m), got {}", nominal_dropper_length[i]));
   positive("droppers", "EA", dropper_EA, "N");
   non_negative("droppers", "mass_per_length", dropper_mass_per_length, "kg/m");
   non_negative("droppers", "clamp_mass_messenger", clamp_mass_messenger, "kg");
@@ -74,6 +78,12 @@ void FeCatenaryData::validate() const {
   non_negative("damping", "stiffness", rayleigh_stiffness, "s");
   non_negative("line", "gravity", gravity, "m/s²");
   positive("integration", "time_step", time_step, "s");
+  if (time_step < 1e-5)  // issue 38: 1e-7 s ended in the multibody integrator's "the model is stiff"
+    throw InvalidArgument("finite-element catenary: integration", "time_step",
+                          fmt::format("must be >= 1e-5 s (each pantograph is stepped with the line: a smaller step "
+                                      "holds its integrator below its own limit; 1e-3 s is the bundled value, and "
+                                      "halving it changes sigma by < 0.1 %), got {} s",
+                                      time_step));
   if (time_step > 0.01)
     throw InvalidArgument("finite-element catenary: integration", "time_step",
                           fmt::format("must be <= 0.01 s (a wire carries waves of tens of hertz), got {} s", time_step));

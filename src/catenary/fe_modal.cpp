@@ -7,6 +7,8 @@
 
 #include <Spectra/SymEigsShiftSolver.h>
 #include <algorithm>
+#include <atomic>
+#include <cstdio>
 #include <cmath>
 #include <deque>
 #include <unordered_map>
@@ -333,11 +335,25 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
   } else {
     if (!make) ++solved_;
     Modes modes = make ? make() : lowest_modes(K, M, cutoff);
-    if (store_) store_->save(K, M, cutoff, modes);
+    if (store_ && !store_->save(K, M, cutoff, modes)) {
+      // Issue 38: once a process, so that a store that cannot be written (then every process solves
+      // again) is not skipped in silence; standard error only.
+      static std::atomic<bool> said{false};
+      if (!said.exchange(true))
+        std::fprintf(stderr, "note: the mode store %s cannot be written; the modes are solved in every process "
+                             "(docs/catenary-fe.md \"Mode store\"; INERTA_CACHE=off to use none)\n",
+                     store_->directory().c_str());
+    }
     md->omega2 = std::move(modes.omega2);
     auto phi = std::make_shared<const FeWindowModes::RowMatrix>(std::move(modes.phi));
     md->set_phi(phi, phi->data(), phi->rows(), phi->cols());
   }
+  if (md->omega2.size() == 0)  // issue 38: a solve without modes would run as a quasi-static line
+    throw ModelError(fmt::format(
+        "finite-element catenary: solver.cutoff = {:g} Hz is below the lowest natural frequency of the line's window: "
+        "the modal solve would keep no mode; give a cut-off of at least a few Hz (the bundled line uses 100 Hz), or "
+        "solver.type=direct",
+        cutoff));
   // K's band Cholesky factor, the band of K⁻¹ and its columns at the special DOFs (residual flexibility).
   for (int j = 0; j < K.outerSize(); ++j)
     for (Sparse::InnerIterator it(K, j); it; ++it) md->kd = std::max(md->kd, static_cast<int>(it.row()) - j);

@@ -3,18 +3,20 @@
 
 #include <fmt/format.h>
 #include <fcntl.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <new>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <vector>
 
 #include "inerta/catenary/fe_modal.hpp"
+#include "inerta/error.hpp"
 
 namespace inerta::catenary {
 
@@ -82,6 +84,19 @@ std::uint64_t checksum(const double* omega2, std::size_t m, const double* phi, s
   return h.h;
 }
 
+// `bytes` from `offset` with pread (interrupted or short reads continued); false on an error or
+// an early end of file.
+bool read_fully(int fd, void* buffer, std::size_t bytes, std::size_t offset) {
+  auto* p = static_cast<char*>(buffer);
+  while (bytes > 0) {
+    const ssize_t r = ::pread(fd, p, std::min<std::size_t>(bytes, std::size_t{1} << 30), static_cast<off_t>(offset));
+    if (r < 0 && errno == EINTR) continue;
+    if (r <= 0) return false;
+    p += r, bytes -= static_cast<std::size_t>(r), offset += static_cast<std::size_t>(r);
+  }
+  return true;
+}
+
 }  // namespace
 
 ModeStore::ModeStore(std::filesystem::path directory, std::uintmax_t max_bytes)
@@ -91,6 +106,11 @@ std::optional<ModeStore> ModeStore::from_environment() {
   if (const char* v = std::getenv("INERTA_CACHE")) {
     const std::string s = v;
     if (s.empty() || s == "off" || s == "0" || s == "no") return std::nullopt;
+    // A relative folder (or "~/x", which no shell expanded) would create folders wherever a run starts.
+    if (!std::filesystem::path(s).is_absolute())
+      throw ModelError(fmt::format("INERTA_CACHE='{}': expected an absolute folder for the mode store (such as {}/"
+                                   "inerta-modes), or off (also 0, no or empty) for none",
+                                   s, std::getenv("HOME") ? std::getenv("HOME") : "/tmp"));
     return ModeStore(s);
   }
   if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return ModeStore(std::filesystem::path(x) / "inerta" / "modes");
@@ -116,32 +136,36 @@ std::filesystem::path ModeStore::file(std::uint64_t key) const { return dir_ / f
 std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M,
                                            double cutoff_hz) const {
   const std::uint64_t k = key(K, M, cutoff_hz);
-  const int fd = ::open(file(k).c_str(), O_RDONLY | O_CLOEXEC);
+  // Never blocks and never maps: O_NONBLOCK so that a FIFO (or any special file) named like a mode
+  // file does not hang open(), then only a regular file is read, with read() into memory of our
+  // own — a file cut short or rewritten while a run uses the modes cannot kill it (no SIGBUS).
+  const int fd = ::open(file(k).c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return std::nullopt;
+  struct Close {
+    int fd;
+    ~Close() { ::close(fd); }
+  } closer{fd};
   struct stat st{};
-  if (::fstat(fd, &st) != 0 || st.st_size < static_cast<off_t>(sizeof(Header))) {
-    ::close(fd);
-    return std::nullopt;
-  }
-  const std::size_t bytes = static_cast<std::size_t>(st.st_size);
-  void* map = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-  ::close(fd);
-  if (map == MAP_FAILED) return std::nullopt;
-  std::shared_ptr<const void> owner(map, [bytes](const void* p) { ::munmap(const_cast<void*>(p), bytes); });
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_size < static_cast<off_t>(sizeof(Header))) return std::nullopt;
   Header hd{};
-  std::memcpy(&hd, map, sizeof hd);
+  if (!read_fully(fd, &hd, sizeof hd, 0)) return std::nullopt;
   if (std::memcmp(hd.magic, kMagic, sizeof kMagic) != 0 || hd.key != k || hd.n != K.rows() || hd.m < 0 ||
       hd.m > hd.n || std::memcmp(&hd.cutoff, &cutoff_hz, 8) != 0)
     return std::nullopt;
   const std::size_t m = static_cast<std::size_t>(hd.m), count = static_cast<std::size_t>(hd.n) * m;
+  const std::size_t bytes = static_cast<std::size_t>(st.st_size);
   if (bytes != sizeof hd + sizeof(double) * (m + count)) return std::nullopt;  // cut short, or extra data
-  const double* omega2 = reinterpret_cast<const double*>(static_cast<const char*>(map) + sizeof hd);
+  std::shared_ptr<double[]> data(new (std::nothrow) double[m + count]);
+  if (!data) return std::nullopt;
+  // Exactly the size fstat gave: a file that shrank meanwhile fails here, one that grew is not read whole.
+  if (!read_fully(fd, data.get(), sizeof(double) * (m + count), sizeof hd)) return std::nullopt;
+  const double* omega2 = data.get();
   if (checksum(omega2, m, omega2 + m, count) != hd.checksum) return std::nullopt;
   StoredModes out;
   out.omega2 = Eigen::Map<const Eigen::VectorXd>(omega2, hd.m);
   out.phi = omega2 + m;
   out.n = hd.n, out.m = hd.m;
-  out.owner = std::move(owner);
+  out.owner = std::move(data);
   return out;
 }
 

@@ -1,6 +1,8 @@
 #include "inerta/io/catenary_file.hpp"
 
 #include <fmt/format.h>
+
+#include <charconv>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -306,6 +308,10 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     const double v = rd.number(n, f.key);
     f.set(d, f.integer ? fe_whole(rd, n, f.key, v) : v);
   }
+  if (const YAML::Node sv = root["solver"]; sv.IsDefined() && sv.IsMap() && !sv["type"].IsDefined())
+    rd.fail(sv, "type",
+            "missing in solver; expected modal or direct (without it the line would be solved directly and the "
+            "section's modal keys — cutoff, window_behind, window_ahead — used for nothing)");
   if (const YAML::Node sv = root["solver"]; sv.IsDefined() && (sv.IsScalar() || (sv.IsMap() && sv["type"].IsDefined()))) {
     const YAML::Node tn = sv.IsScalar() ? sv : sv["type"];
     const std::string t = tn.IsScalar() ? tn.Scalar() : "";
@@ -347,18 +353,24 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
   }
 }
 
+// The number of an override, strictly (issue 38): a decimal number, the whole text — no leading or
+// trailing space, no hexadecimal (std::stod read "0x10" as 16 and " 5" as 5); a leading '+' is allowed.
+bool override_number(const std::string& text, double& v) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  if (b != e && *b == '+' && b + 1 != e && *(b + 1) != '-' && *(b + 1) != '+') ++b;
+  if (b == e) return false;
+  const auto r = std::from_chars(b, e, v, std::chars_format::general);
+  return r.ec == std::errc() && r.ptr == e;
+}
+
 // "section.key=value" on a finite-element catenary; returns false if no field has that name.
 bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string key, const std::string& value,
             const std::string& o) {
   auto number = [&]() {
-    std::size_t used = 0;
     double v = 0;
-    try {
-      v = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != value.size()) throw ModelError(fmt::format("--set '{}': '{}' is not a number", o, value));
+    if (!override_number(value, v))
+      throw ModelError(fmt::format("--set '{}': '{}' is not a number (a decimal number such as 16000 or 1.5e4)", o, value));
     return v;
   };
   auto whole = [&](double v) {
@@ -426,14 +438,7 @@ void apply_override(Parsed& c, const std::string& o) {
     throw ModelError(fmt::format("--set '{}': expected section.key=value, e.g. catenary.kc0=5000", o));
   std::string section = o.substr(0, dot), key = o.substr(dot + 1, eq - dot - 1), value = o.substr(eq + 1);
   double v = 0;
-  bool is_number = true;
-  try {
-    std::size_t used = 0;
-    v = std::stod(value, &used);
-    is_number = used == value.size();
-  } catch (const std::exception&) {
-    is_number = false;
-  }
+  const bool is_number = override_number(value, v);
   if (c.type == Type::FiniteElement && section != "contact") {
     if (!set_fe(c.fe, section, key, value, o))
       throw ModelError(fmt::format("--set '{}': unknown key; expected {}contact.type, contact.stiffness, contact.damping",

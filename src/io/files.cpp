@@ -53,18 +53,37 @@ std::string reason() { return std::strerror(errno); }
 }  // namespace
 
 std::string read_input_text(const std::string& path, const std::string& what) {
+  // Opened without blocking (a FIFO named as an input must not hang open()), then checked on the
+  // descriptor itself: what is read is what was checked.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) throw ModelError(fmt::format("{}: cannot open the {} ({})", path, what, reason()));
+  struct Close {
+    int fd;
+    ~Close() { ::close(fd); }
+  } closer{fd};
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw ModelError(fmt::format("{}: cannot open the {} ({})", path, what, reason()));
+  if (::fstat(fd, &st) != 0) throw ModelError(fmt::format("{}: cannot open the {} ({})", path, what, reason()));
   if (!S_ISREG(st.st_mode))
     throw ModelError(fmt::format("{}: not a regular file ({}); expected the {}", path,
                                  S_ISDIR(st.st_mode) ? "a folder" : "a device, FIFO or socket", what));
   if (static_cast<std::size_t>(st.st_size) > max_input_bytes)
     throw ModelError(fmt::format("{}: {} bytes, larger than the 256 MiB accepted for the {}", path, st.st_size, what));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ModelError(fmt::format("{}: cannot open the {}", path, what));
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string text;
+  char buffer[65536];
+  for (;;) {
+    const ssize_t r = ::read(fd, buffer, sizeof buffer);
+    if (r < 0 && errno == EINTR) continue;
+    if (r < 0) throw ModelError(fmt::format("{}: cannot read the {} ({})", path, what, reason()));
+    if (r == 0) break;
+    text.append(buffer, static_cast<std::size_t>(r));
+    if (text.size() > max_input_bytes)  // grew while being read
+      throw ModelError(fmt::format("{}: larger than the 256 MiB accepted for the {}", path, what));
+  }
+  // Text files hold no NUL byte: a binary file (an image, a compiled program) is named as such, not
+  // parsed into a YAML error quoting its bytes.
+  if (const auto nul = text.find('\0'); nul != std::string::npos)
+    throw ModelError(fmt::format("{}: a binary file (a NUL byte at offset {}), not the {} (YAML text)", path, nul, what));
+  return text;
 }
 
 void check_output_path(const std::string& out, const std::vector<std::string>& inputs) {
@@ -187,7 +206,9 @@ void prepare_output_folder(const std::string& dir, const std::vector<std::string
 }
 
 void remove_partial_outputs_on_signal() {
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) std::signal(sig, remove_partial_and_die);
+  // SIGBUS too: a file the process maps that is cut short underneath (no mode file is mapped any more,
+  // catenary/mode_store.hpp; a library's mapping might be) still leaves no partial output.
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGBUS}) std::signal(sig, remove_partial_and_die);
 }
 
 }  // namespace inerta::io

@@ -139,6 +139,15 @@ void Loader::ground(const YAML::Node& g) {
 void Loader::bodies(const YAML::Node& n) {
   if (!n.IsDefined()) return;
   if (!n.IsSequence()) rd.fail(n, "bodies", "expected a list of bodies");
+  // The system matrix of eq. 4.12 is dense (coordinates + constraints squared): 10 000 coordinates
+  // are ≈ 1 GB of it; 100 000 bodies ended in std::bad_alloc (issue 38).
+  const std::size_t per_body = model.spatial() ? 7 : 3, max_coordinates = 10000;
+  if (n.size() * per_body > max_coordinates)
+    rd.fail(n, "bodies",
+            fmt::format("{} bodies ({} coordinates): at most {} coordinates ({} bodies in {}D) — the system matrix of "
+                        "eq. 4.12 is dense",
+                        n.size(), n.size() * per_body, max_coordinates, max_coordinates / per_body,
+                        model.spatial() ? 3 : 2));
   names_unique(n, "body");
   for (const auto& b : n) {
     mbs::Body body = model.spatial() ? body3(rd, b) : body2(rd, b);

@@ -21,6 +21,7 @@
 #include "inerta/io/files.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "lumped_pantograph_file.hpp"
+#include "inerta/io/yaml_errors.hpp"
 #include "model_loader.hpp"
 
 namespace inerta::io {
@@ -85,7 +86,7 @@ pantograph::Pantograph parse_file(const std::string& text, const std::string& so
   try {
     root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", source, e.mark.line + 1, e.msg));
+    yaml_syntax_error(source, e);
   }
   if (detail::is_lumped_pantograph(root)) {  // a lumped n-mass pantograph (lumped_pantograph_file.cpp)
     try {
@@ -177,7 +178,7 @@ pantograph::LumpedPantographData load_lumped_pantograph_data(const std::string& 
   try {
     root = YAML::Load(read_text(path));
   } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+    yaml_syntax_error(path, e);
   }
   if (!detail::is_lumped_pantograph(root))
     throw ModelError(fmt::format("{}: not a lumped pantograph file (expected a top-level 'lumped_pantograph:')", path));

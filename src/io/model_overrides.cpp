@@ -11,6 +11,7 @@
 #include "inerta/io/files.hpp"
 #include "inerta/io/model_file.hpp"
 #include "lumped_pantograph_file.hpp"
+#include "inerta/io/yaml_errors.hpp"
 #include "model_loader.hpp"
 
 namespace inerta::io {
@@ -62,16 +63,22 @@ Slot locate_slot(YAML::Node& root, const std::string& dotted, const std::functio
   YAML::Node cur;
   bool found = false, joint = false;
   std::string names;
+  std::vector<std::string> kinds;  // every kind the name is, to refuse an ambiguous one (issue 38)
   for (const char* section : kSections) {
     const YAML::Node list = static_cast<const YAML::Node&>(root)[section];
     if (!list.IsDefined() || !list.IsSequence()) continue;
-    for (std::size_t i = 0; i < list.size() && !found; ++i) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
       const YAML::Node item = list[i];
       if (!item.IsMap() || !item["name"].IsScalar()) continue;
-      names += (names.empty() ? "" : ", ") + item["name"].Scalar();
-      if (item["name"].Scalar() == path[0]) cur.reset(item), found = true, joint = std::string(section) == "joints";
+      if (!found) names += (names.empty() ? "" : ", ") + item["name"].Scalar();
+      if (item["name"].Scalar() != path[0]) continue;
+      kinds.push_back(std::string(section) == "forces" ? "a force element" : std::string(section) == "bodies" ? "a body" : "a joint");
+      if (!found) cur.reset(item), found = true, joint = std::string(section) == "joints";
     }
   }
+  if (kinds.size() > 1)
+    fail(fmt::format("'{}' names {} and {}: the override cannot tell which; give them different names", path[0],
+                     kinds[0], kinds[1]));
   if (!found) fail(fmt::format("no force element, body or joint named '{}'; names: {}", path[0], names));
   // drive.KEY → drive.motion.KEY when the joint has no KEY of its own.
   std::string leaf_key = path.back();
@@ -171,7 +178,7 @@ std::optional<double> model_value(const std::string& text, const std::string& so
   try {
     root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", source, e.mark.line + 1, e.msg));
+    yaml_syntax_error(source, e);
   }
   if (detail::is_lumped_pantograph(root)) return detail::lumped_value(root, source, key);
   detail::Slot s = detail::locate_slot(root, key, [&](const std::string& what) {
@@ -198,7 +205,7 @@ std::pair<std::vector<std::string>, std::vector<std::string>> split_overrides(co
   try {
     root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+    yaml_syntax_error(path, e);
   }
   for (const std::string& o : overrides) {
     const std::size_t dot = std::min(o.find('.'), o.find('=')), eq = o.find('=');

@@ -217,6 +217,8 @@ optim::ModelStudy read(const std::string& path) {
   for (const auto& l : s.all ? YAML::Node(YAML::NodeType::Sequence) : ls) {
     if (!is_scalar(l)) yaml_fail(path, l, "layouts", "expected a network expression or a layout name");
     const std::string name = l.Scalar();
+    if (std::find(s.layouts.begin(), s.layouts.end(), name) != s.layouts.end())
+      yaml_fail(path, l, "layouts", fmt::format("'{}' is given twice; each layout is optimised once", name));
     try {
       network::parse(network::find_layout(name) ? network::find_layout(name)->expression : name);
     } catch (const network::NetworkError& e) {

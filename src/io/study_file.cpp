@@ -117,7 +117,7 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
   }
 }
 
-optim::Study read_study(const std::string& path, const YAML::Node& root, bool coarse) {
+optim::Study read_study(const std::string& path, const YAML::Node& root, bool coarse, bool operating_lengths) {
   if (!root.IsMap()) yaml_fail(path, root, "", "expected a study (model, catenary, catenaries, speeds, layouts)");
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string k = it->first.as<std::string>();
@@ -185,11 +185,17 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
   if (s.all) {
     s.layouts = network::enumerate(*s.all);
     if (s.layouts.empty()) yaml_fail(path, root["networks"], "networks", "no network satisfies these options");
+  } else if (!ls.IsDefined()) {  // (IsSequence of a missing key threw yaml-cpp's "invalid node", line 0)
+    yaml_fail(path, root, "layouts", "missing; expected a list of layouts (S2-1, b|c|k, ...), or all (with networks: {max_elements: N})");
   } else if (!ls.IsSequence() || ls.size() == 0) {
-    yaml_fail(path, ls.IsDefined() ? ls : root, "layouts", "expected a list of layouts, or all (with networks: {max_elements: N})");
+    yaml_fail(path, ls, "layouts", "expected a list of layouts, or all (with networks: {max_elements: N})");
   }
   for (const auto& l : s.all ? YAML::Node(YAML::NodeType::Sequence) : ls) {
+    if (!l.IsScalar())
+      yaml_fail(path, l, "layouts", "expected a layout name (S2-1, S2-default, ...) or a network expression, not a list or a mapping");
     const std::string name = l.as<std::string>();
+    if (std::find(s.layouts.begin(), s.layouts.end(), name) != s.layouts.end())
+      yaml_fail(path, l, "layouts", fmt::format("'{}' is given twice; each layout is optimised once", name));
     try {
       network::parse(network::find_layout(name) ? network::find_layout(name)->expression : name);
     } catch (const network::NetworkError& e) {
@@ -265,7 +271,7 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
         if (it->first.as<std::string>() != "support_uplift" && it->first.as<std::string>() != "acceptance") l[it->first] = it->second;
       merged["limits"] = l;
     }
-    auto sub = std::make_shared<optim::Study>(read_study(path, merged, true));
+    auto sub = std::make_shared<optim::Study>(read_study(path, merged, true, operating_lengths));
     sub->name = s.name + " (coarse)";
     s.refine.starts = 0;
     s.refine.initial_step = 0.25, s.refine.min_step = 0.02, s.refine.max_evaluations = 60;
@@ -276,7 +282,7 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     s.coarse = std::move(sub);
   }
   try {
-    s.operating_length = optim::operating_lengths(s);
+    if (operating_lengths) s.operating_length = optim::operating_lengths(s);
   } catch (const ModelError& e) {
     yaml_fail(path, root["model"], "model", e.what());
   }
@@ -284,9 +290,9 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
 }
 }  // namespace
 
-optim::Study load_study(const std::string& path) {
+optim::Study load_study(const std::string& path, bool operating_lengths) {
   try {
-    return read_study(path, yaml_load_file(path, "study file"), false);
+    return read_study(path, yaml_load_file(path, "study file"), false, operating_lengths);
   } catch (const YAML::Exception& e) {  // a wrong node type (a map where a layout name belongs, ...)
     throw ModelError(
         fmt::format("{}:{}: {}; expected the study file format of docs/model-format.md", path, e.mark.line + 1, e.msg));

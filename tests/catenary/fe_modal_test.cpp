@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <Eigen/Eigenvalues>
@@ -329,6 +330,60 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   fs::remove_all(dir);
 }
 
+namespace {
+// A small stored decomposition (any numbers: the store checks matrices, sizes and checksum, not physics).
+struct SmallStore {
+  std::filesystem::path dir;
+  Eigen::SparseMatrix<double> K, M;
+  catenary::Modes modes;
+  SmallStore(const std::string& tag) : dir(std::filesystem::temp_directory_path() / fmt::format("inerta-{}-{}", tag, ::getpid())) {
+    std::filesystem::remove_all(dir);
+    const int n = 400, m = 300;
+    K.resize(n, n), M.resize(n, n);
+    for (int i = 0; i < n; ++i) K.insert(i, i) = 2.0 + i, M.insert(i, i) = 1.0;
+    modes.omega2 = Eigen::VectorXd::LinSpaced(m, 1, m);
+    modes.phi.resize(n, m);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < m; ++j) modes.phi(i, j) = std::sin(0.01 * i * j + 0.3);
+  }
+  ~SmallStore() { std::filesystem::remove_all(dir); }
+};
+}  // namespace
+
+TEST(FeModalStore, AFileCutShortAfterLoadingDoesNotTouchTheRun) {
+  // The modes read are the run's own memory: cutting the file to nothing (and removing it) after
+  // loading leaves every value readable and unchanged (a mapped file would kill the process with
+  // SIGBUS here).
+  SmallStore s("cut");
+  const catenary::ModeStore store(s.dir);
+  ASSERT_TRUE(store.save(s.K, s.M, 50.0, s.modes));
+  const std::filesystem::path f = store.file(catenary::ModeStore::key(s.K, s.M, 50.0));
+  auto loaded = store.load(s.K, s.M, 50.0);
+  ASSERT_TRUE(loaded);
+  std::filesystem::resize_file(f, 0);
+  std::filesystem::remove(f);
+  ASSERT_EQ(loaded->n, s.modes.phi.rows());
+  ASSERT_EQ(loaded->m, s.modes.phi.cols());
+  for (Eigen::Index i = 0; i < loaded->n; ++i)
+    for (Eigen::Index j = 0; j < loaded->m; ++j) ASSERT_EQ(loaded->phi[i * loaded->m + j], s.modes.phi(i, j));
+  EXPECT_EQ(loaded->omega2, s.modes.omega2);
+  EXPECT_FALSE(store.load(s.K, s.M, 50.0));  // gone: solved again
+}
+
+TEST(FeModalStore, AFifoNamedLikeAModeFileIsIgnored) {
+  // open() of a FIFO without a writer blocks for ever; the store never waits on one (nor reads a
+  // folder of that name): no modes, so they are solved, and saving replaces it by a regular file.
+  SmallStore s("fifo");
+  const catenary::ModeStore store(s.dir);
+  std::filesystem::create_directories(s.dir);
+  const std::filesystem::path f = store.file(catenary::ModeStore::key(s.K, s.M, 50.0));
+  ASSERT_EQ(::mkfifo(f.c_str(), 0600), 0);
+  EXPECT_FALSE(store.load(s.K, s.M, 50.0));
+  std::filesystem::remove(f);
+  std::filesystem::create_directory(f);
+  EXPECT_FALSE(store.load(s.K, s.M, 50.0));
+}
+
 TEST(FeModalStore, TheEnvironmentChoosesTheDirectoryOrNone) {
   const char* saved = std::getenv("INERTA_CACHE");
   const std::string keep = saved ? saved : "";
@@ -337,6 +392,15 @@ TEST(FeModalStore, TheEnvironmentChoosesTheDirectoryOrNone) {
   ::setenv("INERTA_CACHE", "/tmp/somewhere", 1);
   ASSERT_TRUE(catenary::ModeStore::from_environment());
   EXPECT_EQ(catenary::ModeStore::from_environment()->directory(), std::filesystem::path("/tmp/somewhere"));
+  for (const char* none : {"0", "no", ""}) {
+    ::setenv("INERTA_CACHE", none, 1);
+    EXPECT_FALSE(catenary::ModeStore::from_environment()) << none;
+  }
+  // Relative values (and "~/x", which no shell expanded) would create folders wherever a run starts.
+  for (const char* relative : {"cache", "~/x", "./modes"}) {
+    ::setenv("INERTA_CACHE", relative, 1);
+    EXPECT_THROW(catenary::ModeStore::from_environment(), ModelError) << relative;
+  }
   ::unsetenv("INERTA_CACHE");
   const char* xdg = std::getenv("XDG_CACHE_HOME");
   const std::string keep_xdg = xdg ? xdg : "";

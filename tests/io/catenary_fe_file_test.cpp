@@ -203,6 +203,9 @@ TEST(FeCatenaryFile, EveryErrorNamesTheFileLineAndKey) {
   expect(replace(kLine, "tension: 16000", "tension: -16000"), ":3: 'tension': must be > 0 (N), got -16000 in messenger");
   expect(replace(kLine, "tension: 22000", "tension: .nan"), ":5: 'tension': must be > 0 (N), got nan in contact_wire");
   expect(replace(kLine, "presag: [0.01, 0.03, 0.01]", "presag: [0.01, 0.03]"), ":10: 'presag': needs one value per dropper (3), got 2");
+  // Issue 38: a NaN nominal length was accepted.
+  expect(replace(kLine, "presag: [0.01, 0.03, 0.01]\n", "presag: [0.01, 0.03, 0.01]\n  nominal_length: [.nan, 1, 1]\n"),
+         ":11: 'nominal_length[0]': must be a finite length > 0 (m), got nan");
   expect(replace(kLine, "presag: [0.01, 0.03, 0.01]", "presag: [0.01, 2, 0.01]"), ":10: 'presag[1]': must be finite and smaller than the encumbrance");
   expect(replace(kLine, "  x: [10, 25, 40]\n", "  x:\n    - 10\n    - 60\n    - 40\n"), ":11: 'x[1]': must increase strictly inside (0, span = 50 m)");
   expect(replace(kLine, "  EA: 200000\n", "  EA: 200000\n  nominal_length: [1]\n"), ":12: 'nominal_length': needs one value per dropper");
@@ -271,6 +274,19 @@ TEST(FeCatenaryFile, SolverSectionAndItsErrors) {
   EXPECT_NE(e.find("window_behind"), std::string::npos) << e;
   e = error_of(kLine + "solver: {windows: 3}\n");
   EXPECT_NE(e.find("windows"), std::string::npos) << e;
+  // Override numbers are decimal and the whole text (issue 38: std::stod took 0x10 as 16 and " 5" as 5).
+  for (const std::string bad : {"solver.cutoff=0x10", "messenger.tension= 17000", "messenger.tension=17000 ", "solver.cutoff=1e2x"}) {
+    e = error_of(kLine + "solver: modal\n", {bad});
+    EXPECT_NE(e.find("is not a number"), std::string::npos) << bad << ": " << e;
+  }
+  EXPECT_EQ(io::read_fe_catenary_data(write(kLine + "solver: modal\n"), {"solver.cutoff=+80"}).modal_cutoff, 80);
+  // A structural step of 1e-7 s ended in the pantograph integrator's "the model is stiff" (issue 38).
+  e = error_of(kLine, {"integration.time_step=1e-7"});
+  EXPECT_NE(e.find("must be >= 1e-5 s"), std::string::npos) << e;
+  // A solver section without its type (issue 38): not the direct solve in silence.
+  e = error_of(kLine + "solver: {cutoff: 80}\n");
+  EXPECT_NE(e.find(":14:"), std::string::npos) << e;
+  EXPECT_NE(e.find("'type': missing in solver; expected modal or direct"), std::string::npos) << e;
   e = error_of(kLine, {"solver.type=quick"});
   EXPECT_NE(e.find("expected solver.type=modal or direct"), std::string::npos) << e;
   e = error_of(kLine, {"solver.cutoff=-5"});

@@ -51,4 +51,35 @@ TEST(StudyErrors, AnErrorThatIsNotNumericalStopsTheSearchAtOnce) {
   EXPECT_THROW(optim::optimise_layout(s, "b|k", [&](int, int, double) { ++polls; }), ModelError);
   EXPECT_EQ(polls, 0);
 }
+
+TEST(StudyErrors, ALayoutTwiceOrAsAMappingIsAnErrorAtItsLine) {
+  // Issue 38: [S2-5, S2-5] optimised the same layout twice; a mapping gave yaml-cpp's "bad conversion".
+  auto error_of = [](const std::string& layouts) -> std::string {
+    std::string text = kStudy;
+    text.replace(text.find("layouts: [k]"), 12, "layouts: " + layouts);
+    try {
+      io::load_study(inerta::testing::write_study("study_errors3.yaml", text));
+    } catch (const ModelError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  std::string e = error_of("[S2-5, S2-5]");
+  EXPECT_NE(e.find(":6: 'layouts': 'S2-5' is given twice"), std::string::npos) << e;
+  e = error_of("[{S2-5: 1}]");
+  EXPECT_NE(e.find(":6: 'layouts': expected a layout name"), std::string::npos) << e;
+  e = error_of("[]");
+  EXPECT_NE(e.find(":6: 'layouts': expected a list of layouts"), std::string::npos) << e;
+  // Without layouts at all: the key named at the study's line, not yaml-cpp's ":0: invalid node".
+  std::string text = kStudy;
+  text.erase(text.find("layouts: [k]\n"));
+  try {
+    io::load_study(inerta::testing::write_study("study_errors4.yaml", text));
+    ADD_FAILURE() << "accepted";
+  } catch (const ModelError& err) {
+    EXPECT_NE(std::string(err.what()).find(":1: 'layouts': missing; expected a list of layouts"), std::string::npos)
+        << err.what();
+  }
+}
+
 }  // namespace test_optim_study_errors

@@ -72,9 +72,10 @@ struct SupportUplift {
 
 /// For each support with x_from ≤ support_x[k] ≤ x_to, in the order given: its maximum uplift over
 /// the whole history and when it happened. `uplift[i][k]` is the uplift of support k at time t[i]
-/// (one row a sample, as catenary::Coupled::support_uplift() gives it). InvalidArgument for an empty
-/// history, a count of rows other than t's, a row whose length is not the supports' count,
-/// x_from > x_to, or a value that is not finite. No support in the section gives an empty result.
+/// (one row a sample, as catenary::Coupled::support_uplift() gives it). InvalidArgument for a count
+/// of rows other than t's, x_from > x_to, an empty history (unless there is no support at all: a
+/// line of one span), a row whose length is not the supports' count, or a value that is not finite.
+/// No support in the section gives an empty result.
 std::vector<SupportUplift> support_uplift(const std::vector<double>& t, const std::vector<double>& support_x,
                                           const std::vector<std::vector<double>>& uplift, double x_from,
                                           double x_to);

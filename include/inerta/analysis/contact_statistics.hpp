@@ -32,10 +32,26 @@ struct RunOptions {
   bool fixed_spans = false;  ///< run exactly min_spans spans (no convergence test)
   double filter_cutoff = 20;  ///< Hz: a finite line's filtered statistics (contact_quality.hpp)
   int filter_order = 4;
+  bool allow_supercritical = false;  ///< run above the catenary's wave speed (check_run_speed)
 };
 /// Each speed of a sweep (the CLI's --speeds, in its unit; Python's speeds, m/s): "speeds: 0 is out of
 /// range; expected > 0".
 inline constexpr NumberRule speed_rule{1e-300, 1e300, "> 0"};
+
+/// The fastest run accepted, m/s (3600 km/h: beyond any train; a faster run's statistics are of a
+/// line that barely moves, σ → 0).
+inline constexpr double max_run_speed = 1000;
+/// The speed of a run on `catenary` (m/s), whatever calls it (simulate_coupled, run_speed, sweep, a
+/// study): at most max_run_speed; a run of `spans` spans (a finite line: its length; 0: a run whose
+/// t_end is given, not checked) within 1e7 s
+/// (t_end_rule's limit, so that no speed makes a run without end); and, unless
+/// `allow_supercritical`, not above the catenary's wave speed. ModelError naming the speed and the
+/// limit (the CLI's exit 2).
+void check_run_speed(const catenary::Catenary& catenary, double speed, int spans, bool allow_supercritical);
+/// From 70 % of the catenary's wave speed (the usual design rule) up to it or beyond: the warning
+/// the CLI prints on standard error ("warning: 600 km/h is 130 % of the contact wire's wave speed
+/// …"); else "".
+std::string speed_warning(const catenary::Catenary& catenary, double speed);
 
 /// The rules of RunOptions: spans 1 … 10000 (max_spans ≥ min_spans), settled_spans 1 … 1000,
 /// tolerance 0 … 1, samples_per_span 10 … 1e6. InvalidArgument "max_spans: 0 is out of range; …".

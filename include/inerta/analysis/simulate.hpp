@@ -73,6 +73,7 @@ struct CoupledOptions {
   solve::IntegratorOptions integrator;
   double filter_cutoff = 20;  ///< Hz: a finite line's filtered statistics (contact_quality.hpp)
   int filter_order = 4;
+  bool allow_supercritical = false;  ///< run above the catenary's wave speed (check_run_speed)
 };
 /// The rules of CoupledOptions (the CLI's --spans, --t-end, --sample; Python's simulate_coupled).
 inline constexpr CountRule spans_rule{1, 10000};

@@ -102,6 +102,9 @@ class Catenary {
   /// Length of the line, m: a run ends when the leading pantograph reaches it (infinite for a
   /// periodic catenary, which runs until its statistics settle).
   virtual double line_length() const { return std::numeric_limits<double>::infinity(); }
+  /// The speed of transverse waves in the contact wire, sqrt(T/ρA), m/s: a pantograph must stay
+  /// well below it (infinite for a catenary without wires, the lumped and profile models).
+  virtual double wave_speed() const { return std::numeric_limits<double>::infinity(); }
   /// The analysis section of a finite line (EN 50317 statistics are taken there).
   virtual Section section() const { return {0, line_length()}; }
   /// m: the line's design limit of the contact wire's uplift at its registrations (acceptance
@@ -122,10 +125,21 @@ class Catenary {
   virtual void prepare(const std::vector<PantographOnLine>& /*pantographs*/) const {}
   /// A rough wall time (s) of one run with these pantographs at `speed` (m/s) for `t_end` s (≤ 0:
   /// until the leading pantograph reaches the line's end), on the 2-core reference machine
-  /// (docs/benchmarks.md "Run-time estimate"): a guide for a warning before a long run, not a bound.
+  /// (docs/benchmarks.md "Run-time estimate"): a guide for the cost guard (analysis/cost_guard.hpp),
+  /// not a bound. Includes the one-off work not yet done (estimated_setup_seconds).
   /// 0 for a catenary whose runs are cheap (every lumped line).
   virtual double estimated_seconds(const std::vector<PantographOnLine>& /*pantographs*/, double /*speed*/,
                                    double /*t_end*/) const {
+    return 0;
+  }
+  /// The part of estimated_seconds done once for every run of this catenary and not yet done (a
+  /// finite-element line's setup and first modes): a sweep counts it once.
+  virtual double estimated_setup_seconds(const std::vector<PantographOnLine>& /*pantographs*/) const { return 0; }
+  /// The memory (bytes) a run with these pantographs at `speed` for `t_end` (≤ 0: to the line's end)
+  /// keeps (a finite-element line's matrices, its windows' modes and the supports' history of a
+  /// simulation; speed ≤ 0: a sweep's runs, which keep no history); 0 where that is small.
+  virtual double estimated_bytes(const std::vector<PantographOnLine>& /*pantographs*/, double /*speed*/,
+                                 double /*t_end*/) const {
     return 0;
   }
 

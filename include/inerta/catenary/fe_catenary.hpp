@@ -28,6 +28,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <array>
+#include <atomic>
+#include <mutex>
 #include <memory>
 #include <string>
 #include <vector>
@@ -272,31 +274,61 @@ struct LumpedFit {
 /// span: 1-based, 0 = the middle span. points: samples along the span (>= 16).
 LumpedFit fit_lumped(const FeLine& line, int span = 0, int points = 220);
 
+/// The cost of work on a finite-element line before it starts, from its data alone (nothing is
+/// built), on the 2-core reference machine (docs/benchmarks.md "Run-time estimate"): a guide for
+/// the cost guard, not a bound.
+struct FeCostEstimate {
+  double unknowns = 0;  ///< of the line's mesh (FeLine::n_dofs() without building it)
+  double setup = 0;     ///< s: mesh, matrices, form-finding and factorisation of the line
+  double modes = 0;     ///< s: the first decomposition of the modal solve's windows (0: direct solve)
+  double run = 0;       ///< s: the time steps
+  double bytes = 0;     ///< memory kept: the line's matrices and factor, the windows' modes
+  double total() const { return setup + modes + run; }
+};
+/// The unknowns of the line's mesh (both wires, w and θ at every node, w fixed at the ends).
+double mesh_unknowns(const FeCatenaryData& d);
+/// A run with pantographs at x0 (m) at `speed` (m/s) for t_end s (≤ 0: until the leading one
+/// reaches the line's end); `setup`/`modes`: include building the line / its first modes.
+FeCostEstimate estimate_cost(const FeCatenaryData& d, const std::vector<double>& x0, double speed, double t_end,
+                             bool setup = true, bool modes = true);
+
 /// The finite-element catenary as a catenary type (co-simulated: the line is stepped by
 /// FeIntegrator, each pantograph's multibody model by the multibody integrator; see fe_coupled).
+/// The line (mesh, form-finding, factorisation) is built when first needed, not by the constructor,
+/// so that a run's cost can be estimated — and refused — before any of that work (the cost guard).
 class FeCatenary final : public Catenary {
  public:
+  /// Checks the data (FeCatenaryData::validate); builds nothing.
   explicit FeCatenary(FeCatenaryData data);
-  const FeLine& line() const { return *line_; }
+  const FeCatenaryData& data() const { return data_; }
+  const FeLine& line() const;  ///< built on first use (thread-safe)
   std::string describe() const override;
-  double span() const override { return line_->data().span; }
+  double span() const override { return data_.span; }
   int max_pantographs() const override { return 64; }
-  double line_length() const override { return line_->length(); }
+  double line_length() const override;
+  double wave_speed() const override { return data_.contact_wire.wave_speed(); }
   Section section() const override;
   double uplift_limit() const override { return line_->data().registration_uplift_limit; }
   std::shared_ptr<const Catenary> mean() const override;
   /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep
   /// or a study decomposes a window once); nullptr with solver: direct.
-  std::shared_ptr<const class FeModalLine> modal() const { return modal_; }
+  std::shared_ptr<const class FeModalLine> modal() const;
   void prepare(const std::vector<PantographOnLine>& pantographs) const override;
   double estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const override;
+  double estimated_setup_seconds(const std::vector<PantographOnLine>& pantographs) const override;
+  double estimated_bytes(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const override;
 
  protected:
   std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs, double speed) const override;
 
  private:
-  std::shared_ptr<const FeLine> line_;
-  std::shared_ptr<const class FeModalLine> modal_;
+  void build() const;
+  FeCostEstimate estimate(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const;
+  FeCatenaryData data_;
+  mutable std::once_flag built_;
+  mutable std::atomic<bool> line_ready_{false};
+  mutable std::shared_ptr<const FeLine> line_;
+  mutable std::shared_ptr<const class FeModalLine> modal_;
 };
 
 /// The direct solve of the whole line (FeIntegrator) as a run's solver.

@@ -8,10 +8,10 @@
 // data, so a file that does not match (another line, a truncated or damaged file) is ignored and the
 // modes are computed. Files are written under a temporary name and renamed (processes sharing the
 // directory never read a partial file). The loaded modes are the computed ones bit for bit, so
-// results do not depend on whether the store was used. A file is read by mapping it into memory
-// (read-only, private): no copy, and processes on one machine share its pages. Files are replaced
-// by renaming and removed by unlinking, so a mapping stays valid; a file cut short by hand while a
-// run maps it is the one thing the store cannot guard against.
+// results do not depend on whether the store was used. A file is read with read() into memory of the
+// run's own (not mapped): a file cut short, rewritten or removed while a run uses its modes cannot
+// stop the run; only a regular file is read, opened without blocking (a FIFO named like a mode file
+// is ignored, never waited on).
 #include <Eigen/Sparse>
 #include <cstdint>
 #include <filesystem>
@@ -22,8 +22,7 @@ namespace inerta::catenary {
 
 struct Modes;
 
-/// Modes read from the store: ω² and Φ (n × m, row-major) in a mapping of the file kept alive by
-/// `owner`.
+/// Modes read from the store: ω² and Φ (n × m, row-major) in a buffer kept alive by `owner`.
 struct StoredModes {
   Eigen::VectorXd omega2;
   std::shared_ptr<const void> owner;
@@ -34,8 +33,9 @@ struct StoredModes {
 class ModeStore {
  public:
   explicit ModeStore(std::filesystem::path directory, std::uintmax_t max_bytes = std::uintmax_t{4} << 30);
-  /// From the environment: INERTA_CACHE=off (or empty) → none; INERTA_CACHE=DIR → DIR; unset →
-  /// $XDG_CACHE_HOME/inerta/modes, else $HOME/.cache/inerta/modes; none if neither is set.
+  /// From the environment: INERTA_CACHE=off, 0, no or empty → none; INERTA_CACHE=DIR (absolute;
+  /// a relative one, or "~/x", is a ModelError) → DIR; unset → $XDG_CACHE_HOME/inerta/modes, else
+  /// $HOME/.cache/inerta/modes; none if neither is set.
   static std::optional<ModeStore> from_environment();
   const std::filesystem::path& directory() const { return dir_; }
 

@@ -61,7 +61,7 @@ const std::vector<std::string>& study_output_names();
 /// first (other files are kept). Then checks that it is writable.
 void prepare_output_folder(const std::string& dir, const std::vector<std::string>& owned, bool force);
 
-/// Installs SIGINT/SIGTERM/SIGHUP handlers that remove the temporary files of the OutputFiles still
+/// Installs SIGINT/SIGTERM/SIGHUP/SIGBUS handlers that remove the temporary files of the OutputFiles still
 /// open, then end the process with the signal's default action (the CLI; not the Python module).
 void remove_partial_outputs_on_signal();
 

@@ -8,6 +8,9 @@
 namespace inerta::io {
 
 /// Reads a study file; paths in it are relative to the file. ModelError with file:line:key.
-optim::Study load_study(const std::string& path);
+/// `operating_lengths`: also the actuator's length at each catenary's static equilibrium
+/// (Study::operating_length, optim::operating_lengths — what optimising needs; false: the file
+/// read and checked only, without coupling anything: the fuzz target, docs/fuzzing.md).
+optim::Study load_study(const std::string& path, bool operating_lengths = true);
 
 }  // namespace inerta::io

@@ -2,6 +2,7 @@
 // Small helpers shared by the YAML readers of catenary and study files: every error is a
 // ModelError "file:line: 'key': what is wrong; expected ...".
 #include <fmt/format.h>
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
@@ -41,6 +42,16 @@ inline void check_unique_keys(const std::string& file, const YAML::Node& n, cons
   }
 }
 
+/// ModelError "file:line: YAML syntax error: …" of a parser error; nesting beyond the parser's depth
+/// (yaml-cpp says "bad file") is named as such (issue 38).
+[[noreturn]] inline void yaml_syntax_error(const std::string& file, const YAML::ParserException& e) {
+  if (dynamic_cast<const YAML::DeepRecursion*>(&e))
+    throw ModelError(fmt::format("{}:{}: YAML nested too deeply to read (lists or mappings within one another, "
+                                 "thousands of levels); Inerta's files nest a few levels",
+                                 file, e.mark.line + 1));
+  throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", file, e.mark.line + 1, e.msg));
+}
+
 /// Reads a YAML file: ModelError "file: cannot open the <what>" or "file:line: YAML syntax error: …".
 inline YAML::Node yaml_load_file(const std::string& path, const std::string& what) {
   const std::string text = read_input_text(path, what);
@@ -49,7 +60,7 @@ inline YAML::Node yaml_load_file(const std::string& path, const std::string& wha
     check_unique_keys(path, root);
     return root;
   } catch (const YAML::ParserException& e) {
-    throw ModelError(fmt::format("{}:{}: YAML syntax error: {}", path, e.mark.line + 1, e.msg));
+    yaml_syntax_error(path, e);
   }
 }
 
