@@ -10,6 +10,7 @@
 
 #include "checks.hpp"
 #include "inerta/analysis/aero_fit.hpp"
+#include "inerta/analysis/cost_guard.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/acceptance_file.hpp"
@@ -82,7 +83,7 @@ namespace {
 
 struct AeroFitArgs {
   std::string model, catenary, criteria, unit = "ms", speeds;
-  double speed = 0;
+  double speed = 0, max_seconds = analysis::default_max_seconds;
   std::vector<std::string> sets;
 };
 AeroFitArgs aero_args;
@@ -116,6 +117,18 @@ int aero_fit() {
   o.filter_cutoff = c.filter_cutoff, o.filter_order = c.filter_order;
   fmt::print("aero-fit: {} on {}; target mean contact force at {:.4g} km/h: {:.2f} N ({}: {:g} v² + {:g} v + {:g}, v in km/h)\n",
              a.model, cat.catenary->describe(), v * 3.6, target, c.name, c.target.v2, c.target.v1, c.target.v0);
+  {  // the cost guard (analysis/cost_guard.hpp): about 4 runs at V, then the --speeds sweep
+    std::vector<double> vs;
+    if (!a.speeds.empty())
+      for (double x : speed_list(a.speeds)) vs.push_back(x * k);
+    const std::vector<catenary::PantographOnLine> train{{p, 0.0, cat.contact}};
+    const double seconds = 4 * cat.catenary->estimated_seconds(train, v, -1) +
+                           (vs.empty() ? 0.0 : analysis::estimated_sweep_seconds(train, *cat.catenary, vs));
+    if (a.max_seconds > 0)
+      analysis::check_cost(seconds, a.max_seconds, "this fit", "give --max-seconds",
+                           "fewer spans with --set line.spans=N, fewer --speeds");
+    if (const std::string note = analysis::cost_note(seconds, "this fit"); !note.empty()) fmt::print(stderr, "{}\n", note);
+  }
   const analysis::AeroFit fit = analysis::fit_aerodynamic(p, *cat.catenary, cat.contact, v, target, stats, o);
   fmt::print("mean contact force without aerodynamic uplift: {:.2f} N ({} statistics)\n", fit.mean_without,
              stats == analysis::Statistics::Raw ? "raw" : "20 Hz");
@@ -161,6 +174,9 @@ CLI::App* add_pantograph_command(CLI::App& app) {
   aero_cmd->add_option("--unit", a.unit, "Speed unit: ms (m/s) or kmh")->check(CLI::IsMember({"ms", "kmh"}))->capture_default_str();
   aero_cmd->add_option("--speeds", a.speeds, "Also print the mean force with the fitted a at V0:DV:V1 (in --unit)");
   aero_cmd->add_option("--set", a.sets, "Override a model or catenary value NAME.KEY=VALUE (repeatable)");
+  aero_cmd->add_option("--max-seconds", a.max_seconds,
+                       "Refuse (exit 2) a fit whose estimated wall time on a 2-core machine is above S seconds (default 600)")
+      ->check(number_rule(analysis::max_seconds_rule));
   cmd->require_subcommand(1);
   return cmd;
 }
