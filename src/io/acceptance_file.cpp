@@ -53,9 +53,18 @@ double number_in(const std::string& f, const YAML::Node& sec, const std::string&
   return v;
 }
 
+// A force curve of speed: |F(v)| ≤ 1e6 N from 0 to kBandCheckTo km/h (its ends and vertex decide), so
+// that no absurd coefficient (1e300) passes as a limit.
 SpeedCurve curve(const std::string& f, const YAML::Node& sec, const std::string& section) {
   keys(f, sec, section, {"v2", "v1", "v0"});
-  return {number(f, sec, section, "v2"), number(f, sec, section, "v1"), number(f, sec, section, "v0")};
+  const SpeedCurve c{number(f, sec, section, "v2"), number(f, sec, section, "v1"), number(f, sec, section, "v0")};
+  std::vector<double> vs{0, kBandCheckTo};
+  if (c.v2 != 0 && -c.v1 / (2 * c.v2) > 0 && -c.v1 / (2 * c.v2) < kBandCheckTo) vs.push_back(-c.v1 / (2 * c.v2));
+  for (double v : vs)
+    if (!(std::abs(c.at(v)) <= 1e6))
+      yaml_fail(f, sec, section,
+                fmt::format("{:.4g} N at {:g} km/h; expected a force within ±1e6 N from 0 to {:g} km/h", c.at(v), v, kBandCheckTo));
+  return c;
 }
 
 Statistics statistics(const std::string& f, const YAML::Node& sec, const std::string& section) {

@@ -94,6 +94,9 @@ TEST(AcceptanceFile, BadFilesAreRefusedNamingFileLineAndKey) {
                                                  "contact_loss:\n  - {max_pct: 0.1, min_duration: 0, speeds: [0, 260]}\n"
                                                  "  - {max_pct: 0.2, min_duration: 0, speeds: [250, .inf]}\n");
   EXPECT_TRUE(contains(error_of(overlap), "'contact_loss': entries 0 and 1 overlap in speed")) << error_of(overlap);
+  const auto huge = write("huge.yaml", kHead + "mean_force:\n  lower: {v2: 0, v1: 0, v0: -1e300}\n"
+                                               "  upper: {v2: 0, v1: 0, v0: 1e300}\n  statistics: raw\n");
+  EXPECT_TRUE(contains(error_of(huge), "'mean_force.lower': -1e+300 N at 0 km/h; expected a force within ±1e6 N")) << error_of(huge);
   const auto none = write("none.yaml", kHead);
   EXPECT_TRUE(contains(error_of(none), "no criterion")) << error_of(none);
   const auto nofilter = write("nofilter.yaml", "name: t\nsigma: {max_ratio: 0.3, statistics: raw}\n");
