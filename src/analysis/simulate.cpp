@@ -4,10 +4,12 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/error.hpp"
 #include "inerta/mbs/output.hpp"
+#include "inerta/numerics/phase_times.hpp"
 
 namespace inerta::analysis {
 
@@ -97,7 +99,11 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   } else {  // the run's length is given (t_end_rule): only the speed itself
     check_run_speed(catenary, speed, 0, o.allow_supercritical);
   }
-  auto sys = catenary.couple(pantographs, speed);
+  std::unique_ptr<catenary::Coupled> sys;
+  {
+    const numerics::PhaseTimer t("couple: the line, its windows' modes");
+    sys = catenary.couple(pantographs, speed);
+  }
   CoupledSimulation r;
   r.speed = speed;
   r.span = sys->span();
@@ -131,8 +137,12 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   }
   bool acc = false;
   for (int c = 0; c < nc; ++c) acc = acc || needs_acc(sys->model(sys->contact(c)));
-  sys->equilibrate();
+  {
+    const numerics::PhaseTimer t("static equilibrium");
+    sys->equilibrate();
+  }
   double next_report = 0;
+  std::optional<numerics::PhaseTimer> steps(std::in_place, "time steps (with sampling)");
   r.stats = sys->advance(
         r.t_end, r.sample, o.integrator,
         [&](const catenary::Sample& s) {
@@ -157,6 +167,8 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
           if (progress && c == 0 && s.t >= next_report) progress(s.t, r.t_end), next_report += r.t_end / 50;
         },
         acc);
+  steps.reset();
+  const numerics::PhaseTimer stats("statistics");
   for (int c = 0; c < nc; ++c) r.contacts[static_cast<std::size_t>(c)].stats = statistics(window[static_cast<std::size_t>(c)]);
   if (line) {  // EN 50317 / 50318 outputs over the section
     for (int c = 0; c < nc; ++c) {

@@ -8,6 +8,7 @@
 
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/error.hpp"
+#include "inerta/numerics/phase_times.hpp"
 
 namespace inerta::catenary {
 
@@ -56,6 +57,7 @@ int FeLine::dof(int wire, int node, int c) const {
 }
 
 FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
+  const numerics::PhaseTimer timer("line: mesh, form-finding, matrices");
   d_.validate();
   // Mesh: stations at the masts and droppers, each interval divided into equal elements <= h.
   std::vector<double> marks;

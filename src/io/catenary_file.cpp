@@ -16,6 +16,7 @@
 #include "inerta/io/csv_table.hpp"
 #include "inerta/io/yaml_errors.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/numerics/phase_times.hpp"
 #include "model_reader.hpp"
 
 namespace inerta::io {
@@ -535,6 +536,7 @@ CatenaryFile guarded(const std::string& path, const std::vector<std::string>& ov
 }  // namespace
 
 CatenaryFile load_catenary(const std::string& path, const std::vector<std::string>& overrides) {
+  const numerics::PhaseTimer timer("load: catenary file");
   CatenaryFile f = guarded(path, overrides, true);
   f.path = path, f.overrides = overrides;
   return f;

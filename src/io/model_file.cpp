@@ -22,6 +22,7 @@
 #include "inerta/mbs/assembly.hpp"
 #include "lumped_pantograph_file.hpp"
 #include "inerta/io/yaml_errors.hpp"
+#include "inerta/numerics/phase_times.hpp"
 #include "model_loader.hpp"
 
 namespace inerta::io {
@@ -156,6 +157,7 @@ pantograph::Pantograph parse_pantograph(const std::string& text, const std::stri
 }
 
 mbs::Model load_model(const std::string& path, const std::vector<std::string>& overrides) {
+  const numerics::PhaseTimer timer("load: model file");
   return parse_model(read_text(path), path, overrides);
 }
 

@@ -163,6 +163,31 @@ TEST_F(Guard, TheModeStoreSaysWhenItCannotBeWrittenAndRefusesARelativeFolder) {
   expect_no_output_files();
 }
 
+TEST_F(Guard, InertaTimingsPrintsWhereTheProcessSpentItsTimeOnStandardError) {
+  // Issue 39 item 1: the whole-process split of a run (docs/benchmarks.md), the second run reading
+  // its window's modes from the store.
+  const std::string store = (std::filesystem::temp_directory_path() / "inerta-timings-test-store").string();
+  std::filesystem::remove_all(store);
+  const char* saved = std::getenv("INERTA_CACHE");
+  const std::string keep = saved ? saved : "";
+  ::setenv("INERTA_CACHE", store.c_str(), 1);
+  const std::string run_fe = "simulate " + model("pantograph-3mass.yaml") + " --catenary " + model("catenary-fe.yaml") +
+                             " --speed 250 --unit kmh --set line.spans=3 --set solver.cutoff=20";
+  Result r = run(run_fe);  // no timings unless asked
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(contains(r.err, "timings")) << r.err;
+  ::setenv("INERTA_TIMINGS", "1", 1);
+  r = run(run_fe);
+  ::unsetenv("INERTA_TIMINGS");
+  if (saved) ::setenv("INERTA_CACHE", keep.c_str(), 1); else ::unsetenv("INERTA_CACHE");
+  std::filesystem::remove_all(store);
+  EXPECT_EQ(r.code, 0) << r.err;
+  for (const char* phase : {"load: catenary file", "line: mesh, form-finding, matrices", "mode store: read and verify",
+                            "time steps (with sampling)", "process (from start to exit)"})
+    EXPECT_TRUE(contains(r.err, phase)) << phase << "\n" << r.err;
+  EXPECT_FALSE(contains(r.out, "timings")) << r.out;
+}
+
 TEST_F(Guard, ALineOfOneSpanRunsAndSaysItHasNoSupport) {
   // line.spans=1 failed with "support uplift: the history is empty".
   const Result r = run(fe_run("--set line.spans=1 --set solver.type=direct"));
