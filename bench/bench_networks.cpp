@@ -21,7 +21,7 @@ static void BM_EnumerateNetworks(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(n = network::enumerate(o).size());
   state.counters["networks"] = static_cast<double>(n);
 }
-BENCHMARK(BM_EnumerateNetworks)->Arg(4)->Arg(5)->Arg(6)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EnumerateNetworks)->Arg(4)->Arg(5)->Arg(6)->Arg(7)->Unit(benchmark::kMillisecond);
 
 static void BM_PositiveRealBicubic(benchmark::State& state) {
   const network::Rational y = network::rational_admittance(

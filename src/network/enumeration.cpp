@@ -20,14 +20,27 @@ void check_simplified(const Network& n) {
   if (n.kind == K::Admittance) throw NetworkError("canonical form: the network is a given admittance, not elements", 0);
 }
 
-// Members in canonical order: elements by type (k, c, b), then groups by size, then structure.
-bool before(const std::pair<int, std::string>& a, const std::pair<int, std::string>& b) {
-  return a.first != b.first ? a.first < b.first : a.second < b.second;
+// The structure string of a network already in canonical form (its members canonical too, so
+// nothing is put in canonical form again: the enumeration sorts thousands of such trees).
+std::string canonical_structure(const Network& c) {
+  if (c.is_element()) return std::string(1, type_letter(c.kind));
+  std::string s;
+  for (const auto& m : c.children) {
+    if (!s.empty()) s += c.kind == K::Series ? '-' : '|';
+    if (m.is_element()) {
+      s += type_letter(m.kind);
+    } else {  // appended piecewise: "(" + string trips GCC 12's -Wrestrict false positive
+      s += '(';
+      s += canonical_structure(m);
+      s += ')';
+    }
+  }
+  return s;
 }
-std::pair<int, std::string> order_key(const Network& n) {
-  if (n.is_element()) return {type_rank(n.kind) - 3, ""};
-  return {count_elements(n).elements, structure(n)};
-}
+
+// Members in canonical order: elements by type (k, c, b), then groups by size, then structure. The
+// key of a member already in canonical form.
+std::pair<int, std::string> order_key(const Network& n);
 
 // A pole of Y at s = 0 (a static stiffness): the denominator's constant term vanishes.
 bool n_den_constant(const Network& n) { return !n.den.empty() && n.den[0] != 0; }
@@ -52,6 +65,13 @@ ElementCounts count_elements(const Network& net) {
   }
   return c;
 }
+
+namespace {
+std::pair<int, std::string> order_key(const Network& n) {
+  if (n.is_element()) return {type_rank(n.kind) - 3, ""};
+  return {count_elements(n).elements, canonical_structure(n)};
+}
+}  // namespace
 
 bool static_path(const Network& net) {
   switch (net.kind) {
@@ -90,28 +110,20 @@ Network canonical(const Network& net) {
     out.children.push_back(std::move(m));
   }
   if (out.children.size() == 1) return out.children.front();
-  std::stable_sort(out.children.begin(), out.children.end(),
-                   [](const Network& a, const Network& b) { return before(order_key(a), order_key(b)); });
+  // Each member's key once, then a stable sort of the members by it.
+  std::vector<std::pair<std::pair<int, std::string>, std::size_t>> keys;
+  for (std::size_t i = 0; i < out.children.size(); ++i) keys.push_back({order_key(out.children[i]), i});
+  std::stable_sort(keys.begin(), keys.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Network> sorted;
+  sorted.reserve(keys.size());
+  for (const auto& k : keys) sorted.push_back(std::move(out.children[k.second]));
+  out.children = std::move(sorted);
   return out;
 }
 
 std::string structure(const Network& net) {
   check_simplified(net);
-  if (net.is_element()) return std::string(1, type_letter(net.kind));
-  const Network c = canonical(net);
-  if (c.is_element()) return std::string(1, type_letter(c.kind));
-  std::string s;
-  for (const auto& m : c.children) {
-    if (!s.empty()) s += c.kind == K::Series ? '-' : '|';
-    if (m.is_element()) {
-      s += type_letter(m.kind);
-    } else {  // appended piecewise: "(" + string trips GCC 12's -Wrestrict false positive
-      s += '(';
-      s += structure(m);
-      s += ')';
-    }
-  }
-  return s;
+  return canonical_structure(canonical(net));
 }
 
 namespace {
@@ -158,7 +170,14 @@ class Generator {
           out.push_back(canonical(g));
         }
       }
-      std::sort(out.begin(), out.end(), [](const Network& a, const Network& b) { return structure(a) < structure(b); });
+      // By structure, each tree's string made once (its members are canonical already).
+      std::vector<std::pair<std::string, std::size_t>> keys;
+      for (std::size_t i = 0; i < out.size(); ++i) keys.push_back({canonical_structure(out[i]), i});
+      std::sort(keys.begin(), keys.end());
+      std::vector<Network> sorted;
+      sorted.reserve(out.size());
+      for (const auto& k : keys) sorted.push_back(std::move(out[k.second]));
+      out = std::move(sorted);
     } else if (n == 1) {
       out.push_back(Network{kind, "", 0, {}, 0});
     }
@@ -226,7 +245,7 @@ std::vector<std::string> enumerate(const EnumerationOptions& o) {
         continue;
       const bool sp = static_path(t);
       if ((o.static_load == StaticLoad::Required && !sp) || (o.static_load == StaticLoad::Excluded && sp)) continue;
-      layer.emplace_back(structure(t), to_string(renamed(t)));
+      layer.emplace_back(canonical_structure(t), to_string(renamed(t)));
     }
     std::sort(layer.begin(), layer.end());
     for (auto& [s, e] : layer) out.push_back(std::move(e));
