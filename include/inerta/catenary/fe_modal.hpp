@@ -20,9 +20,10 @@
 //
 // Modes: spectrum slicing with shift-invert Lanczos (Spectra) on the band matrices, the number of
 // eigenvalues in each slice known beforehand from the inertia of K₀ − σM (Sylvester), slices in
-// parallel. Windows of the same shape and matrices (every interior window of a uniform line) share
+// parallel (numerics/generalised_eigen.hpp). Windows of the same shape and matrices (every interior window of a uniform line) share
 // one decomposition; a window that is the mirror image of another (the last window of a symmetric
 // line, of the first) takes its modes reordered.
+// Sources: the windows and their mode sets in fe_modal_windows.cpp, the per-run solver in fe_modal.cpp.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <atomic>
@@ -34,25 +35,15 @@
 
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/mode_store.hpp"
+#include "inerta/numerics/band.hpp"
+#include "inerta/numerics/generalised_eigen.hpp"
 
 namespace inerta::catenary {
 
-/// Modes of the generalised problem K φ = ω² M φ with ω/2π < cutoff_hz (K, M symmetric, K positive
-/// definite), M-orthonormal, ascending. NumericalError if the slices do not account for every
-/// eigenvalue the inertia counts.
-struct Modes {
-  Eigen::VectorXd omega2;  ///< ω², (rad/s)²
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> phi;  ///< n × m, a DOF a row
-};
-Modes lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz);
-
-/// The band of K⁻¹ (entries |i − j| <= kd) of a symmetric positive definite band matrix, from its
-/// band Cholesky factor (Takahashi's recurrence Lᵀ Z = L⁻¹).
-struct BandInverse {
-  int n = 0, kd = 0;
-  std::vector<double> z;  ///< (kd + 1) × n: z[(i − j) + j (kd + 1)] = Z(i, j), i >= j
-  double operator()(int i, int j) const;  ///< |i − j| <= kd
-};
+// The eigensolver and the band algebra the modal solve uses (numerics layer).
+using numerics::BandInverse;
+using numerics::lowest_modes;
+using numerics::Modes;
 
 /// One window shape: its matrices, modes, the band Cholesky factor of K₀ and what the residual
 /// flexibility needs: K₀⁻¹ within the band and its columns at the "special" DOFs (each dropper's

@@ -18,9 +18,13 @@
 #include <memory>
 #include <optional>
 
+namespace inerta::numerics {
+struct Modes;
+}  // namespace inerta::numerics
+
 namespace inerta::catenary {
 
-struct Modes;
+using numerics::Modes;
 
 /// Modes read from the store: ω² and Φ (n × m, row-major) in a buffer kept alive by `owner`.
 struct StoredModes {
