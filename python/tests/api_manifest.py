@@ -330,6 +330,8 @@ _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the 
 _ACCEPTANCE = "the verdict's parts; Python gets the whole table from inerta.acceptance (a NumPy structured array)"
 
 EXCLUDED = {
+    "numerics::PhaseTimes": "process-wide timing table; Python users set INERTA_TIMINGS=1 (printed on stderr at exit)",
+    "numerics::PhaseTimer": "an RAII scope timer used inside the library; see numerics::PhaseTimes",
     "numerics::Optimiser": "given by name in Python: model_search(optimiser='bobyqa'), Study.refine_optimiser",
     "numerics::optimiser_name": "the names are the Python form of numerics::Optimiser",
     "numerics::parse_optimiser": "the names are the Python form of numerics::Optimiser",

@@ -13,6 +13,7 @@
 #include "inerta/catenary/fe_modal.hpp"
 #include "inerta/error.hpp"
 #include "inerta/numerics/band.hpp"
+#include "inerta/numerics/phase_times.hpp"
 
 namespace inerta::catenary {
 
@@ -42,6 +43,17 @@ FeModalLine::FeModalLine(std::shared_ptr<const FeLine> line, std::optional<ModeS
     const auto it = std::lower_bound(x.begin(), x.end(), s * d.span - 1e-9);
     mast_node_.push_back(static_cast<int>(it - x.begin()));
   }
+}
+
+FeModalLine::~FeModalLine() { flush_store(); }
+
+void FeModalLine::flush_store() const {
+  std::shared_future<void> last;
+  {
+    const std::lock_guard lock(writes_mutex_);
+    last = last_write_;
+  }
+  if (last.valid()) last.wait();
 }
 
 int FeModalLine::window_spans(double spread) const {
@@ -125,19 +137,31 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
     md->set_phi(std::move(stored->owner), stored->phi, stored->n, stored->m);
   } else {
     if (!make) ++solved_;
-    Modes modes = make ? make() : lowest_modes(K, M, cutoff);
-    if (store_ && !store_->save(K, M, cutoff, modes)) {
-      // Issue 38: once a process, so that a store that cannot be written (then every process solves
-      // again) is not skipped in silence; standard error only.
-      static std::atomic<bool> said{false};
-      if (!said.exchange(true))
-        std::fprintf(stderr, "note: the mode store %s cannot be written; the modes are solved in every process "
-                             "(docs/catenary-fe.md \"Mode store\"; INERTA_CACHE=off to use none)\n",
-                     store_->directory().c_str());
+    Modes modes;
+    {
+      const numerics::PhaseTimer t(make ? "window modes: mirrored from another" : "window modes: eigenproblem");
+      modes = make ? make() : lowest_modes(K, M, cutoff);
     }
     md->omega2 = std::move(modes.omega2);
     auto phi = std::make_shared<const FeWindowModes::RowMatrix>(std::move(modes.phi));
     md->set_phi(phi, phi->data(), phi->rows(), phi->cols());
+    if (store_) {  // written on a thread of its own while the run goes on (flush_store waits)
+      const std::uint64_t key = ModeStore::key(K, M, cutoff);
+      const std::lock_guard lock(writes_mutex_);
+      last_write_ = std::async(std::launch::async, [prev = last_write_, store = *store_, key, cutoff, omega2 = md->omega2, phi] {
+        if (prev.valid()) prev.wait();
+        const numerics::PhaseTimer t("mode store: write (on its own thread)");
+        if (!store.save(key, cutoff, omega2, phi->data(), phi->rows(), phi->cols())) {
+          // Issue 38: once a process, so that a store that cannot be written (then every process
+          // solves again) is not skipped in silence; standard error only.
+          static std::atomic<bool> said{false};
+          if (!said.exchange(true))
+            std::fprintf(stderr, "note: the mode store %s cannot be written; the modes are solved in every process "
+                                 "(docs/catenary-fe.md \"Mode store\"; INERTA_CACHE=off to use none)\n",
+                         store.directory().c_str());
+        }
+      }).share();
+    }
   }
   if (md->omega2.size() == 0)  // issue 38: a solve without modes would run as a quasi-static line
     throw ModelError(fmt::format(
@@ -146,6 +170,7 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
         "solver.type=direct",
         cutoff));
   // K's band Cholesky factor, the band of K⁻¹ and its columns at the special DOFs (residual flexibility).
+  const numerics::PhaseTimer t("window modes: residual flexibility (K⁻¹ columns)");
   md->kd = numerics::band_width(K);
   md->cholesky = numerics::band_lower(K, md->kd);
   if (const int info = numerics::band_cholesky(md->cholesky, n, md->kd); info != 0)
@@ -216,6 +241,7 @@ Sparse mirrored(const Sparse& A, const std::vector<std::pair<int, double>>& map)
 }  // namespace
 
 void FeModalLine::prepare(int spans) const {
+  const numerics::PhaseTimer timer("windows: prepare every window's modes");
   std::lock_guard<std::mutex> lock(mutex_);
   struct New {
     std::shared_ptr<FeWindow> w;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cerrno>
 #include <new>
 #include <cstdlib>
@@ -204,27 +205,35 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
 bool ModeStore::save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz,
                      const Modes& modes) const noexcept {
   try {
+    return save(key(K, M, cutoff_hz), cutoff_hz, modes.omega2, modes.phi.data(), modes.phi.rows(), modes.phi.cols());
+  } catch (...) {
+    return false;
+  }
+}
+
+bool ModeStore::save(std::uint64_t key, double cutoff_hz, const Eigen::VectorXd& omega2, const double* phi,
+                     Eigen::Index n, Eigen::Index m) const noexcept {
+  try {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec) return false;
     Header hd{};
     std::memcpy(hd.magic, kMagic, sizeof kMagic);
-    hd.key = key(K, M, cutoff_hz);
-    hd.n = modes.phi.rows(), hd.m = modes.phi.cols();
+    hd.key = key;
+    hd.n = n, hd.m = m;
     hd.cutoff = cutoff_hz;
-    hd.checksum = checksum(modes.omega2.data(), static_cast<std::size_t>(modes.omega2.size()), modes.phi.data(),
-                           static_cast<std::size_t>(modes.phi.size()));
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(m);
+    hd.checksum = checksum(omega2.data(), static_cast<std::size_t>(omega2.size()), phi, count);
     static std::atomic<unsigned> counter{0};
     const fs::path target = file(hd.key);
     const fs::path tmp = dir_ / fmt::format(".{}.{}.{}.tmp", target.filename().string(), ::getpid(), counter++);
     {
       std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
       out.write(reinterpret_cast<const char*>(&hd), sizeof hd);
-      out.write(reinterpret_cast<const char*>(modes.omega2.data()),
-                static_cast<std::streamsize>(sizeof(double) * static_cast<std::size_t>(modes.omega2.size())));
-      out.write(reinterpret_cast<const char*>(modes.phi.data()),
-                static_cast<std::streamsize>(sizeof(double) * static_cast<std::size_t>(modes.phi.size())));
+      out.write(reinterpret_cast<const char*>(omega2.data()),
+                static_cast<std::streamsize>(sizeof(double) * static_cast<std::size_t>(omega2.size())));
+      out.write(reinterpret_cast<const char*>(phi), static_cast<std::streamsize>(sizeof(double) * count));
       out.close();
       if (!out) {
         fs::remove(tmp, ec);
@@ -246,6 +255,13 @@ bool ModeStore::save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMa
     std::uintmax_t total = 0;
     for (const auto& e : fs::directory_iterator(dir_, ec)) {
       const std::string name = e.path().filename().string();
+      // A temporary file a process left when it ended mid-write (killed, or a Python process that
+      // exits while its line's writes run): removed after an hour (a live write takes seconds).
+      if (name.rfind(".modes-", 0) == 0 && e.path().extension() == ".tmp") {
+        const auto t = e.last_write_time(ec);
+        if (!ec && fs::file_time_type::clock::now() - t > std::chrono::hours(1)) fs::remove(e.path(), ec);
+        continue;
+      }
       if (name.rfind("modes-", 0) != 0 || e.path().extension() != ".bin") continue;
       const auto size = e.file_size(ec);
       if (ec) continue;

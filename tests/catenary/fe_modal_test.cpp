@@ -276,6 +276,7 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   first->prepare(6);
   EXPECT_EQ(first->decompositions(), 2);
   EXPECT_EQ(first->loaded(), 0);
+  first->flush_store();  // the files are written on threads of their own
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
   ASSERT_EQ(files.size(), 3u);  // no temporary file left
@@ -314,6 +315,7 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   third->prepare(6);
   EXPECT_EQ(third->decompositions(), 2);
   EXPECT_EQ(third->loaded(), 0);
+  third->flush_store();
   EXPECT_EQ(history(first), history(third));
   FeCatenaryData other = d;
   other.modal_cutoff = 21;
@@ -321,11 +323,13 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   fourth.prepare(6);
   EXPECT_EQ(fourth.decompositions(), 2);
   EXPECT_EQ(fourth.loaded(), 0);
+  fourth.flush_store();
   // Beyond its size limit the store removes the oldest files, never the one just written.
   other.modal_cutoff = 22;
   const catenary::FeModalLine fifth(std::make_shared<const FeLine>(other), catenary::ModeStore(dir, 1));
   fifth.prepare(6);
   EXPECT_EQ(fifth.decompositions(), 2);
+  fifth.flush_store();
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
   fs::remove_all(dir);
 }

@@ -28,6 +28,7 @@
 #include <Eigen/Sparse>
 #include <atomic>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -87,6 +88,10 @@ class FeModalLine {
  public:
   /// `store`: where decompositions are kept between processes (none: always solved here).
   explicit FeModalLine(std::shared_ptr<const FeLine> line, std::optional<ModeStore> store = std::nullopt);
+  /// Waits for the mode store's writes (flush_store).
+  ~FeModalLine();
+  FeModalLine(const FeModalLine&) = delete;
+  FeModalLine& operator=(const FeModalLine&) = delete;
   const FeLine& line() const { return *line_; }
   /// Spans of a window for pantographs spread over `spread` m (the whole line at most).
   int window_spans(double spread) const;
@@ -98,6 +103,9 @@ class FeModalLine {
   int decompositions() const;  ///< eigenproblems solved so far
   int loaded() const;          ///< decompositions read from the store so far
   const std::optional<ModeStore>& store() const { return store_; }
+  /// Waits until the decompositions solved so far are in the store: they are written on their own
+  /// threads while the run goes on (issue 39), so a run does not wait for ≈ 120 MB of writes.
+  void flush_store() const;
   int shapes() const;          ///< distinct window shapes so far (a mirrored one needs no eigenproblem)
 
  private:
@@ -108,6 +116,8 @@ class FeModalLine {
   mutable std::vector<std::shared_ptr<const FeWindowModes>> shapes_;
   std::optional<ModeStore> store_;
   mutable std::atomic<int> solved_{0}, loaded_{0};
+  mutable std::mutex writes_mutex_;
+  mutable std::shared_future<void> last_write_;  // the writes run one after the other (the store's size limit)
   std::shared_ptr<FeWindow> structure(int first_span, int spans, Eigen::SparseMatrix<double>& K,
                                       Eigen::SparseMatrix<double>& M) const;
   /// Its modes (read from the store, else made by `make` — a mirrored shape's — or solved, then

@@ -53,6 +53,9 @@ class ModeStore {
   /// max_bytes in all, the least recently written files are removed.
   bool save(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz,
             const Modes& modes) const noexcept;
+  /// The same with the key made before (`key(K, M, cutoff_hz)`): ω² (m) and Φ (n × m, row-major).
+  bool save(std::uint64_t key, double cutoff_hz, const Eigen::VectorXd& omega2, const double* phi, Eigen::Index n,
+            Eigen::Index m) const noexcept;
 
  private:
   std::filesystem::path dir_;
