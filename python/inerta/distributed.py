@@ -336,12 +336,14 @@ def _main(argv=None):
             cluster.close()
     if args.out:
         print(f"wrote the study's files in {args.out} (as `inerta optimise --out`)")
-        script = os.path.join(os.environ.get("INERTA_SOURCE_DIR", ""), "scripts", "plot-study")
+        scripts = os.path.join(os.environ.get("INERTA_SOURCE_DIR", ""), "scripts")
         if not args.no_plots:
             import subprocess
 
-            if not (os.path.exists(script) and subprocess.run([script, args.out]).returncode == 0):
-                print(f"note: no plots (scripts/plot-study not found or failed); the CSV files in {args.out} are complete")
+            for name in (["plot-structure"] if study.all_networks else []) + ["plot-study"]:
+                script = os.path.join(scripts, name)
+                if not (os.path.exists(script) and subprocess.run([script, args.out]).returncode == 0):
+                    print(f"note: no plots (scripts/{name} not found or failed); the CSV files in {args.out} are complete")
     best = o.results[o.best.index]
     if study.method == "time":
         print(f"best: {best.layout} ({best.expression}) — J2 = {best.cost.J:.3f} N at {best.cost.speed * 3.6:.0f} km/h "
