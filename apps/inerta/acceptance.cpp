@@ -1,6 +1,8 @@
 // The acceptance verdict in the CLI and `inerta pantograph aero-fit` (docs/cli.md).
 #include "acceptance.hpp"
 
+#include "common.hpp"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -89,18 +91,8 @@ struct AeroFitArgs {
 AeroFitArgs aero_args;
 CLI::App* aero_cmd = nullptr;
 
-// "V0:DV:V1" → the speeds (inclusive within 1e-9 DV), at most 1000.
-std::vector<double> speed_list(const std::string& spec) {
-  double a = 0, d = 0, b = 0;
-  char c1 = 0, c2 = 0;
-  std::istringstream in(spec);
-  if (!(in >> a >> c1 >> d >> c2 >> b) || c1 != ':' || c2 != ':' || !(in >> std::ws).eof() || !(a > 0) || !(d > 0) ||
-      !(b >= a) || !std::isfinite(b) || (b - a) / d > 1000)
-    throw CLI::ValidationError("--speeds", "expected V0:DV:V1 with 0 < V0 <= V1, DV > 0 and at most 1000 speeds, got '" + spec + "'");
-  std::vector<double> v;
-  for (long k = 0; k <= static_cast<long>(std::floor((b - a) / d + 1e-9)); ++k) v.push_back(a + static_cast<double>(k) * d);
-  return v;
-}
+// "V0:DV:V1" → the speeds, at most 1000 steps (common.hpp's range of --freq).
+std::vector<double> speed_list(const std::string& spec) { return frequency_range(spec, "--speeds", {true, 1001}); }
 
 int aero_fit() {
   const AeroFitArgs& a = aero_args;

@@ -22,6 +22,8 @@
 #include "inerta/io/model_study_file.hpp"
 #include "inerta/io/model_study_results.hpp"
 #include "inerta/optim/model_study_run.hpp"
+#include "inerta/optim/study_run.hpp"
+#include "inerta/io/study_outcome.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
@@ -283,27 +285,36 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
   if (study.all)
     fmt::print("every network of up to {} elements ({} networks), each also started from its best sub-network\n",
                study.all->max_elements, study.layouts.size());
-  optim::ModelStudyProgress progress;
-  progress.structure = structure_progress("");
-  progress.searching = [&](std::size_t l, int start, int evals, double best) {
-    if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(),
-                        study.layouts[l], start + 1, evals, best);
-    std::fflush(stdout);
-  };
-  progress.finished = [&](std::size_t l, const optim::ModelLayoutResult& r) {
-    if (tty) fmt::print("\r{:90}\r", "");
-    fmt::print("  [{}/{}] {:<14} J = {:.6g}{} after {} evaluations\n", l + 1, study.layouts.size(), study.layouts[l], r.cost.J,
-               r.cost.feasible ? "" : " (a limit is exceeded)", r.evaluations);
-  };
-  std::function<void(const optim::AdmittanceBound&)> print_bound;
-  progress.searched = [&](const optim::ModelStudyResult& r) {
-    print_model_study(r);
-    print_bound = print_admittance_bound(r.baseline_cost.J, "");
-  };
-  progress.bound = [&](const optim::AdmittanceBound& b) { print_bound(b); };
-  const optim::ModelStudyResult run = optim::run_model_study(study, progress);
+  // The engine's events (optim::StudyEvents): a line per layout, the structure progress, the table, the bounds.
+  struct Printer : optim::StudyEvents {
+    const optim::ModelStudy& study;
+    bool tty;
+    optim::StructureProgressFn structure = structure_progress("");
+    std::function<void(const optim::AdmittanceBound&)> print_bound;
+    Printer(const optim::ModelStudy& s, bool t) : study(s), tty(t) {}
+    using optim::StudyEvents::searched;
+    void searching(std::size_t l, int start, int evals, double best) override {
+      if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(),
+                          study.layouts[l], start + 1, evals, best);
+      std::fflush(stdout);
+    }
+    void searched(std::size_t l, const optim::ModelLayoutResult& r) override {
+      if (tty) fmt::print("\r{:90}\r", "");
+      fmt::print("  [{}/{}] {:<14} J = {:.6g}{} after {} evaluations\n", l + 1, study.layouts.size(), study.layouts[l], r.cost.J,
+                 r.cost.feasible ? "" : " (a limit is exceeded)", r.evaluations);
+    }
+    void network(const optim::StructureProgress& p) override { structure(p); }
+    void searches_done(const optim::StudyOutcome& o) override {
+      print_model_study(*o.model);
+      print_bound = print_admittance_bound(o.model->baseline_cost.J, "");
+    }
+    void bound(const optim::AdmittanceBound& b) override { print_bound(b); }
+  } printer(study, tty);
+  optim::StudyOptions options;
+  options.report = !out.empty();  // the figures: what --out writes
+  const optim::StudyOutcome run = optim::run_study(study, options, &printer);
   if (out.empty()) return 0;
-  const auto written = io::write_model_study_results(out, run, optim::model_study_figures(run));
+  const auto written = io::write_study_outcome(out, run);
   fmt::print("wrote");
   for (const auto& w : written) fmt::print(" {}", std::filesystem::path(w).filename().string());
   fmt::print(" in {}\n", out);

@@ -152,17 +152,6 @@ bool run_script(const std::string& name, const std::string& dir) {
   return std::system((q(script.string()) + " " + q(dir)).c_str()) == 0;
 }
 
-void write_structure(const std::string& dir, const std::string& study, const std::string& objective,
-                     const std::string& unit, double default_J, const std::vector<optim::StructureEntry>& entries,
-                     bool plots) {
-  const auto files = io::write_structure_results(dir, study, objective, unit, default_J, entries);
-  fmt::print("wrote");
-  for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
-  fmt::print(" in {}\n", dir);
-  if (plots && !run_script("plot-structure", dir))
-    fmt::print("note: no pareto.png (scripts/plot-structure needs /usr/bin/python3 with matplotlib); pareto.csv is complete\n");
-}
-
 std::function<void(const optim::AdmittanceBound&)> print_admittance_bound(double default_J, const std::string& unit) {
   return [default_J, u = unit.empty() ? std::string() : " " + unit, first = true](const optim::AdmittanceBound& b) mutable {
     if (first) fmt::print("\npositive-real admittance bound (degree d: any network with at most d springs and inerters):\n");

@@ -25,12 +25,6 @@ void print_structure(const std::vector<optim::StructureEntry>& entries, double d
 /// Runs scripts/NAME DIR of the source tree (a plotting script); false if it is missing or fails.
 bool run_script(const std::string& name, const std::string& dir);
 
-/// Writes structure.csv/json and pareto.csv in `dir` and draws pareto.png (scripts/plot-structure)
-/// unless !plots; prints what it wrote.
-void write_structure(const std::string& dir, const std::string& study, const std::string& objective,
-                     const std::string& unit, double default_J, const std::vector<optim::StructureEntry>& entries,
-                     bool plots);
-
 /// Prints one degree's admittance bound (optim::admittance_bounds' `done`): the bound, the gap of the
 /// best network to it and the realisation; a heading before the first.
 std::function<void(const optim::AdmittanceBound&)> print_admittance_bound(double default_J, const std::string& unit);

@@ -39,6 +39,48 @@ def sweep(model, catenary, speeds, *, client=None, **kwargs):
 sweep.__doc__ += "\n\nThe library's sweep:\n" + (_inerta.sweep.__doc__ or "")
 
 
+def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, force=False, stats=None):
+    """Runs a whole design study in one call (the library's study engine, optim::run_study; docs/python.md):
+    the default design, the searches, a ``layouts: all`` study's time-domain re-checks, the verified best
+    design, the admittance bounds and, with ``out``, the report's data and every file ``inerta optimise
+    --out`` writes (the same bytes but for wall-clock columns). Returns a StudyOutcome: ``o.best`` has
+    ``layout``, ``expression``, ``values`` and ``J2``.
+
+    study: a Study, a ModelStudy or a study file's path. client: a dask.distributed.Client — the engine's
+    searches and evaluations become Dask tasks (inerta.distributed.DaskExecutor; J2 studies from a file),
+    the outcome equal to the serial run's; ``checkpoint`` (default ``out/checkpoint.pkl``) keeps what
+    finished, and the same call again resumes there. progress(event, *values): see run_study. force:
+    replace the result files in ``out`` (and start afresh). stats: a dict that receives the Dask tasks
+    sent ("designs_sent", "searches_sent", "checks_sent")."""
+    import os
+
+    if isinstance(study, (str, os.PathLike)):
+        path = os.fspath(study)
+        study = _inerta.load_model_study(path) if _inerta.is_model_study(path) else _inerta.load_study(path)
+    executor = None
+    if client is not None:
+        if isinstance(study, _inerta.ModelStudy):
+            raise ValueError(f"{study.name}: a model study runs in this process; only J2 studies (catenary:) are "
+                             "distributed so far — call inerta.optimise without client")
+        from . import distributed
+
+        if checkpoint is None and out is not None:
+            checkpoint = os.path.join(os.fspath(out), "checkpoint.pkl")
+        if checkpoint is not None and force and os.path.exists(checkpoint):
+            os.remove(checkpoint)
+        executor = distributed.DaskExecutor(study, client, checkpoint=checkpoint, stats=stats)
+    if out is not None:
+        out = os.fspath(out)
+        resuming = executor is not None and checkpoint is not None and os.path.exists(checkpoint)
+        if not resuming:  # a folder with its study's checkpoint is this study's: resume there
+            _inerta.prepare_output_folder(out, _inerta.study_output_names(), force)
+    outcome = _inerta.run_study(study, _inerta.StudyOptions(report=out is not None), progress=progress,
+                                executor=executor)
+    if out is not None:
+        _inerta.write_study_outcome(outcome, out)
+    return outcome
+
+
 def __getattr__(name):  # inerta.distributed on first use (PEP 562): `python3 -m inerta.distributed` stays clean
     if name == "distributed":
         import importlib
@@ -78,4 +120,4 @@ def plot_result(result, names=None, ax=None, **kwargs):
     return ax
 
 
-__all__ = [n for n in dir(_inerta) if not n.startswith("_")] + ["kmh", "plot_sweep", "plot_result", "sweep"]
+__all__ = [n for n in dir(_inerta) if not n.startswith("_")] + ["kmh", "optimise", "plot_sweep", "plot_result", "sweep"]

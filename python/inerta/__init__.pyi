@@ -5,7 +5,7 @@ import numpy as np
 import numpy.typing as npt
 
 from ._inerta import *  # noqa: F401,F403
-from ._inerta import Result, SweepResult
+from ._inerta import ModelStudy, Result, Study, StudyOutcome, SweepResult
 from . import distributed as distributed
 
 __version__: str
@@ -20,3 +20,7 @@ def sweep(model: Any, catenary: Any, speeds: Any, *, client: Any = None, contact
           options: Any = None, method: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None,
           progress: Any = None) -> SweepResult:
     """Speed sweep in the time domain; with client (dask.distributed.Client) one task per speed."""
+
+def optimise(study: Any, *, out: Any = None, client: Any = None, progress: Any = None, checkpoint: Any = None,
+             force: bool = False, stats: Optional[dict] = None) -> StudyOutcome:
+    """A whole study in one call (run_study); with client its evaluations on Dask, with out its files."""

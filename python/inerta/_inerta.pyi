@@ -1626,6 +1626,82 @@ class ModelStudyResult:
 def run_model_study(study: ModelStudy, *, progress: Optional[Callable[[int, int, float], None]] = None
                     ) -> ModelStudyResult: ...
 
+class SearchTask:
+    layout: str
+    warm: list[dict[str, float]]
+    network: bool
+    def __init__(self, layout: str, warm: Sequence[dict[str, float]] = ..., network: bool = False) -> None: ...
+
+class CheckTask:
+    layout: str
+    values: dict[str, float]
+    time: bool
+    def __init__(self, layout: str = "", values: dict[str, float] = ..., time: bool = False) -> None: ...
+
+class CheckResult:
+    cost: StudyCost
+    failure: str
+
+def run_search(study: Study, task: SearchTask, *,
+               batch: Optional[Callable[[list[dict[str, float]]], list[DesignCost]]] = None) -> LayoutResult: ...
+def run_check(study: Study, task: CheckTask) -> CheckResult: ...
+
+class StudyExecutor:
+    def __init__(self) -> None: ...
+    def search(self, study: Study, tasks: list[SearchTask], done: Callable[[int, LayoutResult], None],
+               searching: Callable[[int, int, int, float], None]) -> list[LayoutResult]: ...
+    def check(self, study: Study, tasks: list[CheckTask]) -> list[CheckResult]: ...
+
+class LocalExecutor(StudyExecutor):
+    def __init__(self) -> None: ...
+
+class StudyOptions:
+    report: bool
+    report_options: ReportOptions
+    rechecks: int
+    def __init__(self, *, report: bool = False, report_options: Optional[ReportOptions] = None,
+                 rechecks: int = 5) -> None: ...
+
+class Recheck:
+    entry: int
+    periodic_rank: int
+    time: StudyCost
+    failure: str
+    settling_spans: float
+
+class BestDesign:
+    index: int
+    layout: str
+    expression: str
+    values: dict[str, float]
+    network: Network
+    J: float
+    J2: float
+    feasible: bool
+    verified: bool
+
+class StudyOutcome:
+    study: Optional[Study]
+    model: Optional[ModelStudyResult]
+    baseline: Network
+    default_cost: StudyCost
+    results: list[LayoutResult]
+    entries: list[StructureEntry]
+    order: list[int]
+    rechecks: list[Recheck]
+    admittance: list[AdmittanceBound]
+    report: Optional[Report]
+    model_figures: Optional[ModelStudyFigures]
+    time_check: StudyCost
+    best: BestDesign
+    seconds: float
+    def recheck_csv(self) -> str: ...
+
+def run_study(study: Union[Study, ModelStudy], options: Optional[StudyOptions] = None, *,
+              progress: Optional[Callable[..., None]] = None,
+              executor: Optional[StudyExecutor] = None) -> StudyOutcome: ...
+def write_study_outcome(outcome: StudyOutcome, dir: str) -> list[str]: ...
+
 class ModelStudyFigures:
     frf_default: Optional[StudyFrf]
     frf_best: Optional[StudyFrf]

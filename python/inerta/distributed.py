@@ -6,14 +6,14 @@ puts the results back in order, so a distributed run gives the serial run's numb
 * ``sweep(model, catenary, speeds, client)``: one task per speed (inerta.sweep(..., client=c) calls
   it). The model travels as its file's text and overrides, a catenary as its file's path and
   overrides: a worker reads each once and keeps it (a finite-element line's modes too).
-* ``optimise(study_path, client, out=..., checkpoint=...)``: a study of named layouts. By the
-  periodic fast path (milliseconds an evaluation) one task per layout; in the time domain (a
-  finite-element line, or a multi-fidelity study's refinement) one task per design: each layout's
-  search runs here (its coarse periodic search too) and sends every poll's designs to the workers,
-  all layouts at once, so the cluster's workers are used beyond the number of layouts. Each finished
-  layout, and in the time domain each evaluated design, is written to the checkpoint at once; a study
-  started again with the same checkpoint runs only the layouts it lacks and evaluates no design twice
-  (the searches are deterministic: they replay to where they stopped).
+* ``DaskExecutor``: the study engine's executor (inerta.optimise(study, client=c) uses it; ``optimise``
+  here is that call): the engine's searches and evaluations become tasks — by the periodic fast path
+  (milliseconds an evaluation) one task per search (a layout, or a network of ``layouts: all`` with the
+  warm start from its sub-networks, the networks of one size at once); in the time domain one task per
+  design (each search runs here in a thread and sends its polls' designs to the workers, all searches at
+  once). Each finished search, design and check is written to the checkpoint at once; a study started
+  again with the same checkpoint runs only what it lacks and evaluates no design twice (the engine is
+  deterministic: it replays to where it stopped).
 
 Faults: a task whose worker dies is run again on another worker by Dask (its result is the same:
 the tasks are pure functions of their inputs); after ``distributed.scheduler.allowed-failures``
@@ -94,109 +94,158 @@ def sweep(model, catenary, speeds, client, *, progress=None, **kwargs):
     return _inerta.SweepResult(results, time.perf_counter() - t0, "time")
 
 
-# ---- Studies ----------------------------------------------------------------------------------------
+# ---- Studies: the study engine's evaluations as Dask tasks ------------------------------------------
 
 def _study(path, stamp):
     return _cached(("study", path, stamp), lambda: _inerta.load_study(path))
 
 
-def _layout_task(path, stamp, layout):
-    return _inerta.optimise_layout(_study(path, stamp), layout)
+def _search_task(path, stamp, task):
+    return _inerta.run_search(_study(path, stamp), task)
 
 
 def _design_task(path, stamp, layout, params):
     return _inerta.design_cost(_study(path, stamp), layout, params)
 
 
+def _check_task(path, stamp, task):
+    return _inerta.run_check(_study(path, stamp), task)
+
+
 def _read_checkpoint(path, study_path, stamp):
-    """(finished layouts, evaluated designs) of a checkpoint file, or two empty dicts."""
+    """(finished searches, evaluated designs, checks) of a checkpoint file, or three empty dicts."""
     if not path or not os.path.exists(path):
-        return {}, {}
+        return {}, {}, {}
     with open(path, "rb") as f:
         data = pickle.load(f)
     if data.get("study") != study_path or data.get("stamp") != stamp:
         raise RuntimeError(f"{path}: a checkpoint of another study or of an earlier version of {study_path} "
                            "(its file changed); remove it to start again")
-    return data["layouts"], data.get("designs", {})
+    return data["layouts"], data.get("designs", {}), data.get("checks", {})
 
 
-def _write_checkpoint(path, study_path, stamp, layouts, designs):
+def _write_checkpoint(path, study_path, stamp, layouts, designs, checks):
     tmp = f"{path}.{os.getpid()}.{threading.get_ident()}.tmp"
     with open(tmp, "wb") as f:
-        pickle.dump({"study": study_path, "stamp": stamp, "layouts": layouts, "designs": designs}, f)
+        pickle.dump({"study": study_path, "stamp": stamp, "layouts": layouts, "designs": designs, "checks": checks}, f)
     os.replace(tmp, path)  # never a half-written checkpoint
 
 
-def optimise(study_path, client, *, checkpoint=None, progress=None, stats=None):
-    """Optimises every layout of a study file on the cluster (one task per layout by the periodic
-    fast path, one per design in the time domain); returns (study, default_cost, results) with
-    results in the study's order, equal to the serial run's. checkpoint: a file that keeps each
-    finished layout and each evaluated design (read first: finished layouts are not run again,
-    evaluated designs not sent again). progress(layout, result, done, total) as layouts finish (an
-    exception it raises stops the study; the checkpoint keeps what finished). stats: a dict that
-    receives "designs_sent", the designs sent to the workers."""
-    from distributed import as_completed
+def _params_key(params):
+    return tuple(sorted(params.items()))
 
-    path = os.path.abspath(os.fspath(study_path))
-    st = os.stat(path)
-    stamp = (st.st_mtime_ns, st.st_size)
-    study = _inerta.load_study(path)
-    if study.all_networks:
-        raise ValueError(f"{study_path}: `layouts: all` is not distributed yet (each network's search is warm-started "
-                         "from its sub-networks'); run it with `inerta optimise` on one machine")
-    done, designs = _read_checkpoint(checkpoint, path, stamp)
-    todo = [l for l in study.layouts if l not in done]
-    default = client.submit(lambda p, s: _inerta.evaluate(_study(p, s), _inerta.default_suspension(_study(p, s))),
-                            path, stamp, pure=False)
-    if stats is not None:
-        stats["designs_sent"] = 0
-    if study.method == "time":
-        lock = threading.Lock()
-        stop = threading.Event()  # set when the study stops early: the other layouts stop at their next poll
 
-        def batch_for(layout):
-            def batch(params):  # one task per design not evaluated yet, gathered in order
-                if stop.is_set():
-                    raise KeyboardInterrupt("the study was stopped")
-                keys = [(layout, tuple(sorted(p.items()))) for p in params]
-                with lock:
-                    missing = [i for i, k in enumerate(keys) if k not in designs]
-                futures = [client.submit(_design_task, path, stamp, layout, params[i], pure=False) for i in missing]
-                costs = client.gather(futures)
-                with lock:
-                    for i, c in zip(missing, costs):
-                        designs[keys[i]] = c
-                    if stats is not None:
-                        stats["designs_sent"] += len(missing)
-                    if checkpoint:
-                        _write_checkpoint(checkpoint, path, stamp, done, designs)
-                    return [designs[k] for k in keys]
-            return batch
+def _search_key(task):
+    return (task.layout, task.network, tuple(_params_key(w) for w in task.warm))
 
-        with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, len(todo))) as pool:
-            running = {pool.submit(_inerta.optimise_layout, study, l, batch=batch_for(l)): l for l in todo}
-            try:
-                for fut in concurrent.futures.as_completed(running):
-                    layout = running[fut]
-                    with lock:
-                        done[layout] = fut.result()
-                        if checkpoint:
-                            _write_checkpoint(checkpoint, path, stamp, done, designs)
-                    if progress is not None:
-                        progress(layout, done[layout], len(done), len(study.layouts))
-            except BaseException:
-                stop.set()
-                raise
-    else:
-        futures = {client.submit(_layout_task, path, stamp, l, pure=False): l for l in todo}
-        for fut in as_completed(list(futures)):
-            layout = futures[fut]
-            done[layout] = fut.result()
-            if checkpoint:
-                _write_checkpoint(checkpoint, path, stamp, done, designs)
-            if progress is not None:
-                progress(layout, done[layout], len(done), len(study.layouts))
-    return study, default.result(), [done[l] for l in study.layouts]
+
+class DaskExecutor(_inerta.StudyExecutor):
+    """The study engine's executor on a Dask cluster (inerta.optimise(client=...)): its searches and checks
+    become tasks, results equal to the serial run's. By the periodic fast path (milliseconds an evaluation)
+    one task per search (a layout, or a network of layouts: all with its warm start); in the time domain one
+    task per design: each search runs here in a thread and sends every poll's designs to the workers, all
+    searches at once. The time-domain checks (the default, the re-checks) are a task each. Every finished
+    search, design and check is written to the checkpoint at once; a study started again with it runs only
+    what it lacks (the engine is deterministic: it replays to where it stopped)."""
+
+    def __init__(self, study, client, *, checkpoint=None, stats=None):
+        super().__init__()
+        if not study.source or study.source.startswith("<"):
+            raise ValueError("inerta.distributed: the workers read the study from its file; this Study was built in "
+                             "Python — load it with inerta.load_study(path)")
+        self.client = client
+        self.path = os.path.abspath(study.source)
+        st = os.stat(self.path)
+        self.stamp = (st.st_mtime_ns, st.st_size)
+        self.checkpoint = os.fspath(checkpoint) if checkpoint is not None else None
+        self.searches, self.designs, self.checks = _read_checkpoint(self.checkpoint, self.path, self.stamp)
+        self.stats = stats if stats is not None else {}
+        for k in ("designs_sent", "searches_sent", "checks_sent"):
+            self.stats[k] = 0
+        self.lock = threading.Lock()
+        self.stop = threading.Event()  # set when the study stops early: running searches stop at their next poll
+
+    def _save(self):
+        if self.checkpoint:
+            _write_checkpoint(self.checkpoint, self.path, self.stamp, self.searches, self.designs, self.checks)
+
+    def _batch(self, layout):
+        def batch(params):  # one task per design not evaluated yet, gathered in order
+            if self.stop.is_set():
+                raise KeyboardInterrupt("the study was stopped")
+            keys = [(layout, _params_key(p)) for p in params]
+            with self.lock:
+                missing = [i for i, k in enumerate(keys) if k not in self.designs]
+            futures = [self.client.submit(_design_task, self.path, self.stamp, layout, params[i], pure=False)
+                       for i in missing]
+            costs = self.client.gather(futures)
+            with self.lock:
+                for i, c in zip(missing, costs):
+                    self.designs[keys[i]] = c
+                self.stats["designs_sent"] += len(missing)
+                self._save()
+                return [self.designs[k] for k in keys]
+        return batch
+
+    def search(self, study, tasks, done, searching):
+        from distributed import as_completed
+
+        results = [None] * len(tasks)
+        keys = [_search_key(t) for t in tasks]
+        todo = []
+        for i, k in enumerate(keys):
+            if k in self.searches:
+                results[i] = self.searches[k]
+            else:
+                todo.append(i)
+        for i in range(len(tasks)):  # the checkpoint's first, in order
+            if results[i] is not None:
+                done(i, results[i])
+
+        def finished(i, r):
+            results[i] = r
+            with self.lock:
+                self.searches[keys[i]] = r
+                self._save()
+            done(i, r)
+
+        if not todo:
+            return results
+        if study.method == "time":
+            with concurrent.futures.ThreadPoolExecutor(max_workers=len(todo)) as pool:
+                running = {pool.submit(_inerta.run_search, study, tasks[i], batch=self._batch(tasks[i].layout)): i
+                           for i in todo}
+                try:
+                    for fut in concurrent.futures.as_completed(running):
+                        finished(running[fut], fut.result())
+                except BaseException:
+                    self.stop.set()
+                    raise
+        else:
+            futures = {self.client.submit(_search_task, self.path, self.stamp, tasks[i], pure=False): i for i in todo}
+            self.stats["searches_sent"] += len(futures)
+            for fut in as_completed(list(futures)):
+                finished(futures[fut], fut.result())
+        return results
+
+    def check(self, study, tasks):
+        keys = [(t.layout, _params_key(t.values), t.time) for t in tasks]
+        missing = [i for i, k in enumerate(keys) if k not in self.checks]
+        futures = [self.client.submit(_check_task, self.path, self.stamp, tasks[i], pure=False) for i in missing]
+        self.stats["checks_sent"] += len(futures)
+        for i, r in zip(missing, self.client.gather(futures)):
+            self.checks[keys[i]] = r
+        if missing:
+            with self.lock:
+                self._save()
+        return [self.checks[k] for k in keys]
+
+
+def optimise(study, client, *, out=None, checkpoint=None, progress=None, stats=None, force=False):
+    """inerta.optimise(study, client=client, ...): the study engine with its evaluations on the cluster."""
+    from . import optimise as _optimise
+
+    return _optimise(study, out=out, client=client, progress=progress, checkpoint=checkpoint, force=force, stats=stats)
 
 
 def _client(args):
@@ -244,44 +293,65 @@ def _main(argv=None):
         p.error("--scheduler: empty; expected the address of a running scheduler, tcp://HOST:PORT")
     checkpoint = args.checkpoint or (os.path.join(args.out, "checkpoint.pkl") if args.out else None)
     resuming = bool(checkpoint) and os.path.exists(checkpoint) and not args.force
-    if args.out and not resuming:  # a folder with its study's checkpoint is this study's: resume there
-        _inerta.prepare_output_folder(args.out, _inerta.study_output_names(), args.force)
+    study = _inerta.load_study(args.study)
     client, cluster = _client(args)
     try:
         n = len(client.scheduler_info()["workers"])
         print(f"study {args.study}: on {n} Dask worker(s) at {client.scheduler.address}"
               + (f", {'resuming from' if resuming else 'checkpoint'} {checkpoint}" if checkpoint else ""), flush=True)
-        t0 = time.perf_counter()
 
-        def report(layout, r, done, total):
-            print(f"  [{done}/{total}] {layout:<12} J = {r.cost.J:.4f} N after {r.evaluations} evaluations", flush=True)
+        def report(event, *values):
+            if event == "searched":
+                i, r = values
+                print(f"  [{i + 1}/{len(study.layouts)}] {study.layouts[i]:<12} J = {r.cost.J:.4f} N after "
+                      f"{r.evaluations} evaluations", flush=True)
+            elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
+                print(f"  [{values[0]}/{values[1]}] networks, best J2 so far {values[2]:.4f} N", flush=True)
+            elif event == "searches_done":
+                o = values[0]
+                if study.all_networks:
+                    print("\n  best networks (periodic fast path):")
+                    for r in o.results[:10]:
+                        print(f"    {r.expression:<40} J2 = {r.cost.J:.4f} N")
+                    print("  time-domain re-check (ranked by the time-domain J2):")
+                    for c in o.rechecks:
+                        e = o.entries[c.entry]
+                        print(f"    {e.reduced:<44} periodic {e.J:.4f} N, time "
+                              + (f"{c.time.J:.4f} N" if not c.failure else f"failed ({c.failure})"))
+                else:
+                    print(_inerta.study_table(study, o.default_cost, o.results), end="")
+                print(f"default suspension J2 = {o.default_cost.J:.3f} N at {o.default_cost.speed * 3.6:.0f} km/h; "
+                      f"wall {o.seconds:.1f} s", flush=True)
+            elif event == "bound":
+                b = values[0]
+                print(f"  admittance bound, degree {b.result.degree}: J = {b.result.J:.6g} N", flush=True)
+            elif event == "report" and values[2]:
+                print(f"  [{values[0]}/{values[1]}] {values[2]}", flush=True)
 
-        study, default, results = optimise(args.study, client, checkpoint=checkpoint, progress=report)
-        wall = time.perf_counter() - t0
+        out = args.out or None
+        o = optimise(args.study, client, out=out, checkpoint=checkpoint, progress=report, force=args.force)
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
-    print(_inerta.study_table(study, default, results), end="")
-    print(f"default suspension J2 = {default.J:.3f} N at {default.speed * 3.6:.0f} km/h; wall {wall:.1f} s")
     if args.out:
-        _inerta.write_study_results(args.out, study.name, default, results)
-        print(f"wrote {args.out}/results.csv and {args.out}/results.json")
-        print("post-processing for the figures (on this machine):", flush=True)
-        report = _inerta.make_report(study, results)
-        files = _inerta.write_study_report(report, args.out)
-        print("wrote " + " ".join(os.path.basename(f) for f in files) + f" in {args.out}")
-        script = os.path.join(os.environ.get("INERTA_SOURCE_DIR", ""), "scripts", "plot-study")
+        print(f"wrote the study's files in {args.out} (as `inerta optimise --out`)")
+        scripts = os.path.join(os.environ.get("INERTA_SOURCE_DIR", ""), "scripts")
         if not args.no_plots:
             import subprocess
 
-            if os.path.exists(script) and subprocess.run([script, args.out]).returncode == 0:
-                pass
-            else:
-                print(f"note: no plots (scripts/plot-study not found or failed); the CSV files in {args.out} are complete")
-    best = min(results, key=lambda r: r.cost.penalised())
-    print(f"best: {best.layout} ({best.expression}) — J2 = {best.cost.J:.3f} N at {best.cost.speed * 3.6:.0f} km/h"
-          + ("" if best.cost.feasible else f"; no design keeps the limits: {best.cost.violation}"))
+            for name in (["plot-structure"] if study.all_networks else []) + ["plot-study"]:
+                script = os.path.join(scripts, name)
+                if not (os.path.exists(script) and subprocess.run([script, args.out]).returncode == 0):
+                    print(f"note: no plots (scripts/{name} not found or failed); the CSV files in {args.out} are complete")
+    best = o.results[o.best.index]
+    if study.method == "time":
+        print(f"best: {best.layout} ({best.expression}) — J2 = {best.cost.J:.3f} N at {best.cost.speed * 3.6:.0f} km/h "
+              "(time domain)" + ("" if best.cost.feasible else f"; no design keeps the limits: {best.cost.violation}"))
+    else:
+        t = o.time_check
+        print(f"best: {best.layout} ({best.expression}) — time-domain re-check J2 = {t.J:.3f} N at {t.speed * 3.6:.0f} "
+              f"km/h (periodic {best.cost.J:.3f} N, {100 * (best.cost.J - t.J) / t.J:+.2f} %)")
     return 0
 
 

@@ -262,5 +262,6 @@ void bind_signal(py::module_& m);
 void bind_fe(py::module_& m);
 void bind_linear(py::module_& m);
 void bind_structure(py::module_& m);
+void bind_study_run(py::module_& m);
 
 }  // namespace inerta::python

@@ -85,5 +85,6 @@ PYBIND11_MODULE(_inerta, m) {
   bind_analysis(m);
   bind_optim(m);
   bind_structure(m);
+  bind_study_run(m);
   bind_identification(m);
 }

@@ -58,6 +58,20 @@ BOUND = {
     "analysis::estimated_sweep_seconds": "estimated_sweep_seconds",
     "optim::estimated_evaluation_seconds": "estimated_evaluation_seconds",
     "optim::BoundCandidate": "BoundCandidate",
+    # the study engine (optim/study_run.hpp)
+    "optim::SearchTask": "SearchTask",
+    "optim::run_search": "run_search",
+    "optim::CheckTask": "CheckTask",
+    "optim::CheckResult": "CheckResult",
+    "optim::run_check": "run_check",
+    "optim::StudyExecutor": "StudyExecutor",
+    "optim::LocalExecutor": "LocalExecutor",
+    "optim::StudyOptions": "StudyOptions",
+    "optim::Recheck": "Recheck",
+    "optim::BestDesign": "BestDesign",
+    "optim::StudyOutcome": "StudyOutcome",
+    "optim::run_study": "run_study",
+    "io::write_study_outcome": "write_study_outcome",
     "optim::AdmittanceBound": "AdmittanceBound",
     "io::write_admittance_results": "write_admittance_results",
     "optim::ModelStudyFigures": "ModelStudyFigures",
@@ -350,6 +364,11 @@ EXCLUDED = {
     "optim::structure_search": "the generic driver takes a C++ objective called from worker threads; Python calls "
                                "optimise_all on a study",
     "optim::StructureOutcome": "what a C++ objective returns to structure_search (not bound)",
+    "optim::StructureTask": "what structure_search_batched hands its C++ batch optimiser; the engine's executor "
+                            "gets the same networks as SearchTask (StudyExecutor.search)",
+    "optim::structure_search_batched": "takes a C++ batch optimiser; Python runs it through run_study's executor",
+    "optim::structure_outcome": "run_study's bridge from a network's LayoutResult to structure_search (C++ only)",
+    "optim::StudyEvents": "delivered to run_study's progress as (event, *values)",
     "optim::ModelStudyProgress": "delivered to run_model_study's progress as (done, total, best J)",
     "optim::admittance_bounds": "takes a C++ bound function; run_model_study returns a model study's bounds "
                                 "(ModelStudyResult.admittance), admittance_bound gives one",

@@ -139,6 +139,15 @@ search: {{starts: 1, seed: 1, min_step: 0.05}}
             inerta.synthesise([1.0, 1.0, 1.0], [4.0, 1.0, 1.0]), entries[0], inerta.pareto_points(entries)[0]]
     out += [inerta.admittance_bound(ms, 1, inerta.resolve("k|c", mr.values))]
     out += [inerta.floquet([[0.0, 1.0], [-1.0, -0.1]], [0.0, 1.0], lambda t: [0.0, 0.0], 1.0)]
+    so = inerta.run_study(st, inerta.StudyOptions(report=False), executor=inerta.LocalExecutor())
+    all_study = tmp_path_factory.mktemp("all") / "all.yaml"
+    all_study.write_text(f"name: all\nmodel: {model('hsx.yaml')}\ncatenary: {model('catenary.yaml')}\n"
+                         "speeds: {from: 150, to: 200, step: 50, unit: kmh}\nlayouts: all\nnetworks: {max_elements: 1}\n"
+                         "search: {starts: 1, seed: 1, min_step: 0.3}\n")
+    sa = inerta.run_study(inerta.load_study(all_study))
+    out += [so, so.best, sa, sa.rechecks[0], inerta.StudyOptions(), inerta.LocalExecutor(), inerta.SearchTask("k"),
+            inerta.CheckTask("k", {"k": 1e5}), inerta.run_check(st, inerta.CheckTask()),
+            inerta.run_search(st, inerta.SearchTask("S2-5")), inerta.run_study(inerta.load_model_study(bound_study))]
     return out
 
 

@@ -111,25 +111,30 @@ def test_a_killed_worker_loses_nothing(client):
     assert victim not in client.run(os.getpid).values()  # the nanny started a new worker process
 
 
+def same_layouts(a, b):
+    assert [r.layout for r in a] == [r.layout for r in b]
+    for x, y in zip(a, b):
+        assert pickle.dumps(x) == pickle.dumps(y)  # every field, bit for bit
+
+
 def test_a_study_resumes_from_its_checkpoint(client, study_file, tmp_path):
     cp = tmp_path / "checkpoint.pkl"
     seen = []
 
-    def stop_after_one(layout, result, done, total):
-        seen.append(layout)
-        raise KeyboardInterrupt  # as Ctrl-C after the first finished layout
+    def stop_after_one(event, *values):
+        if event == "searched":
+            seen.append(values[1].layout)
+            raise KeyboardInterrupt  # as Ctrl-C after the first finished layout
 
     with pytest.raises(KeyboardInterrupt):
         inerta.distributed.optimise(study_file, client, checkpoint=cp, progress=stop_after_one)
     assert cp.exists() and len(seen) == 1
-    resumed = []
-    study, default, results = inerta.distributed.optimise(
-        study_file, client, checkpoint=cp, progress=lambda layout, r, done, total: resumed.append((layout, done)))
-    assert seen[0] not in [l for l, _ in resumed] and len(resumed) == 3  # only the missing layouts ran
-    serial = [inerta.optimise_layout(study, l) for l in study.layouts]
-    assert [r.layout for r in results] == study.layouts
-    for a, b in zip(results, serial):
-        assert (a.values, a.cost.J, a.evaluations) == (b.values, b.cost.J, b.evaluations)
+    stats = {}
+    o = inerta.optimise(inerta.load_study(study_file), client=client, checkpoint=cp, stats=stats)
+    assert stats["searches_sent"] <= 3  # the finished layout is not run again
+    serial = inerta.optimise(inerta.load_study(study_file))
+    same_layouts(o.results, serial.results)
+    assert (o.best.layout, o.best.J2) == (serial.best.layout, serial.best.J2)
     # a checkpoint of another study is refused
     other = tmp_path / "other.yaml"
     other.write_text(STUDY.format(src=SRC).replace("S2-3]", "S2-1]"))
@@ -142,13 +147,14 @@ def test_a_time_domain_study_sends_designs_and_never_evaluates_one_twice(client,
     p.write_text(FE_STUDY.format(src=SRC))
     cp = tmp_path / "fe-checkpoint.pkl"
     stats = {}
-    study, default, results = inerta.distributed.optimise(p, client, checkpoint=cp, stats=stats)
+    o = inerta.distributed.optimise(p, client, checkpoint=cp, stats=stats)
+    study = o.study
     assert study.method == "time"
     serial = [inerta.optimise_layout(study, l) for l in study.layouts]
-    for a, b in zip(results, serial):
-        assert pickle.dumps(a) == pickle.dumps(b)  # every field, bit for bit
+    same_layouts(o.results, serial)
     searched = sum(r.evaluations for r in serial if inerta.free_parameters(r.layout))
     assert 0 < stats["designs_sent"] <= searched  # the searches' designs went to the workers
+    assert stats["checks_sent"] == 1  # the default suspension's cost
     # As if stopped after every design but before any layout was recorded: the searches replay from
     # the checkpoint's designs and send none again.
     with open(cp, "rb") as f:
@@ -158,14 +164,84 @@ def test_a_time_domain_study_sends_designs_and_never_evaluates_one_twice(client,
     with open(cp, "wb") as f:
         pickle.dump(data, f)
     again = {}
-    _, _, resumed = inerta.distributed.optimise(p, client, checkpoint=cp, stats=again)
-    assert again["designs_sent"] == 0
-    for a, b in zip(resumed, serial):
-        assert pickle.dumps(a) == pickle.dumps(b)
+    resumed = inerta.distributed.optimise(p, client, checkpoint=cp, stats=again)
+    assert again["designs_sent"] == 0 and again["checks_sent"] == 0
+    same_layouts(resumed.results, serial)
     # a design's cost on a worker is the library's
     r = serial[1]
     assert inerta.design_cost(study, r.layout, {k: r.values[k] for k in inerta.free_parameters(r.layout)}).cost == \
         r.cost.penalised()
+
+
+# A small `layouts: all` study: every network of up to two elements, one catenary, three speeds, the
+# admittance bound of degree 2 (seconds).
+ALL_STUDY = """name: small all
+model: {src}/models/hsx.yaml
+catenary: {src}/models/catenary.yaml
+speeds: {{from: 150, to: 250, step: 50, unit: kmh}}
+layouts: all
+networks: {{max_elements: 2}}
+admittance: [2]
+search: {{starts: 1, seed: 1, min_step: 0.2}}
+"""
+
+
+def result_files(folder):
+    """The files of an outcome, the wall-clock column of structure.csv/json masked."""
+    out = {}
+    for f in sorted(folder.iterdir()):
+        if f.name == "checkpoint.pkl":
+            continue
+        text = f.read_text()
+        if f.name == "structure.csv":
+            text = "\n".join(",".join(c for i, c in enumerate(l.split(",")) if i != 14) for l in text.splitlines())
+        elif f.name == "structure.json":
+            import re
+            text = re.sub(r'"seconds": [0-9.e+-]+', '"seconds": 0', text)
+        out[f.name] = text
+    return out
+
+
+def test_the_outcome_is_the_same_from_the_cli_python_and_dask(client, tmp_path):
+    p = tmp_path / "all.yaml"
+    p.write_text(ALL_STUDY.format(src=SRC))
+    python = inerta.optimise(inerta.load_study(p), out=tmp_path / "python")
+    dask = inerta.optimise(inerta.load_study(p), out=tmp_path / "dask", client=client)
+    assert python.best.verified and python.best.layout == dask.best.layout
+    assert python.best.J2 == dask.best.J2 and python.best.values == dask.best.values
+    assert [e.expression for e in python.entries] == [e.expression for e in dask.entries]
+    same_layouts(python.results, dask.results)
+    files = result_files(tmp_path / "python")
+    assert {"recheck.csv", "structure.csv", "admittance.csv", "results.csv", "report.json"} <= set(files)
+    assert (tmp_path / "dask" / "checkpoint.pkl").exists()
+    assert result_files(tmp_path / "dask") == files
+    if CLI.exists():
+        cli = subprocess.run([str(CLI), "optimise", str(p), "--out", str(tmp_path / "cli"), "--no-plots"],
+                             capture_output=True, text=True, cwd=SRC)
+        assert cli.returncode == 0, cli.stderr
+        assert result_files(tmp_path / "cli") == files
+        assert f"best: {python.best.layout} " in cli.stdout and f"J2 = {python.best.J2:.3f} N" in cli.stdout
+
+
+def test_a_killed_worker_during_a_layouts_all_study_loses_nothing(client, tmp_path):
+    p = tmp_path / "all.yaml"
+    p.write_text(ALL_STUDY.format(src=SRC))
+    before = client.run(os.getpid)
+    victim = next(iter(before.values()))
+    killed = []
+
+    def kill_once(event, *values):
+        if event == "network" and not killed:  # the first network is in: the others are running or waiting
+            os.kill(victim, signal.SIGKILL)
+            killed.append(victim)
+
+    o = inerta.optimise(inerta.load_study(p), client=client, progress=kill_once)
+    assert killed
+    serial = inerta.optimise(inerta.load_study(p))
+    same_layouts(o.results, serial.results)
+    assert o.recheck_csv() == serial.recheck_csv()
+    assert (o.best.expression, o.best.J2) == (serial.best.expression, serial.best.J2)
+    assert victim not in client.run(os.getpid).values()  # (the nanny's restart: test_a_killed_worker_loses_nothing)
 
 
 def test_cli_workers_give_the_serial_table(study_file, tmp_path):

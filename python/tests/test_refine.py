@@ -82,7 +82,8 @@ def test_a_bobyqa_refinement_on_dask_equals_the_serial_one_and_resumes(tmp_path)
     client = distributed.Client(cluster)
     try:
         stats = {}
-        study, _, results = inerta.distributed.optimise(p, client, checkpoint=cp, stats=stats)
+        o = inerta.distributed.optimise(p, client, checkpoint=cp, stats=stats)
+        study, results = o.study, o.results
         assert study.refine_optimiser == "bobyqa" and study.method == "time"
         serial = [inerta.optimise_layout(study, l) for l in study.layouts]
         for a, b in zip(results, serial):
@@ -94,7 +95,7 @@ def test_a_bobyqa_refinement_on_dask_equals_the_serial_one_and_resumes(tmp_path)
         with open(cp, "wb") as f:
             pickle.dump(data, f)
         again = {}
-        _, _, resumed = inerta.distributed.optimise(p, client, checkpoint=cp, stats=again)
+        resumed = inerta.distributed.optimise(p, client, checkpoint=cp, stats=again).results
         assert again["designs_sent"] == 0
         for a, b in zip(resumed, serial):
             assert pickle.dumps(a) == pickle.dumps(b)

@@ -84,6 +84,30 @@ def test_time_domain_recheck_equals_cli(study, cli_out):
     assert f"{check.J:.3f}" == m.group(1)
 
 
+def test_one_call_runs_the_whole_study_as_the_cli(study_file, study, cli_out, tmp_path):
+    events = []
+    o = inerta.optimise(study_file, out=tmp_path / "o", progress=lambda event, *values: events.append(event))
+    # the CLI's closing line is the engine's verified best
+    m = re.search(r"best: (\S+) \((.*)\) — time-domain re-check J2 = ([0-9.]+) N", cli_out)
+    assert (o.best.layout, o.best.expression) == (m.group(1), m.group(2)) and f"{o.best.J2:.3f}" == m.group(3)
+    best = min((inerta.optimise_layout(study, l) for l in study.layouts), key=lambda r: r.cost.penalised())
+    assert o.best.values == best.values
+    assert o.best.J2 == pytest.approx(inerta.evaluate_time(study, best.network()).J, rel=1e-9)
+    assert o.report is not None and o.time_check.J == o.best.J2
+    # events: each layout, the searches' end, then the report's steps
+    events = [e for e in events if e != "searching"]  # the searches' own progress, as many as they report
+    assert events[:3] == ["searched", "searched", "searches_done"] and set(events[3:]) == {"report"}
+    # the files are the outcome's, written again the same
+    files = {f.name: f.read_bytes() for f in (tmp_path / "o").iterdir()}
+    written = inerta.write_study_outcome(o, str(tmp_path / "again"))
+    assert sorted(p.split("/")[-1] for p in written) == sorted(files)
+    assert all((tmp_path / "again" / n).read_bytes() == b for n, b in files.items())
+    # a model study through the same call
+    mo = inerta.optimise(inerta.load_model_study(f"{SRC}/studies/tmd.yaml"))
+    assert mo.model is not None and mo.study is None
+    assert mo.best.layout == mo.model.results[mo.model.best].layout and mo.best.J == mo.model.results[mo.model.best].cost.J
+
+
 def test_study_from_python_objects(study, hsx):
     cats = [inerta.load_catenary(model("catenary.yaml"), {"catenary.kc0": k}) for k in (5000, 7000)]
     s = inerta.Study(hsx, cats, inerta.kmh(range(100, 301, 50)), ["S2-5", "S2-3"],

@@ -11,6 +11,7 @@
 
 #include "inerta/error.hpp"
 #include "inerta/network/layouts.hpp"
+#include "inerta/optim/study_run.hpp"
 
 namespace inerta::optim {
 
@@ -131,8 +132,8 @@ void describe_reduced(StructureEntry& e) {
 }
 }  // namespace
 
-std::vector<StructureEntry> structure_search(const std::vector<std::string>& expressions, const StructureOptimiser& optimise,
-                                             const StructureProgressFn& progress) {
+std::vector<StructureEntry> structure_search_batched(const std::vector<std::string>& expressions, const StructureBatch& optimise,
+                                                     const StructureProgressFn& progress) {
   const std::size_t n = expressions.size();
   std::vector<StructureEntry> entries(n);
   std::map<std::string, std::size_t> by_structure;
@@ -149,26 +150,27 @@ std::vector<StructureEntry> structure_search(const std::vector<std::string>& exp
     layers[entries[i].counts.elements].push_back(i);
     total_elements += entries[i].counts.elements;
   }
-  std::mutex mutex;
   const auto t0 = std::chrono::steady_clock::now();
   StructureProgress state;
   state.total = static_cast<int>(n);
   long elements_done = 0;
   for (const auto& [size, members] : layers) {
-    const int elements = size;
-    tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t m) {
-      const std::size_t k = members[m];
-      StructureEntry& e = entries[k];
-      const auto t = std::chrono::steady_clock::now();
-      const std::optional<Warm> warm = best_warm(e.expression, by_structure, entries, elements);
-      const StructureOutcome o =
-          optimise(k, e.expression, warm ? std::vector<network::Params>{warm->values} : std::vector<network::Params>{});
+    // Warm starts of one size come from smaller networks only: all known before the size starts.
+    std::vector<StructureTask> tasks;
+    std::vector<std::optional<Warm>> warms;
+    for (const std::size_t k : members) {
+      warms.push_back(best_warm(entries[k].expression, by_structure, entries, size));
+      tasks.push_back({k, entries[k].expression,
+                       warms.back() ? std::vector<network::Params>{warms.back()->values} : std::vector<network::Params>{}});
+    }
+    const auto layer0 = std::chrono::steady_clock::now();
+    optimise(tasks, [&](std::size_t m, const StructureOutcome& o) {
+      StructureEntry& e = entries[tasks[m].index];
       e.values = o.values, e.J = o.J, e.cost = o.cost, e.feasible = o.feasible, e.evaluations = o.evaluations;
       e.unstable = o.unstable;
-      e.warm_from = warm ? warm->from : std::string();
-      e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+      e.warm_from = warms[m] ? warms[m]->from : std::string();
+      e.seconds = o.seconds >= 0 ? o.seconds : std::chrono::duration<double>(std::chrono::steady_clock::now() - layer0).count();
       describe_reduced(e);
-      std::lock_guard<std::mutex> lock(mutex);
       ++state.done;
       elements_done += e.counts.elements;
       state.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -179,6 +181,23 @@ std::vector<StructureEntry> structure_search(const std::vector<std::string>& exp
     });
   }
   return entries;
+}
+
+std::vector<StructureEntry> structure_search(const std::vector<std::string>& expressions, const StructureOptimiser& optimise,
+                                             const StructureProgressFn& progress) {
+  return structure_search_batched(
+      expressions,
+      [&](const std::vector<StructureTask>& tasks, const std::function<void(std::size_t, const StructureOutcome&)>& done) {
+        std::mutex mutex;
+        tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t m) {
+          const auto t = std::chrono::steady_clock::now();
+          StructureOutcome o = optimise(tasks[m].index, tasks[m].expression, tasks[m].warm);
+          o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+          std::lock_guard<std::mutex> lock(mutex);
+          done(m, o);
+        });
+      },
+      progress);
 }
 
 std::vector<std::size_t> ranking(const std::vector<StructureEntry>& entries) {
@@ -229,30 +248,42 @@ network::Params prune_optimum(const std::string& expression, const network::Para
 }
 }  // namespace
 
-std::vector<StructureEntry> optimise_all(const Study& study_in, std::vector<LayoutResult>& results,
-                                         const StructureProgressFn& progress) {
+LayoutResult run_search(const Study& study_in, const SearchTask& task, const numerics::Progress& progress,
+                        const DesignBatch& batch) {
+  if (!task.network) return optimise_layout(study_in, task.layout, progress, task.warm, batch);
   Study study = study_in;
   study.search.grid_variables = std::max(study.search.grid_variables, grid_variables);
+  const std::string& expression = task.layout;
+  LayoutResult r;
+  try {
+    r = optimise_layout(study, expression, progress, task.warm, batch);
+    const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).penalised(); });
+    if (pruned != r.values) r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
+  } catch (const NumericalError&) {  // the best point's final evaluation failed: no design
+    r = LayoutResult{};
+    r.layout = r.expression = expression;
+    r.cost.J = INFINITY;
+  } catch (const ModelError&) {  // every point failed and the best is a rigid suspension
+    r = LayoutResult{};
+    r.layout = r.expression = expression;
+    r.cost.J = INFINITY;
+  }
+  return r;
+}
+
+StructureOutcome structure_outcome(const LayoutResult& r) {
+  return StructureOutcome{r.values, r.cost.J, r.cost.penalised(), r.cost.feasible && std::isfinite(r.cost.J), r.evaluations,
+                          r.unstable};
+}
+
+std::vector<StructureEntry> optimise_all(const Study& study, std::vector<LayoutResult>& results,
+                                         const StructureProgressFn& progress) {
   results.assign(study.layouts.size(), LayoutResult{});
   return structure_search(
       study.layouts,
       [&](std::size_t i, const std::string& expression, const std::vector<network::Params>& warm) {
-        LayoutResult& r = results[i];
-        try {
-          r = optimise_layout(study, expression, {}, warm);
-          const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).penalised(); });
-          if (pruned != r.values) r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
-        } catch (const NumericalError&) {  // the best point's final evaluation failed: no design
-          r = LayoutResult{};
-          r.layout = r.expression = expression;
-          r.cost.J = INFINITY;
-        } catch (const ModelError&) {  // every point failed and the best is a rigid suspension
-          r = LayoutResult{};
-          r.layout = r.expression = expression;
-          r.cost.J = INFINITY;
-        }
-        return StructureOutcome{r.values, r.cost.J, r.cost.penalised(), r.cost.feasible && std::isfinite(r.cost.J),
-                                r.evaluations, r.unstable};
+        results[i] = run_search(study, SearchTask{expression, warm, true});
+        return structure_outcome(results[i]);
       },
       progress);
 }

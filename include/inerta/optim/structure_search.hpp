@@ -40,6 +40,7 @@ struct StructureOutcome {
   bool feasible = true;
   int evaluations = 0;
   int unstable = 0;  ///< designs refused as unstable (LayoutResult::unstable)
+  double seconds = -1;  ///< wall time of the search if the optimiser measured it (structure_search_batched); < 0: not
 };
 /// Optimises the network `expression` with these further starts (complete value sets).
 using StructureOptimiser =
@@ -66,6 +67,21 @@ std::vector<StructureEntry> structure_search(const std::vector<std::string>& exp
 /// elements removed. optimise_all prunes every network's optimum with tolerance 1e-4.
 network::Params prune(const std::string& expression, network::Params values,
                       const std::function<double(const network::Params&)>& cost, double tolerance);
+
+/// One network to optimise: its index in the list, expression and further starts.
+struct StructureTask {
+  std::size_t index = 0;
+  std::string expression;
+  std::vector<network::Params> warm;
+};
+/// Optimises the (independent) networks of one size; calls done(k, outcome) for tasks[k] as each
+/// finishes, never two at once.
+using StructureBatch = std::function<void(const std::vector<StructureTask>& tasks,
+                                          const std::function<void(std::size_t, const StructureOutcome&)>& done)>;
+/// structure_search with the networks of each size handed over together (e.g. to a cluster): the
+/// same entries, as each size's warm starts come from smaller networks only.
+std::vector<StructureEntry> structure_search_batched(const std::vector<std::string>& expressions, const StructureBatch& optimise,
+                                                     const StructureProgressFn& progress = {});
 
 /// Indices of the entries from best to worst: feasible first, by cost, then by fewer reduced
 /// elements, then by the order of the list.

@@ -1,0 +1,210 @@
+// `inerta check FILE` (docs/cli.md): a model, a lumped pantograph or a catenary file.
+#include "checks.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+#include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "inerta/analysis/acceptance.hpp"
+#include "inerta/analysis/catenary_response.hpp"
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/cost_guard.hpp"
+#include "inerta/analysis/frf.hpp"
+#include "inerta/io/model_study_file.hpp"
+#include "inerta/analysis/periodic.hpp"
+#include "inerta/analysis/modal.hpp"
+#include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/lumped.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/acceptance_file.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/io/lumped_fit_file.hpp"
+#include "inerta/io/file_kind.hpp"
+#include "inerta/io/linear_model_file.hpp"
+#include "inerta/io/model_file.hpp"
+#include "inerta/io/study_file.hpp"
+#include "inerta/io/structure_results.hpp"
+#include "inerta/io/study_report.hpp"
+#include "inerta/io/study_results.hpp"
+#include "inerta/io/files.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/dynamics.hpp"
+#include "inerta/mbs/linearisation.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/network/realisation.hpp"
+#include "inerta/optim/report.hpp"
+#include "inerta/optim/study.hpp"
+#include "inerta/pantograph/suspension.hpp"
+#include "inerta/solve/integrator.hpp"
+
+namespace inerta::cli {
+
+namespace check_command {
+namespace {
+
+
+const char* joint_type_name(mbs::JointType t) {
+  switch (t) {
+    case mbs::JointType::Revolute:
+      return "revolute";
+    case mbs::JointType::Spherical:
+      return "spherical";
+    case mbs::JointType::Prismatic:
+      return "prismatic";
+    case mbs::JointType::Fixed:
+      return "fixed";
+    case mbs::JointType::Driving:
+      return "driving";
+    case mbs::JointType::Distance:
+      return "distance";
+    case mbs::JointType::Coupling:
+      return "coupling";
+  }
+  return "?";
+}
+
+std::string body_name(const mbs::Model& m, int b) {
+  return b < 0 ? "ground" : m.bodies[static_cast<std::size_t>(b)].name;
+}
+
+int check_model_file(const std::string& path, const std::vector<std::string>& sets) {
+  mbs::Model model = io::load_model(path, sets);
+  for (const auto& note : model.notes) fmt::print("note: {}\n", note);
+  fmt::print("model: {} ({})\n", model.name, path);
+  fmt::print("bodies ({}){}:\n", model.bodies.size(), model.spatial() ? ", spatial (Euler parameters)" : "");
+  for (const auto& b : model.bodies)
+    if (model.spatial())
+      fmt::print(
+          "  {:<16} m = {:<10.6g} kg  I = [{:.6g} {:.6g} {:.6g}] kg·m²  R = [{:.6g} {:.6g} {:.6g}] m  p = [{:.6g} "
+          "{:.6g} {:.6g} {:.6g}]\n",
+          b.name, b.mass, b.inertia3(0, 0), b.inertia3(1, 1), b.inertia3(2, 2), b.q0s[0], b.q0s[1], b.q0s[2], b.q0s[3],
+          b.q0s[4], b.q0s[5], b.q0s[6]);
+    else
+      fmt::print("  {:<16} m = {:<10.6g} kg  I = {:<10.6g} kg·m²  x = {:<10.6g} y = {:<10.6g} θ = {:.6g} rad\n", b.name,
+                 b.mass, b.inertia, b.q0.x(), b.q0.y(), b.q0.z());
+  fmt::print("coordinates: {}\n", model.n_coords());
+  if (model.spatial()) fmt::print("Euler-parameter normalisation equations: {}\n", model.bodies.size());
+  if (model.n_states() > 0) fmt::print("internal states of network struts: {}\n", model.n_states());
+  fmt::print("joints ({}), constraint equations: {}\n", model.joints.size(), model.n_constraints());
+  for (const auto& j : model.joints)
+    fmt::print("  {:<16} {:<10} {} - {}  ({} equation{})\n", j.name, joint_type_name(j.type),
+               body_name(model, j.body_i), body_name(model, j.body_j), j.rows(), j.rows() > 1 ? "s" : "");
+  fmt::print("force elements ({}):", model.forces.size());
+  for (const auto& f : model.forces) fmt::print(" {}", f->name());
+  fmt::print("\noutputs ({}):", model.outputs.size());
+  for (const auto& o : model.outputs) fmt::print(" {}", o.name);
+  fmt::print("\n");
+
+  mbs::AssemblyReport rep;
+  mbs::State x = mbs::assemble(model, 0.0, &rep);
+  print_assembly(stdout, model, rep);
+  mbs::Workspace ws(model);
+  mbs::evaluate_constraints(model, 0.0, x, ws);
+  Eigen::Index rank = 0;
+  if (model.n_constraints() > 0) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(ws.Cq);
+    lu.setThreshold(1e-10);
+    rank = lu.rank();
+  }
+  fmt::print("degrees of freedom: {}", model.n_coords() - rank);
+  if (rank < model.n_constraints()) fmt::print(" ({} redundant constraint equation(s)!)", model.n_constraints() - rank);
+  fmt::print("\n");
+  mbs::accelerations(model, 0.0, x, ws);  // throws if the system matrix is singular
+  fmt::print("ok\n");
+  return 0;
+}
+
+// A catenary file: its key numbers (a finite-element line from its data, without the form-finding).
+int check_catenary(const std::string& path, const std::vector<std::string>& sets) {
+  const io::CatenaryFile f = io::read_catenary_file(path, sets);
+  fmt::print("catenary: {} ({})\n", f.name, path);
+  if (f.fe) {
+    const catenary::FeCatenaryData& d = *f.fe;
+    const std::size_t n = d.dropper_x.size();
+    fmt::print("type: finite_element (messenger and contact wire as tensioned beams, droppers slack in compression)\n");
+    fmt::print("line: {} spans of {:g} m, length {:g} m, encumbrance {:g} m\n", d.spans, d.span, d.span * d.spans,
+               d.encumbrance);
+    for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
+      fmt::print("{:<13} T = {:g} N, rho A = {:g} kg/m, EI = {:g} N·m², wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n",
+                 std::string(which) + ":", w.tension, w.mass_per_length, w.EI, w.wave_speed(), 3.6 * w.wave_speed());
+    fmt::print("droppers: {} a span, {} in all; EA = {:g} N, {:g} kg/m, clamps {:g} kg (messenger), {:g} kg (contact wire)\n",
+               n, n * static_cast<std::size_t>(d.spans), d.dropper_EA, d.dropper_mass_per_length, d.clamp_mass_messenger,
+               d.clamp_mass_contact);
+    fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg{}\n", d.support_stiffness, d.support_mass,
+               d.registration_stiffness, d.registration_mass,
+               std::isnan(d.registration_uplift_limit)
+                   ? ""
+                   : fmt::format("; uplift limit {:g} m (acceptance criterion support_uplift)", d.registration_uplift_limit));
+    fmt::print("mesh: element length <= {:g} m (nodes at every dropper and mast)\n", d.element_length);
+    fmt::print("damping: Rayleigh a = {:g} 1/s, b = {:g} s; integration: HHT-alpha, alpha = {:g}, time step {:g} s\n",
+               d.rayleigh_mass, d.rayleigh_stiffness, d.hht_alpha, d.time_step);
+    if (d.solver == catenary::FeCatenaryData::Solver::Direct)
+      fmt::print("solver: direct (HHT-alpha on the whole line)\n");
+    else if (d.window_behind < 0 || d.window_ahead < 0)
+      fmt::print("solver: modal, modes below {:g} Hz, the whole line\n", d.modal_cutoff);
+    else
+      fmt::print("solver: modal, modes below {:g} Hz, a window of {} span(s) behind and {} ahead\n", d.modal_cutoff,
+                 d.window_behind, d.window_ahead);
+    if (d.section_first > 0)
+      fmt::print("analysis section: spans {} to {}\n", d.section_first, d.section_last);
+    else
+      fmt::print("analysis section: the default (the middle spans, away from the ends)\n");
+  } else {
+    fmt::print("{}\n", f.catenary->describe());
+  }
+  if (f.contact.kind == catenary::Contact::Kind::Penalty)
+    fmt::print("contact: penalty, k_s = {:g} N/m, c_s = {:g} N·s/m\n", f.contact.stiffness, f.contact.damping);
+  else
+    fmt::print("contact: bilateral\n");
+  fmt::print("ok\n");
+  return 0;
+}
+
+// `inerta check FILE`: a model, a lumped pantograph or a catenary file (io::file_kind).
+int cmd_check(const std::string& path, const std::vector<std::string>& sets) {
+  const io::FileKind kind = io::file_kind(path);
+  if (kind == io::FileKind::Catenary) return check_catenary(path, sets);
+  if (kind == io::FileKind::LumpedPantograph) {
+    const pantograph::LumpedPantographData d = io::load_lumped_pantograph_data(path, sets);
+    fmt::print("lumped pantograph: {} masses, head first: m = [{}] kg, k = [{}] N/m, c = [{}] N·s/m\n", d.mass.size(),
+               fmt::join(d.mass, ", "), fmt::join(d.stiffness, ", "), fmt::join(d.damping, ", "));
+    fmt::print("static uplift {:g} N on the lowest mass; aerodynamic uplift on the head {:g} v² + {:g} v + {:g} N (v in m/s)\n",
+               d.static_uplift, d.aero_a, d.aero_b, d.aero_c);
+  }
+  return check_model_file(path, sets);
+}
+
+std::string check_model;
+std::vector<std::string> check_sets;
+
+}  // namespace
+}  // namespace check_command
+
+Command add_check_command(CLI::App& app) {
+  using namespace check_command;
+  auto* check = app.add_subcommand("check", "Validate a model (print bodies, constraints, DOF), a lumped pantograph or a catenary file");
+  check->add_option("model", check_model, "Model, lumped pantograph or catenary file (YAML)")->required();
+  check->add_option("--set", check_sets, "Override a value NAME.KEY=VALUE of the file (repeatable)");
+  return {check, [] { return cmd_check(check_model, check_sets); }};
+}
+
+}  // namespace inerta::cli

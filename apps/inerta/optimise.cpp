@@ -1,0 +1,329 @@
+// `inerta optimise STUDY` (docs/cli.md, docs/studies.md).
+#include "checks.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "linear.hpp"
+#include "networks.hpp"
+#include "inerta/io/study_outcome.hpp"
+#include "inerta/optim/study_run.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+#include <cctype>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "inerta/analysis/acceptance.hpp"
+#include "inerta/analysis/catenary_response.hpp"
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/cost_guard.hpp"
+#include "inerta/analysis/frf.hpp"
+#include "inerta/io/model_study_file.hpp"
+#include "inerta/analysis/periodic.hpp"
+#include "inerta/analysis/modal.hpp"
+#include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/lumped.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/acceptance_file.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/io/lumped_fit_file.hpp"
+#include "inerta/io/file_kind.hpp"
+#include "inerta/io/linear_model_file.hpp"
+#include "inerta/io/model_file.hpp"
+#include "inerta/io/study_file.hpp"
+#include "inerta/io/structure_results.hpp"
+#include "inerta/io/study_report.hpp"
+#include "inerta/io/study_results.hpp"
+#include "inerta/io/files.hpp"
+#include "inerta/mbs/assembly.hpp"
+#include "inerta/mbs/dynamics.hpp"
+#include "inerta/mbs/linearisation.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/network/realisation.hpp"
+#include "inerta/optim/report.hpp"
+#include "inerta/optim/study.hpp"
+#include "inerta/pantograph/suspension.hpp"
+#include "inerta/solve/integrator.hpp"
+
+namespace inerta::cli {
+
+namespace optimise_command {
+namespace {
+
+struct OptimiseArgs {
+  std::string study, out;
+  int map = 15;
+  bool no_plots = false, force = false;
+  int workers = 0;        ///< > 0: a local Dask cluster of this many processes
+  std::string scheduler;  ///< a Dask scheduler's address
+  double max_seconds = 0;  ///< > 0: refuse a study whose estimate (at its limit of evaluations) is above
+};
+
+// `optimise --workers N | --scheduler ADDRESS`: the study on Dask, by the Python module's driver
+// (python/inerta/distributed.py), which this process becomes (exit code and Ctrl-C are its).
+int run_distributed(const OptimiseArgs& a) {
+  if (io::is_model_study(a.study))
+    throw InvalidArgument(fmt::format("--workers/--scheduler: {} is a model study; only J2 studies (catenary:) are "
+                                      "distributed so far — run it without", a.study));
+  if (a.map != 15) throw InvalidArgument("--map: not available with --workers/--scheduler (the report uses the default map)");
+  if (a.max_seconds > 0)
+    throw InvalidArgument("--max-seconds: not available with --workers/--scheduler (the cluster's cost is not estimated); "
+                          "run without it");
+  std::vector<std::string> args{INERTA_PYTHON, "-m", "inerta.distributed", "optimise", a.study};
+  if (a.workers > 0) args.insert(args.end(), {"--workers", std::to_string(a.workers)});
+  else args.insert(args.end(), {"--scheduler", a.scheduler});
+  if (!a.out.empty()) args.insert(args.end(), {"--out", a.out});
+  if (a.force) args.push_back("--force");
+  if (a.no_plots) args.push_back("--no-plots");
+  const char* old = std::getenv("PYTHONPATH");
+  const std::string path = std::string(INERTA_PYTHON_DIR) + (old && *old ? std::string(":") + old : std::string());
+  ::setenv("PYTHONPATH", path.c_str(), 1);
+  ::setenv("INERTA_SOURCE_DIR", INERTA_SOURCE_DIR, 0);
+  std::vector<char*> argv;
+  for (auto& s : args) argv.push_back(s.data());
+  argv.push_back(nullptr);
+  std::fflush(stdout);
+  ::execv(INERTA_PYTHON, argv.data());
+  throw InvalidArgument(fmt::format("--workers/--scheduler: cannot run {} ({}); the distributed driver needs Debian's "
+                                    "python3 with python3-distributed (scripts/install-deps)",
+                                    INERTA_PYTHON, std::strerror(errno)));
+}
+
+// Draws the PNGs of an `optimise --out DIR` with scripts/plot-study (python3 + matplotlib); without
+// them, a note: the CSV files are complete either way.
+void draw_plots(const std::string& dir) {
+  if (!inerta::cli::run_script("plot-study", dir))
+    fmt::print(
+        "note: no plots (scripts/plot-study needs python3 with matplotlib and numpy: Debian's python3-matplotlib, "
+        "python3-numpy, installed by scripts/install-deps); the CSV files in {} are complete, draw them later with "
+        "`scripts/plot-study {}`\n",
+        dir, dir);
+}
+
+OptimiseArgs oa;
+
+// The CLI's view of a J2 study's progress (optim::StudyEvents): a line per layout (its search on a
+// terminal), the structure search's progress, the tables after the searches, the bounds, the report's steps.
+class Printer : public optim::StudyEvents {
+ public:
+  Printer(const optim::Study& study, bool tty) : study_(study), tty_(tty), structure_(structure_progress("N")) {}
+  using optim::StudyEvents::searched;
+
+  void searching(std::size_t i, int start, int evals, double best) override {
+    if (tty_)
+      fmt::print("\r  {:<12} start {}/{}  evaluations {:>5}  best J {:.4f} N   ", study_.layouts[i], start + 1,
+                 study_.search.starts, evals, best);
+    std::fflush(stdout);
+  }
+  void searched(std::size_t i, const optim::LayoutResult& r) override {
+    if (tty_) fmt::print("\r{:80}\r", "");
+    const std::string& layout = study_.layouts[i];
+    if (study_.coarse)
+      fmt::print("  {:<12} coarse J = {:.4f} N after {} evaluations; here {:.4f} N → refined {:.4f} N ({:+.1f} %) after {} "
+                 "evaluations{}{}\n",
+                 layout, r.coarse_cost.J, r.coarse_evaluations, r.coarse_here.J, r.cost.J,
+                 100 * (r.cost.J - r.coarse_here.J) / r.coarse_here.J, r.evaluations,
+                 r.budget_exhausted ? " (budget exhausted)" : "", r.cost.feasible ? "" : "; outside the limits: " + r.cost.violation);
+    else
+      fmt::print("  {:<12} J = {:.4f} N after {} evaluations{}{}{}\n", layout, r.cost.J, r.evaluations,
+                 r.budget_exhausted ? " (budget exhausted: max_evaluations reached before min_step)" : "",
+                 r.unstable ? fmt::format("; {} unstable designs refused", r.unstable) : "",
+                 r.cost.feasible ? "" : "; outside the limits: " + r.cost.violation);
+    std::fflush(stdout);
+  }
+  void network(const optim::StructureProgress& p) override { structure_(p); }
+  void searches_done(const optim::StudyOutcome& o) override {
+    if (study_.all) {
+      print_structure(o.entries, o.default_cost.J, "N");
+      int evaluations = 0;
+      for (const auto& e : o.entries) evaluations += e.evaluations;
+      fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", o.entries.size(), evaluations, o.seconds,
+                 evaluations / o.seconds);
+      print_rechecks(o);
+    } else {
+      fmt::print("{}", io::study_table(study_, o.default_cost, o.results));
+    }
+    fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n", network::to_string(o.baseline, true),
+               o.default_cost.J, o.default_cost.speed * 3.6, o.seconds);
+    bound_ = print_admittance_bound(o.default_cost.J, "N");
+    std::fflush(stdout);
+  }
+  void bound(const optim::AdmittanceBound& b) override { bound_(b); }
+  void report(int step, int steps, const std::string& what, int done, int total) override {
+    if (step == 1 && !what.empty()) fmt::print("post-processing for the figures:\n");
+    if (!what.empty()) {
+      current_ = fmt::format("  [{}/{}] {}", step, steps, what);
+      t0_ = std::chrono::steady_clock::now();
+      fmt::print("{}{}", current_, tty_ ? "" : " ...");
+    }
+    if (tty_ && done < total && total > 1) fmt::print("\r{}: {}/{}", current_, done, total);
+    if (done == total) {
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+      if (tty_)
+        fmt::print("\r{}: {:.1f} s{:12}\n", current_, s, "");
+      else
+        fmt::print(" {:.1f} s\n", s);
+    }
+    std::fflush(stdout);
+  }
+
+ private:
+  // The fast path linearises about the static state: the best few distinct designs, re-checked by the
+  // time-domain reference and ranked by it (where the fast path is off by a few per cent, its order can
+  // be wrong: issue 24).
+  void print_rechecks(const optim::StudyOutcome& o) const {
+    fmt::print("\ntime-domain re-check of the best {} distinct designs (analysis::sweep, all catenaries and speeds), "
+               "ranked by the time-domain J2:\n",
+               std::min<std::size_t>(5, o.entries.size()));
+    fmt::print("  {:<44} {:>13} {:>13} {:>9} {:>6} {:>9}\n", "reduced network", "periodic [N]", "time [N]", "periodic", "rank",
+               "settles");
+    for (const optim::Recheck& c : o.rechecks) {
+      const auto& e = o.entries[c.entry];
+      if (!c.failure.empty()) {
+        fmt::print("  {:<44} {:>13.4f} {:>13}  ({})\n", e.reduced, e.J, "failed", c.failure);
+        continue;
+      }
+      const double J = c.time.J, settle = c.settling_spans;
+      const bool slow = settle > analysis::RunOptions{}.max_spans;
+      fmt::print("  {:<44} {:>13.4f} {:>13.4f} {:>+8.2f}% {:>6} {:>9}{}\n", e.reduced, e.J, J, 100 * (e.J - J) / J,
+                 c.periodic_rank, settle > 0 ? fmt::format("{:.0f} sp", std::ceil(settle)) : "-",
+                 slow && std::abs(e.J - J) > 0.01 * J ? "  a free vibration outlasts the time-domain run: neither J2 is settled"
+                 : std::abs(e.J - J) > 0.01 * J      ? "  the fast path is off by more than 1 %"
+                                                     : "");
+    }
+    if (o.best.verified && o.rechecks.front().periodic_rank != 1)
+      fmt::print("  the time domain ranks them differently: the best verified design is {} (fast path's #{}); "
+                 "the figures and the summary below are of it\n",
+                 o.entries[o.rechecks.front().entry].reduced, o.rechecks.front().periodic_rank);
+  }
+
+  const optim::Study& study_;
+  bool tty_;
+  optim::StructureProgressFn structure_;
+  std::function<void(const optim::AdmittanceBound&)> bound_;
+  std::string current_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
+// Structure-based design (spec/07): the study engine (optim::run_study), its progress printed, its files written.
+int cmd_optimise(const OptimiseArgs& a) {
+  if (a.workers > 0 || !a.scheduler.empty()) return run_distributed(a);
+  if (!a.out.empty()) io::prepare_output_folder(a.out, io::study_output_names(), a.force);  // before any computation
+  if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
+  optim::Study study = io::load_study(a.study);
+  const bool tty = isatty(STDOUT_FILENO);
+  if (study.all)
+    fmt::print("study {}: every network of up to {} elements ({} networks), {} catenaries, {} speeds, {} starts (seed {}) and "
+               "a warm start from the best sub-network, periodic fast path\n",
+               study.name, study.all->max_elements, study.layouts.size(), study.catenaries.size(), study.speeds.size(),
+               study.search.starts, study.search.seed);
+  else if (study.coarse)
+    fmt::print("study {}: {} layouts; each searched on the coarse study ({} catenaries, {} speeds, {} starts, seed {}, {}), "
+               "then refined here ({} catenaries, {} speeds, {}; at most {} evaluations from {})\n",
+               study.name, study.layouts.size(), study.coarse->catenaries.size(), study.coarse->speeds.size(),
+               study.coarse->search.starts, study.coarse->search.seed,
+               study.coarse->method == optim::Study::Method::Time ? "time domain" : "periodic fast path",
+               study.catenaries.size(), study.speeds.size(),
+               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study.refine.max_evaluations,
+               study.refine_candidates == 1 ? std::string("the coarse optimum")
+                                            : fmt::format("each of the {} best coarse end points", study.refine_candidates));
+  else
+    fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), {}\n", study.name,
+               study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed,
+               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path");
+  if (const double e = optim::estimated_evaluation_seconds(study); e > 0) {
+    // The time domain: its searches are bounded by their evaluations (refine.max_evaluations for
+    // a multi-fidelity study, search.max_evaluations per start otherwise).
+    const long evals = study.coarse ? static_cast<long>(study.refine.max_evaluations) * study.refine_candidates *
+                                          static_cast<long>(study.layouts.size())
+                                    : static_cast<long>(study.search.max_evaluations) * study.search.starts *
+                                          static_cast<long>(study.layouts.size());
+    if (e > 1) fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,
+                          study.catenaries.size(), study.speeds.size());
+    cost_guard(e * static_cast<double>(evals), 0, a.max_seconds, fmt::format("this study, at its limit of {} evaluations,", evals),
+               "fewer layouts, starts or search.max_evaluations, fewer speeds, or a coarse: stage");
+  }
+  std::fflush(stdout);
+  optim::StudyOptions options;
+  options.report = !a.out.empty();  // the figures' data: what --out writes
+  options.report_options.map_size = a.map;
+  Printer printer(study, tty);
+  const optim::StudyOutcome o = optim::run_study(study, options, &printer);
+  if (!a.out.empty()) {
+    const auto files = io::write_study_outcome(a.out, o);
+    fmt::print("wrote");
+    for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
+    fmt::print(" in {}\n", a.out);
+    for (const auto& c : o.report->centripetal) {
+      const optim::StudyCost on = optim::worst_of(c.on), off = optim::worst_of(c.off);
+      if (c.off_simulated)
+        fmt::print("centripetal correction, {}: J2 = {:.4f} N on, {:.4f} N off ({:+.3f} %)\n", c.design.label, on.J,
+                   off.J, 100 * (off.J - on.J) / on.J);
+      else
+        fmt::print("centripetal correction, {}: no inerter, nothing to correct\n", c.design.label);
+    }
+    if (!a.no_plots) {
+      std::fflush(stdout);
+      if (study.all && !run_script("plot-structure", a.out))
+        fmt::print("note: no pareto.png (scripts/plot-structure needs /usr/bin/python3 with matplotlib); pareto.csv is complete\n");
+      draw_plots(a.out);
+    }
+  }
+  const optim::LayoutResult& best = o.results[o.best.index];
+  if (study.method == optim::Study::Method::Time)
+    fmt::print("best: {} ({}) — J2 = {:.3f} N at {:.0f} km/h (time domain){}\n", best.layout, best.expression, best.cost.J,
+               best.cost.speed * 3.6, best.cost.feasible ? "" : "; no design keeps the limits: " + best.cost.violation);
+  else
+    fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
+               best.layout, best.expression, o.time_check.J, o.time_check.speed * 3.6, best.cost.J,
+               100 * (best.cost.J - o.time_check.J) / o.time_check.J);
+  return 0;
+}
+
+}  // namespace
+}  // namespace optimise_command
+
+Command add_optimise_command(CLI::App& app) {
+  using namespace optimise_command;
+  auto* opt = app.add_subcommand("optimise", "Optimise the suspension layouts of a study file (spec/07)");
+  opt->add_option("study", oa.study, "Study file (YAML)")->required();
+  opt->add_option("--out", oa.out,
+                  "Directory for results.csv/json, the figures' data (CSV) and their PNGs (scripts/plot-study)");
+  opt->add_option("--map", oa.map, "J2 map over (b, k): N×N points (0: none)")->capture_default_str()->check(count_in(0, 200));
+  opt->add_flag("--no-plots", oa.no_plots, "Write the figures' CSV files but do not draw the PNGs");
+  auto* workers = opt->add_option("--workers", oa.workers, "Run the layouts on a local Dask cluster of N processes (docs/distributed.md)")
+                      ->check(count_in(1, 1024));
+  opt->add_option("--scheduler", oa.scheduler, "Run the layouts on the Dask cluster of this scheduler, tcp://HOST:PORT")
+      ->excludes(workers)
+      ->check(CLI::Validator(
+          [](std::string& v) -> std::string {  // '' would run serially without a word
+            return v.find_first_not_of(" \t") == std::string::npos
+                       ? "empty; expected the address of a running scheduler, tcp://HOST:PORT"
+                       : "";
+          },
+          "ADDRESS"));
+  opt->add_option("--max-seconds", oa.max_seconds,
+                  "Refuse (exit 2) a study whose estimate at its limit of evaluations is above S seconds (default: no "
+                  "limit; the estimate is printed beyond 10 s)")
+      ->check(number_rule(analysis::max_seconds_rule));
+  opt->add_flag("--force", oa.force,
+                "Use an --out folder that is not empty: the files a study writes there are removed first");
+  return {opt, [] { return cmd_optimise(oa); }};
+}
+
+}  // namespace inerta::cli

@@ -1,0 +1,156 @@
+#pragma once
+// The study engine (docs/studies.md "One call"): a whole design study in one call — the default
+// design, the searches (named layouts, or every network of `layouts: all` warm-started from its
+// sub-networks), the time-domain re-checks, the verified best design, the admittance bounds and the
+// report's data — for J2 studies and model studies alike, with progress events, returning one
+// StudyOutcome. `inerta optimise`, `inerta.optimise` and the Dask driver all call it; where the
+// evaluations run is a StudyExecutor (here, or a cluster's workers).
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inerta/optim/admittance_search.hpp"
+#include "inerta/optim/model_study_run.hpp"
+#include "inerta/optim/report.hpp"
+#include "inerta/optim/structure_search.hpp"
+#include "inerta/optim/study.hpp"
+
+namespace inerta::optim {
+
+/// One search of a study: a layout with further starts (a network of `layouts: all`: its best
+/// sub-network's optimum).
+struct SearchTask {
+  std::string layout;
+  std::vector<network::Params> warm;
+  bool network = false;  ///< a network of `layouts: all`: a grid start (≤ 2 elements), its optimum pruned
+};
+
+/// What a search task computes: optimise_layout(study, layout, progress, warm, batch); for a network
+/// of `layouts: all` as optimise_all does (a failed search: J = ∞, no values).
+LayoutResult run_search(const Study& study, const SearchTask& task, const numerics::Progress& progress = {},
+                        const DesignBatch& batch = {});
+
+/// What a network's search result gives optim::structure_search (J, penalised cost, feasible, evaluations).
+StructureOutcome structure_outcome(const LayoutResult& result);
+
+/// One design to evaluate: the study's default suspension (`layout` empty) or a layout with its values,
+/// by the study's method or (`time`) by the time-domain reference.
+struct CheckTask {
+  std::string layout;
+  network::Params values;
+  bool time = false;
+};
+struct CheckResult {
+  StudyCost cost;
+  std::string failure;  ///< a NumericalError's message (cost.J = ∞), else ""
+};
+/// What a check task computes: evaluate or evaluate_time of the design.
+CheckResult run_check(const Study& study, const CheckTask& task);
+
+/// Where a study's evaluations run: the extension point of the CLI (LocalExecutor) and of Dask
+/// (python/inerta/distributed.py). Each result must equal run_search's / run_check's.
+class StudyExecutor {
+ public:
+  virtual ~StudyExecutor() = default;
+  /// Independent searches; results in task order. done(i, result) as each finishes (never two at
+  /// once); searching(i, start, evaluations, best) during a search, if the executor can tell.
+  virtual std::vector<LayoutResult> search(const Study& study, const std::vector<SearchTask>& tasks,
+                                           const std::function<void(std::size_t, const LayoutResult&)>& done,
+                                           const std::function<void(std::size_t, int, int, double)>& searching) = 0;
+  /// Independent evaluations; results in task order.
+  virtual std::vector<CheckResult> check(const Study& study, const std::vector<CheckTask>& tasks) = 0;
+};
+
+/// This process: named layouts one after another (each search's evaluations in parallel), the
+/// networks of one size in parallel (oneTBB), checks one after another (each in parallel inside).
+class LocalExecutor : public StudyExecutor {
+ public:
+  std::vector<LayoutResult> search(const Study& study, const std::vector<SearchTask>& tasks,
+                                   const std::function<void(std::size_t, const LayoutResult&)>& done,
+                                   const std::function<void(std::size_t, int, int, double)>& searching) override;
+  std::vector<CheckResult> check(const Study& study, const std::vector<CheckTask>& tasks) override;
+};
+
+struct StudyOutcome;
+
+/// Progress events of a study; each is called on the calling thread or serialised, in this order.
+class StudyEvents {
+ public:
+  virtual ~StudyEvents() = default;
+  /// During named layout `index`'s search: start, evaluations so far, best J so far.
+  virtual void searching(std::size_t /*index*/, int /*start*/, int /*evaluations*/, double /*best*/) {}
+  /// After named layout `index` (J2 study).
+  virtual void searched(std::size_t /*index*/, const LayoutResult&) {}
+  /// After named layout `index` (model study).
+  virtual void searched(std::size_t /*index*/, const ModelLayoutResult&) {}
+  /// `layouts: all`: after each network.
+  virtual void network(const StructureProgress&) {}
+  /// After the searches (and a `layouts: all` J2 study's re-checks): the outcome without its bounds and report.
+  virtual void searches_done(const StudyOutcome&) {}
+  /// After each admittance bound.
+  virtual void bound(const AdmittanceBound&) {}
+  /// The report's steps (ReportProgress).
+  virtual void report(int /*step*/, int /*steps*/, const std::string& /*what*/, int /*done*/, int /*total*/) {}
+};
+
+struct StudyOptions {
+  /// Compute the report's data (make_report; what `optimise --out` writes). Its time check is then the
+  /// periodic best's verification.
+  bool report = false;
+  ReportOptions report_options;
+  int rechecks = 5;  ///< `layouts: all` (J2): re-check the best few distinct feasible designs in the time domain
+};
+
+/// A `layouts: all` J2 study's time-domain re-check of one design.
+struct Recheck {
+  std::size_t entry = 0;   ///< index in StudyOutcome::entries
+  int periodic_rank = 0;   ///< its rank among the re-checked by the fast path (1: best)
+  StudyCost time;          ///< its J2 in the time domain (J = ∞ if it failed)
+  std::string failure;     ///< why the time-domain run failed, or ""
+  double settling_spans = 0;  ///< the slowest free vibration's decay (periodic path), spans; 0 if unknown
+};
+
+/// The design a study recommends.
+struct BestDesign {
+  std::size_t index = 0;  ///< in StudyOutcome::results (J2) or model->results
+  std::string layout, expression;
+  network::Params values;  ///< every element value (0 open, inf rigid)
+  network::Network net;    ///< bound
+  /// The objective of the recommendation: a J2 study's verified J2 (a periodic study's best in the time
+  /// domain, N); a model study's J.
+  double J = 0;
+  bool feasible = true;
+  /// `layouts: all` J2: the best by the time-domain re-checks (else the best by the search's ranking).
+  bool verified = false;
+};
+
+struct StudyOutcome {
+  /// A J2 study (catenary:); its parts below. A model study's whole result is `model`.
+  std::optional<Study> study;
+  std::optional<ModelStudyResult> model;
+  network::Network baseline;  ///< the default suspension
+  StudyCost default_cost;
+  /// Named layouts: in the study's order. `layouts: all`: every network, ranked best first.
+  std::vector<LayoutResult> results;
+  std::vector<StructureEntry> entries;  ///< `layouts: all`: the structure search's entries (results[k] = entries[order[k]])
+  std::vector<std::size_t> order;
+  std::vector<Recheck> rechecks;        ///< `layouts: all`: ranked by the time-domain J2
+  std::vector<AdmittanceBound> admittance;
+  std::optional<Report> report;         ///< with StudyOptions::report (J2)
+  std::optional<ModelStudyFigures> model_figures;  ///< with StudyOptions::report (model study)
+  StudyCost time_check;                 ///< the best design's J2 in the time domain (a time study: its cost)
+  BestDesign best;
+  double seconds = 0;                   ///< wall time of the default's evaluation and the searches
+  /// The re-checks as CSV (recheck.csv): network, reduced, J2 periodic and time, speed, rank, settling.
+  std::string recheck_csv() const;
+};
+
+/// Runs a whole J2 study. The executor runs the searches and evaluations (LocalExecutor if null).
+StudyOutcome run_study(const Study& study, const StudyOptions& options = {}, StudyEvents* events = nullptr,
+                       StudyExecutor* executor = nullptr);
+/// Runs a whole model study (optim::run_model_study; with options.report its figures, model_study_figures).
+StudyOutcome run_study(const ModelStudy& study, const StudyOptions& options = {}, StudyEvents* events = nullptr);
+
+}  // namespace inerta::optim

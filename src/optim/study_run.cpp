@@ -1,0 +1,233 @@
+#include "inerta/optim/study_run.hpp"
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/error.hpp"
+#include "inerta/network/layouts.hpp"
+
+namespace inerta::optim {
+
+CheckResult run_check(const Study& study, const CheckTask& task) {
+  const network::Network net = task.layout.empty() ? default_suspension(study) : design_network(task.layout, task.values);
+  CheckResult r;
+  try {
+    r.cost = task.time ? evaluate_time(study, net) : evaluate(study, net);
+  } catch (const NumericalError& e) {
+    r.failure = e.what();
+    r.cost.J = INFINITY;
+  }
+  return r;
+}
+
+std::vector<LayoutResult> LocalExecutor::search(const Study& study, const std::vector<SearchTask>& tasks,
+                                                const std::function<void(std::size_t, const LayoutResult&)>& done,
+                                                const std::function<void(std::size_t, int, int, double)>& searching) {
+  std::vector<LayoutResult> out(tasks.size());
+  const bool networks = std::any_of(tasks.begin(), tasks.end(), [](const SearchTask& t) { return t.network; });
+  if (networks) {  // the networks of one size in parallel, as optimise_all
+    std::mutex mutex;
+    tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t i) {
+      out[i] = run_search(study, tasks[i]);
+      std::lock_guard<std::mutex> lock(mutex);
+      if (done) done(i, out[i]);
+    });
+    return out;
+  }
+  for (std::size_t i = 0; i < tasks.size(); ++i) {  // one after another, each search's polls in parallel
+    numerics::Progress p;
+    if (searching) p = [&](int start, int evals, double best) { searching(i, start, evals, best); };
+    out[i] = run_search(study, tasks[i], p);
+    if (done) done(i, out[i]);
+  }
+  return out;
+}
+
+std::vector<CheckResult> LocalExecutor::check(const Study& study, const std::vector<CheckTask>& tasks) {
+  std::vector<CheckResult> out;
+  for (const auto& t : tasks) out.push_back(run_check(study, t));
+  return out;
+}
+
+std::string StudyOutcome::recheck_csv() const {
+  std::string csv = "network,reduced,J2_periodic,J2_time,v_kmh_time,periodic_rank,settling_spans\n";
+  for (const Recheck& c : rechecks) {
+    if (!c.failure.empty()) continue;
+    const auto& e = entries[c.entry];
+    csv += fmt::format("\"{}\",\"{}\",{:.10g},{:.10g},{:.6g},{},{:.6g}\n", e.expression, e.reduced, e.J, c.time.J,
+                       c.time.speed * 3.6, c.periodic_rank, c.settling_spans);
+  }
+  return csv;
+}
+
+namespace {
+
+class NoEvents : public StudyEvents {};
+
+// The best few distinct feasible designs of the fast path, re-checked in the time domain (the reference),
+// ranked by their time-domain J2 (issue 24: the fast path can be off by a few per cent).
+std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntry>& entries, int count, StudyExecutor& ex) {
+  std::vector<std::string> seen;
+  std::vector<Recheck> out;
+  std::vector<CheckTask> tasks;
+  for (std::size_t i : ranking(entries)) {
+    const auto& e = entries[i];
+    if (static_cast<int>(seen.size()) == count) break;
+    if (!e.feasible || std::find(seen.begin(), seen.end(), e.reduced_structure) != seen.end()) continue;
+    seen.push_back(e.reduced_structure);
+    Recheck c;
+    c.entry = i, c.periodic_rank = static_cast<int>(seen.size());
+    out.push_back(c);
+    tasks.push_back({e.expression, e.values, true});
+  }
+  const std::vector<CheckResult> checked = ex.check(study, tasks);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].time = checked[k].cost, out[k].failure = checked[k].failure;
+    if (!out[k].failure.empty()) continue;
+    // The slowest free vibration (Floquet multiplier of the periodic path): a time-domain run shorter
+    // than its decay measures the transient's beating, not the steady state (issue 24 item 4).
+    const auto& e = entries[out[k].entry];
+    try {
+      out[k].settling_spans = evaluate(study, network::resolve(e.expression, e.values)).settling_spans();
+    } catch (const NumericalError&) {
+    }
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Recheck& x, const Recheck& y) { return x.time.J < y.time.J; });
+  return out;
+}
+
+BestDesign best_of(const LayoutResult& r, std::size_t index) {
+  BestDesign b;
+  b.index = index;
+  b.layout = r.layout, b.expression = r.expression, b.values = r.values;
+  b.net = design_network(r.layout, r.values);  // a named layout's fixed values stay the layout's (S2-default's c)
+  b.J = r.cost.J, b.feasible = r.cost.feasible;
+  return b;
+}
+
+}  // namespace
+
+StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEvents* events_in, StudyExecutor* executor_in) {
+  NoEvents none;
+  StudyEvents& events = events_in ? *events_in : none;
+  LocalExecutor local;
+  StudyExecutor& ex = executor_in ? *executor_in : local;
+  StudyOutcome o;
+  o.study = study;
+  o.baseline = default_suspension(study);
+  const auto t0 = std::chrono::steady_clock::now();
+  {
+    const CheckResult def = ex.check(study, {CheckTask{}}).at(0);
+    if (!def.failure.empty()) throw NumericalError(def.failure);
+    o.default_cost = def.cost;
+  }
+  if (o.default_cost.unstable_speed > 0)
+    throw NumericalError(fmt::format("{}: the default suspension's periodic solution is unstable at {:.4g} km/h "
+                                     "(Floquet multiplier ≥ 1): the study has no baseline",
+                                     study.source, o.default_cost.unstable_speed * 3.6));
+  if (study.all) {
+    std::vector<LayoutResult> all(study.layouts.size());
+    o.entries = structure_search_batched(
+        study.layouts,
+        [&](const std::vector<StructureTask>& tasks, const std::function<void(std::size_t, const StructureOutcome&)>& done) {
+          std::vector<SearchTask> st;
+          for (const auto& t : tasks) st.push_back({t.expression, t.warm, true});
+          ex.search(study, st, [&](std::size_t k, const LayoutResult& r) {
+            all[tasks[k].index] = r;
+            done(k, structure_outcome(r));
+          }, {});
+        },
+        [&](const StructureProgress& p) { events.network(p); });
+    o.order = ranking(o.entries);
+    for (std::size_t i : o.order) o.results.push_back(all[i]);  // ranked: results.csv best first
+  } else {
+    std::vector<SearchTask> tasks;
+    for (const auto& l : study.layouts) tasks.push_back({l, {}, false});
+    o.results = ex.search(
+        study, tasks, [&](std::size_t i, const LayoutResult& r) { events.searched(i, r); },
+        [&](std::size_t i, int start, int evals, double best) { events.searching(i, start, evals, best); });
+  }
+  o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (o.results.empty()) throw InvalidArgument(study.source + ": the study has no layouts");
+  std::size_t best = 0;
+  for (std::size_t i = 0; i < o.results.size(); ++i)
+    if (o.results[i].cost.penalised() < o.results[best].cost.penalised()) best = i;  // within the limits first
+  int verified = -1;
+  if (study.all) {
+    o.rechecks = recheck(study, o.entries, options.rechecks, ex);
+    if (!o.rechecks.empty() && o.rechecks.front().failure.empty())  // the time domain has the last word
+      verified = static_cast<int>(std::find(o.order.begin(), o.order.end(), o.rechecks.front().entry) - o.order.begin());
+  }
+  if (verified >= 0) best = static_cast<std::size_t>(verified);
+  o.best = best_of(o.results[best], best);
+  o.best.verified = verified >= 0;
+  events.searches_done(o);
+  if (!study.admittance_degrees.empty()) {
+    std::vector<BoundCandidate> cands{
+        {"default " + network::to_string(o.baseline, true), o.baseline, o.default_cost.J, o.default_cost.J}};
+    for (const auto& r : o.results) try {  // a layout without a design (values missing) is skipped
+        const network::Network net = design_network(r.layout, r.values);
+        cands.push_back({r.layout + " " + network::to_string(net, true), net, r.cost.J, r.cost.J});
+      } catch (const network::NetworkError&) {
+      }
+    o.admittance = admittance_bounds(
+        study.admittance_degrees, cands, [&](int d, const network::Network& w) { return admittance_bound(study, d, w); },
+        [&](const AdmittanceBound& b) { events.bound(b); });
+  }
+  // The best design verified by the time domain (the reference): a periodic study's in the report's
+  // post-processing (its σ(v) with the centripetal correction on) or by itself.
+  if (options.report) {
+    ReportOptions ro = options.report_options;
+    ro.best = static_cast<int>(best);
+    o.report = make_report(study, o.results, ro, [&](int step, int steps, const std::string& what, int done, int total) {
+      events.report(step, steps, what, done, total);
+    });
+    o.time_check = o.report->time_check;
+  } else if (study.method == Study::Method::Time) {
+    o.time_check = o.results[best].cost;
+  } else if (verified >= 0) {
+    o.time_check = o.rechecks.front().time;
+  } else {
+    const CheckResult c = ex.check(study, {CheckTask{o.best.layout, o.best.values, true}}).at(0);
+    if (!c.failure.empty()) throw NumericalError(c.failure);
+    o.time_check = c.cost;
+  }
+  if (study.method == Study::Method::Periodic) o.best.J = o.time_check.J;
+  return o;
+}
+
+StudyOutcome run_study(const ModelStudy& study, const StudyOptions& options, StudyEvents* events_in) {
+  NoEvents none;
+  StudyEvents& events = events_in ? *events_in : none;
+  ModelStudyProgress p;
+  p.searching = [&](std::size_t l, int start, int evals, double best) { events.searching(l, start, evals, best); };
+  p.finished = [&](std::size_t l, const ModelLayoutResult& r) { events.searched(l, r); };
+  p.structure = [&](const StructureProgress& s) { events.network(s); };
+  StudyOutcome o;
+  p.searched = [&](const ModelStudyResult& r) {
+    o.model = r;
+    events.searches_done(o);
+  };
+  p.bound = [&](const AdmittanceBound& b) { events.bound(b); };
+  o.model = run_model_study(study, p);
+  const ModelStudyResult& r = *o.model;
+  o.baseline = r.baseline;
+  o.seconds = r.seconds;
+  if (!r.results.empty()) {
+    const ModelLayoutResult& b = r.results[r.best];
+    o.best.index = r.best;
+    o.best.layout = b.layout, o.best.expression = b.expression, o.best.values = b.values;
+    o.best.net = network::resolve(b.layout, b.values);
+    o.best.J = b.cost.J, o.best.feasible = b.cost.feasible;
+  }
+  if (options.report) o.model_figures = model_study_figures(r);
+  return o;
+}
+
+}  // namespace inerta::optim

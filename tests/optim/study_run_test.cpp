@@ -1,0 +1,127 @@
+// The study engine (optim/study_run.hpp): one call runs a whole study, with events, through an executor.
+#include "inerta/optim/study_run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "inerta/io/study_file.hpp"
+#include "inerta/network/layouts.hpp"
+#include "support/temp.hpp"
+
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_optim_study_run {
+
+using namespace inerta;
+
+namespace {
+using inerta::testing::write_study;
+std::string study_text(const std::string& layouts, const std::string& extra) {
+  return std::string("name: engine\nmodel: ") + INERTA_SOURCE_DIR + "/models/hsx.yaml\ncatenary: " + INERTA_SOURCE_DIR +
+         "/models/catenary.yaml\nspeeds: {from: 150, to: 250, step: 50, unit: kmh}\nlayouts: " + layouts + "\n" + extra;
+}
+
+// Records the events in order.
+struct Recorder : optim::StudyEvents {
+  using optim::StudyEvents::searched;
+  std::vector<std::string> seen;
+  void searched(std::size_t i, const optim::LayoutResult&) override { seen.push_back("searched " + std::to_string(i)); }
+  void network(const optim::StructureProgress&) override { seen.push_back("network"); }
+  void searches_done(const optim::StudyOutcome&) override { seen.push_back("searches_done"); }
+  void bound(const optim::AdmittanceBound&) override { seen.push_back("bound"); }
+};
+
+// Runs every search of a batch in reverse order and reports them so (as a cluster might): the engine
+// must not depend on the order in which an executor finishes.
+struct ReverseExecutor : optim::StudyExecutor {
+  int searches = 0, checks = 0;
+  std::vector<optim::LayoutResult> search(const optim::Study& s, const std::vector<optim::SearchTask>& tasks,
+                                          const std::function<void(std::size_t, const optim::LayoutResult&)>& done,
+                                          const std::function<void(std::size_t, int, int, double)>&) override {
+    std::vector<optim::LayoutResult> out(tasks.size());
+    for (std::size_t k = tasks.size(); k-- > 0;) {
+      out[k] = optim::run_search(s, tasks[k]);
+      ++searches;
+      done(k, out[k]);
+    }
+    return out;
+  }
+  std::vector<optim::CheckResult> check(const optim::Study& s, const std::vector<optim::CheckTask>& tasks) override {
+    std::vector<optim::CheckResult> out;
+    for (const auto& t : tasks) out.push_back(optim::run_check(s, t)), ++checks;
+    return out;
+  }
+};
+}  // namespace
+
+TEST(StudyRun, TheDefaultDesignCanWinAndIsVerifiedWithItsOwnNetwork) {
+  // A spring of at most 2 N/m (or open, or rigid) cannot carry the head: S2-default (k–c, c fixed at
+  // 10440 N·s/m) wins. Its closing time-domain check uses the layout's network, not the listed values
+  // (resolving S2-default with c given would refuse it).
+  const optim::Study s =
+      io::load_study(write_study("engine_default_wins.yaml", study_text("[S2-default, k]", "search: {starts: 1, seed: 1, lo: 1, hi: 2, min_step: 0.1}\n")));
+  const optim::StudyOutcome o = optim::run_study(s);
+  ASSERT_EQ(o.results.size(), 2u);
+  ASSERT_LT(o.results[0].cost.penalised(), o.results[1].cost.penalised());  // the premise: k is worse
+  EXPECT_EQ(o.best.layout, "S2-default");
+  EXPECT_EQ(o.best.index, 0u);
+  EXPECT_EQ(network::to_string(o.best.net, true), network::to_string(optim::default_suspension(s), true));
+  const optim::StudyCost t = optim::evaluate_time(s, optim::default_suspension(s));
+  EXPECT_DOUBLE_EQ(o.time_check.J, t.J);
+  EXPECT_DOUBLE_EQ(o.best.J, t.J);  // the verified J2 of a periodic study is the time domain's
+  EXPECT_DOUBLE_EQ(o.default_cost.J, optim::evaluate(s, optim::default_suspension(s)).J);
+}
+
+TEST(StudyRun, NamedLayoutsGiveOptimiseLayoutsResultsAndEventsInOrder) {
+  const optim::Study s =
+      io::load_study(write_study("engine_named.yaml", study_text("[k, S2-5]", "search: {starts: 1, seed: 2, min_step: 0.2}\n")));
+  Recorder events;
+  const optim::StudyOutcome o = optim::run_study(s, {}, &events);
+  ASSERT_EQ(o.results.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const optim::LayoutResult r = optim::optimise_layout(s, s.layouts[i]);
+    EXPECT_EQ(o.results[i].values, r.values);
+    EXPECT_DOUBLE_EQ(o.results[i].cost.J, r.cost.J);
+  }
+  EXPECT_EQ(events.seen, (std::vector<std::string>{"searched 0", "searched 1", "searches_done"}));
+  const std::size_t best = o.results[0].cost.penalised() <= o.results[1].cost.penalised() ? 0 : 1;
+  EXPECT_EQ(o.best.index, best);
+  EXPECT_FALSE(o.best.verified);
+  EXPECT_FALSE(o.report.has_value());
+}
+
+TEST(StudyRun, AnExecutorThatFinishesInAnotherOrderGivesTheSameOutcome) {
+  const optim::Study s = io::load_study(write_study(
+      "engine_all.yaml", study_text("all", "networks: {max_elements: 2}\nadmittance: [2]\nsearch: {starts: 1, seed: 1, min_step: 0.2}\n")));
+  Recorder events;
+  const optim::StudyOutcome here = optim::run_study(s, {}, &events);
+  ReverseExecutor reverse;
+  const optim::StudyOutcome there = optim::run_study(s, {}, nullptr, &reverse);
+  EXPECT_EQ(reverse.searches, static_cast<int>(s.layouts.size()));  // every network went through the executor
+  EXPECT_GE(reverse.checks, 2);  // the default and the re-checks
+  ASSERT_EQ(here.entries.size(), there.entries.size());
+  for (std::size_t i = 0; i < here.entries.size(); ++i) {
+    EXPECT_EQ(here.entries[i].values, there.entries[i].values) << here.entries[i].expression;
+    EXPECT_EQ(here.entries[i].J, there.entries[i].J);
+    EXPECT_EQ(here.entries[i].warm_from, there.entries[i].warm_from);
+  }
+  EXPECT_EQ(here.recheck_csv(), there.recheck_csv());
+  EXPECT_EQ(here.best.expression, there.best.expression);
+  EXPECT_EQ(here.best.J, there.best.J);
+  // The best design is the re-checks' best, with its time-domain J2.
+  ASSERT_FALSE(here.rechecks.empty());
+  EXPECT_TRUE(here.best.verified);
+  EXPECT_EQ(here.best.expression, here.entries[here.rechecks.front().entry].expression);
+  EXPECT_DOUBLE_EQ(here.best.J, here.rechecks.front().time.J);
+  for (std::size_t k = 1; k < here.rechecks.size(); ++k) EXPECT_LE(here.rechecks[k - 1].time.J, here.rechecks[k].time.J);
+  ASSERT_EQ(here.admittance.size(), 1u);
+  // Events: a network event each, then the searches' end, then the bound.
+  EXPECT_EQ(std::count(events.seen.begin(), events.seen.end(), "network"), static_cast<long>(s.layouts.size()));
+  EXPECT_EQ(events.seen[s.layouts.size()], "searches_done");
+  EXPECT_EQ(events.seen.back(), "bound");
+}
+
+}  // namespace test_optim_study_run
