@@ -20,9 +20,10 @@ std::vector<std::string> direct(std::vector<std::string> sets) {
   return sets;
 }
 
-void run_line(benchmark::State& state, const char* model, double kmh, const std::vector<std::string>& sets) {
+void run_line(benchmark::State& state, const char* model, double kmh, const std::vector<std::string>& sets,
+              const char* line = kFe) {
   const pantograph::Pantograph p = io::load_pantograph(std::string(INERTA_SOURCE_DIR) + "/models/" + model);
-  io::CatenaryFile c = io::load_catenary(kFe, sets);
+  io::CatenaryFile c = io::load_catenary(line, sets);
   c.catenary->prepare({{p, 0.0, c.contact}});  // a modal line's decomposition, outside the timing
   for (auto _ : state) {
     auto sys = c.catenary->couple(p, c.contact, kmh / 3.6);
@@ -139,3 +140,26 @@ static void BM_FeModalHsxSweep21(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FeModalHsxSweep21)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Issue 34: the stitched line (models/catenary-fe-stitched.yaml, 10 spans of 65 m) against the simple
+// line with the 3-mass at 300 km/h, modes decomposed outside the timing (as with the mode store);
+// an irregular line (5 mm dropper-length std) against the perfect one at 250 km/h.
+const char* kFeStitched = INERTA_SOURCE_DIR "/models/catenary-fe-stitched.yaml";
+static void BM_FeModal3Mass300kmhWarm(benchmark::State& state) { run_line(state, "pantograph-3mass.yaml", 300, {}); }
+BENCHMARK(BM_FeModal3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(3);
+static void BM_FeStitched3Mass300kmhWarm(benchmark::State& state) {
+  run_line(state, "pantograph-3mass.yaml", 300, {}, kFeStitched);
+}
+BENCHMARK(BM_FeStitched3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(3);
+static void BM_FeStitchedDisabled3Mass300kmhWarm(benchmark::State& state) {
+  run_line(state, "pantograph-3mass.yaml", 300, {"stitch.enabled=false"}, kFeStitched);
+}
+BENCHMARK(BM_FeStitchedDisabled3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(3);
+static void BM_FeIrregular3Mass250kmhWarm(benchmark::State& state) {
+  run_line(state, "pantograph-3mass.yaml", 250, {"irregularity.dropper_length_std=0.005", "irregularity.seed=7"});
+}
+BENCHMARK(BM_FeIrregular3Mass250kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(3);
+static void BM_FeIrregular3Mass250kmhCold(benchmark::State& state) {
+  run_cold(state, "pantograph-3mass.yaml", 250, {"irregularity.dropper_length_std=0.005", "irregularity.seed=7"});
+}
+BENCHMARK(BM_FeIrregular3Mass250kmhCold)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -92,9 +92,13 @@ int cmd_catenary_fit(const FitArgs& a) {
              d.nominal_dropper_length.empty() ? "" : " [nominal]");
   for (const auto& dr : line.droppers()) {
     if (dr.x < (fit.span - 1) * d.span || dr.x > fit.span * d.span) continue;
-    const auto j = static_cast<std::size_t>(&dr - line.droppers().data()) % d.dropper_x.size();
-    fmt::print("  {:7.2f}  {:.4f}{}  {:7.2f}\n", dr.x, dr.length,
-               d.nominal_dropper_length.empty() ? "" : fmt::format(" [{:.3f}]", d.nominal_dropper_length[j]), dr.tension);
+    const bool span_dropper = dr.kind == catenary::FeLine::Dropper::Kind::Span;
+    const auto j = static_cast<std::size_t>(dr.index);
+    fmt::print("  {:7.2f}  {:.4f}{}  {:7.2f}{}\n", dr.x, dr.length,
+               d.nominal_dropper_length.empty() ? ""
+               : span_dropper                   ? fmt::format(" [{:.3f}]", d.nominal_dropper_length[j])
+                                                : std::string(" [  -  ]"),
+               dr.tension, span_dropper ? "" : dr.on_stitch_wire ? "  (stitch dropper, on the stitch wire)" : "  (stitch dropper, on the messenger)");
   }
   fmt::print("fitted span {} ({:g} … {:g} m): elasticity {:.3f} … {:.3f} mm/N\n", fit.span, (fit.span - 1) * d.span,
              fit.span * d.span, 1e3 * *std::min_element(fit.elasticity.begin(), fit.elasticity.end()),

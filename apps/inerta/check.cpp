@@ -149,6 +149,37 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
     fmt::print("droppers: {} a span, {} in all; EA = {:g} N, {:g} kg/m, clamps {:g} kg (messenger), {:g} kg (contact wire)\n",
                n, n * static_cast<std::size_t>(d.spans), d.dropper_EA, d.dropper_mass_per_length, d.clamp_mass_messenger,
                d.clamp_mass_contact);
+    if (d.stitch.present) {
+      const catenary::FeStitch& st = d.stitch;
+      const std::size_t ns = st.dropper_x.size();
+      fmt::print("stitch: {}; {:g} m centred on each interior mast (none at the 2 end masts), T = {:g} N, rho A = {:g} "
+                 "kg/m, EI = {:g} N·m², clamps {:g} kg; ends clamped to the messenger\n",
+                 st.enabled ? "enabled" : "disabled (its droppers hang from the messenger)", st.length, st.wire.tension,
+                 st.wire.mass_per_length, st.wire.EI, st.clamp_mass);
+      fmt::print("stitch droppers: at {} m from each mast ({} a span, {} in all); EA = {:g} N, {:g} kg/m, clamps {:g} kg "
+                 "(stitch), {:g} kg (contact wire)\n",
+                 fmt::join(st.dropper_x, ", "), ns, ns * static_cast<std::size_t>(d.spans), st.dropper_EA,
+                 st.dropper_mass_per_length, st.clamp_mass_stitch, st.clamp_mass_contact);
+    }
+    {
+      const catenary::FeIrregularity& irr = d.irregularity;
+      if (!irr.any()) {
+        fmt::print("irregularity: none (a perfect line)\n");
+      } else {
+        if (irr.dropper_length_std > 0)
+          fmt::print("irregularity: random dropper-length errors, std {:g} m, seed {} (normal, truncated at ±4 std)\n",
+                     irr.dropper_length_std, irr.seed);
+        if (!irr.dropper_length_errors.empty())
+          fmt::print("irregularity: explicit dropper-length errors for {} droppers, largest {:g} m\n",
+                     irr.dropper_length_errors.size(),
+                     *std::max_element(irr.dropper_length_errors.begin(), irr.dropper_length_errors.end(),
+                                       [](double a, double b) { return std::abs(a) < std::abs(b); }));
+        if (!irr.height_error_x.empty())
+          fmt::print("irregularity: contact-wire height errors from {} ({} points)\n", irr.height_errors_file,
+                     irr.height_error_x.size());
+        for (const auto& pm : irr.point_masses) fmt::print("irregularity: point mass {:g} kg at x = {:g} m\n", pm.mass, pm.x);
+      }
+    }
     fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg{}\n", d.support_stiffness, d.support_mass,
                d.registration_stiffness, d.registration_mass,
                std::isnan(d.registration_uplift_limit)

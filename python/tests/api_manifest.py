@@ -441,6 +441,14 @@ EXCLUDED = {
     "numerics::band_cholesky_solve_rows": "band-matrix helper of the modal solve (numerics/band.hpp), tested in C++",
     "numerics::band_inverse": "band-matrix helper of the modal solve (numerics/band.hpp), tested in C++",
     "numerics::eigenvalues_below": "the inertia count of lowest_modes (see there), tested in C++",
+    "numerics::Xoshiro256": "the portable random source of the line's irregularities (irregularity.seed); "
+                            "NumPy has its own generators",
+    "numerics::portable_log": "part of numerics::Xoshiro256 (see there)",
+    "catenary::FeStitch": "the stitch section of a finite-element catenary file; Python reads it with "
+                          "read_fe_catenary_data and sets it with the --set keys (stitch.*) as overrides",
+    "catenary::FeIrregularity": "the irregularity section of a finite-element catenary file (irregularity.*), "
+                                "read from files and overrides",
+    "catenary::dropper_length_errors": "the random dropper-length errors of FeIrregularity (see there)",
     "catenary::StoredModes": "result of ModeStore::load (see there)",
     "optim::operating_length": "the operating point of `--relaxed` (CLI); Study.operating_length holds it per "
                                "catenary",

@@ -11,13 +11,20 @@ double mesh_unknowns(const FeCatenaryData& d) {
   // FeLine's mesh: stations at the masts and droppers, each interval in ceil(length / h) elements.
   double per_span = 0, prev = 0;
   std::vector<double> marks = d.dropper_x;
+  if (d.stitch.present) {  // its droppers and (with the stitch wire) its clamps are stations too
+    for (double p : d.stitch.dropper_x) marks.push_back(p > 0 ? p : d.span + p);
+    if (d.has_stitch()) marks.push_back(0.5 * d.stitch.length), marks.push_back(d.span - 0.5 * d.stitch.length);
+    std::sort(marks.begin(), marks.end());
+  }
   marks.push_back(d.span);
   for (double x : marks) {
     per_span += std::max(1.0, std::ceil((x - prev) / d.element_length - 1e-9));
     prev = x;
   }
   const double nodes = per_span * d.spans + 1;
-  return 4 * nodes - 4;  // w and θ of both wires at every node; w fixed at both ends
+  double stitch = 0;  // w and θ of a stitch wire at its stations (its clamps' w are the messenger's)
+  if (d.has_stitch()) stitch = (2 * std::ceil(d.stitch.length / d.element_length) - 1) * (d.spans - 1);
+  return 4 * nodes - 4 + stitch;  // w and θ of both wires at every node; w fixed at both ends
 }
 
 FeCostEstimate estimate_cost(const FeCatenaryData& d, const std::vector<double>& x0, double speed, double t_end,

@@ -5,6 +5,7 @@
 
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/error.hpp"
+#include "inerta/numerics/random.hpp"
 
 namespace inerta::catenary {
 
@@ -27,6 +28,14 @@ void wire(const char* which, const FeWire& w) {
   non_negative(which, "EI", w.EI, "N·m²");
 }
 }  // namespace
+
+std::vector<double> dropper_length_errors(const FeIrregularity& irr, std::size_t count) {
+  std::vector<double> e(count, 0.0);
+  if (!(irr.dropper_length_std > 0)) return e;
+  numerics::Xoshiro256 rng(irr.seed);
+  for (double& v : e) v = irr.dropper_length_std * rng.truncated_normal(4.0);
+  return e;
+}
 
 void FeCatenaryData::validate() const {
   positive("line", "span", span, "m");
@@ -100,6 +109,104 @@ void FeCatenaryData::validate() const {
   if (window_ahead < -1 || window_ahead > 1000)
     throw InvalidArgument("finite-element catenary: solver", "window_ahead",
                           fmt::format("must be a number of spans >= 0, or −1 for the whole line, got {}", window_ahead));
+  if (stitch.present) {
+    const FeStitch& st = stitch;
+    positive("stitch", "length", st.length, "m");
+    if (!(st.length < span))
+      throw InvalidArgument("finite-element catenary: stitch", "length",
+                            fmt::format("must be shorter than the span ({} m): the stitch wires of two masts would "
+                                        "overlap, got {} m",
+                                        span, st.length));
+    positive("stitch", "tension", st.wire.tension, "N");
+    positive("stitch", "mass_per_length", st.wire.mass_per_length, "kg/m");
+    non_negative("stitch", "EI", st.wire.EI, "N·m²");
+    non_negative("stitch", "clamp_mass", st.clamp_mass, "kg");
+    positive("stitch", "droppers.EA", st.dropper_EA, "N");
+    non_negative("stitch", "droppers.mass_per_length", st.dropper_mass_per_length, "kg/m");
+    non_negative("stitch", "droppers.clamp_mass_stitch", st.clamp_mass_stitch, "kg");
+    non_negative("stitch", "droppers.clamp_mass_contact", st.clamp_mass_contact, "kg");
+    if (st.dropper_x.empty())
+      throw InvalidArgument("finite-element catenary: stitch", "droppers.x",
+                            "at least one stitch dropper is needed (signed positions from the mast, m)");
+    for (std::size_t i = 0; i < st.dropper_x.size(); ++i) {
+      const double x = st.dropper_x[i];
+      if (!(std::abs(x) < 0.5 * st.length && x != 0) || (i > 0 && !(x > st.dropper_x[i - 1])))
+        throw InvalidArgument("finite-element catenary: stitch", fmt::format("droppers.x[{}]", i),
+                              fmt::format("must increase strictly, be non-zero and lie inside the stitch wire "
+                                          "(|x| < length/2 = {} m from the mast), got {} m",
+                                          0.5 * st.length, x));
+    }
+    if (!st.dropper_presag.empty() && st.dropper_presag.size() != st.dropper_x.size())
+      throw InvalidArgument("finite-element catenary: stitch", "droppers.presag",
+                            fmt::format("needs one value per stitch dropper ({}), got {}", st.dropper_x.size(),
+                                        st.dropper_presag.size()));
+    for (std::size_t i = 0; i < st.dropper_presag.size(); ++i)
+      if (!std::isfinite(st.dropper_presag[i]) || std::abs(st.dropper_presag[i]) >= encumbrance)
+        throw InvalidArgument("finite-element catenary: stitch", fmt::format("droppers.presag[{}]", i),
+                              fmt::format("must be finite and smaller than the encumbrance ({} m), got {} m",
+                                          encumbrance, st.dropper_presag[i]));
+    for (std::size_t i = 0; i < dropper_x.size(); ++i)
+      if (dropper_x[i] <= 0.5 * st.length || dropper_x[i] >= span - 0.5 * st.length)
+        throw InvalidArgument("finite-element catenary: droppers", fmt::format("x[{}]", i),
+                              fmt::format("{} m lies within the stitch wire (stitch.length/2 = {} m from a mast): "
+                                          "droppers.x holds only the droppers outside the stitch; a dropper near the "
+                                          "mast goes in stitch.droppers.x (signed, from the mast)",
+                                          dropper_x[i], 0.5 * st.length));
+  }
+  {
+    const FeIrregularity& irr = irregularity;
+    non_negative("irregularity", "dropper_length_std", irr.dropper_length_std, "m");
+    if (irr.dropper_length_std > 0.1)
+      throw InvalidArgument("finite-element catenary: irregularity", "dropper_length_std",
+                            fmt::format("must be <= 0.1 m (dropper-length errors are millimetres), got {} m",
+                                        irr.dropper_length_std));
+    const std::size_t count = static_cast<std::size_t>(spans) *
+                              (dropper_x.size() + (stitch.present ? stitch.dropper_x.size() : 0));
+    if (!irr.dropper_length_errors.empty() && irr.dropper_length_errors.size() != count)
+      throw InvalidArgument("finite-element catenary: irregularity", "dropper_length_errors",
+                            fmt::format("needs one value per dropper of the line in line order ({} = {} spans × {} "
+                                        "droppers a span, stitch droppers included), got {}",
+                                        count, spans, count / static_cast<std::size_t>(spans),
+                                        irr.dropper_length_errors.size()));
+    for (std::size_t i = 0; i < irr.dropper_length_errors.size(); ++i)
+      if (!std::isfinite(irr.dropper_length_errors[i]) || std::abs(irr.dropper_length_errors[i]) > 0.5)
+        throw InvalidArgument("finite-element catenary: irregularity", fmt::format("dropper_length_errors[{}]", i),
+                              fmt::format("must be finite and at most 0.5 m in size, got {} m",
+                                          irr.dropper_length_errors[i]));
+    const std::vector<double>& hx = irr.height_error_x;
+    if (hx.size() != irr.height_error_dz.size())
+      throw InvalidArgument("finite-element catenary: irregularity", "height_errors",
+                            "x and dz columns differ in length");
+    if (!hx.empty()) {
+      for (std::size_t i = 0; i < hx.size(); ++i) {
+        if (!std::isfinite(hx[i]) || !std::isfinite(irr.height_error_dz[i]))
+          throw InvalidArgument("finite-element catenary: irregularity", "height_errors",
+                                fmt::format("{}: row {} is not a finite number", irr.height_errors_file, i + 1));
+        if (i > 0 && !(hx[i] > hx[i - 1]))
+          throw InvalidArgument("finite-element catenary: irregularity", "height_errors",
+                                fmt::format("{}: x must increase strictly, got {} m after {} m (row {})",
+                                            irr.height_errors_file, hx[i], hx[i - 1], i + 1));
+        if (!(std::abs(irr.height_error_dz[i]) < encumbrance))
+          throw InvalidArgument("finite-element catenary: irregularity", "height_errors",
+                                fmt::format("{}: Δz = {} m at x = {} m is not smaller than the encumbrance",
+                                            irr.height_errors_file, irr.height_error_dz[i], hx[i]));
+      }
+      if (hx.size() < 2 || hx.front() > 0 || hx.back() < span * spans)
+        throw InvalidArgument("finite-element catenary: irregularity", "height_errors",
+                              fmt::format("{}: the profile must cover the line [0, {} m] (at least two rows), it covers "
+                                          "[{}, {}] m",
+                                          irr.height_errors_file, span * spans, hx.front(), hx.back()));
+    }
+    for (std::size_t i = 0; i < irr.point_masses.size(); ++i) {
+      const FeIrregularity::PointMass& pm = irr.point_masses[i];
+      if (!(pm.x >= 0 && pm.x <= span * spans))
+        throw InvalidArgument("finite-element catenary: irregularity", fmt::format("point_masses[{}]", i),
+                              fmt::format("x = {} m is off the line [0, {} m]", pm.x, span * spans));
+      if (!(pm.mass >= 0) || !std::isfinite(pm.mass))
+        throw InvalidArgument("finite-element catenary: irregularity", fmt::format("point_masses[{}]", i),
+                              fmt::format("mass must be >= 0 (kg), got {}", pm.mass));
+    }
+  }
   if (section_first != -1 || section_last != -1)
     if (section_first < 1 || section_last < section_first || section_last > spans)
       throw InvalidArgument("finite-element catenary: section", "spans",

@@ -57,7 +57,8 @@ LumpedFit fit_lumped(const FeLine& line, int span, int points) {
     fit.rms_error += err * err / points;
   }
   // Moving average of the FE elasticity over one dropper spacing (periodic over the span).
-  const double spacing = L / static_cast<double>(d.dropper_x.size() + 1);
+  const std::size_t per_span = d.dropper_x.size() + (d.stitch.present ? d.stitch.dropper_x.size() : 0);
+  const double spacing = L / static_cast<double>(per_span + 1);
   const int half = std::max(0, static_cast<int>(std::lround(0.5 * spacing / (L / points))));
   for (int i = 0; i < points; ++i) {
     double s = 0;

@@ -44,6 +44,15 @@ void hermite(double xi, double l, std::array<double, 4>& N, std::array<double, 4
   dN = {(-6 * xi + 6 * x2) / l, 1 - 4 * xi + 3 * x2, (6 * xi - 6 * x2) / l, -2 * xi + 3 * x2};
 }
 
+// The height-error profile at x (linear between its points; validate() has checked it covers the line).
+double height_error_at(const FeIrregularity& irr, double x) {
+  const std::vector<double>& X = irr.height_error_x;
+  const auto it = std::upper_bound(X.begin(), X.end(), x);
+  const std::size_t i = std::min<std::size_t>(X.size() - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(1, it - X.begin())));
+  const double t = (x - X[i - 1]) / (X[i] - X[i - 1]);
+  return irr.height_error_dz[i - 1] + t * (irr.height_error_dz[i] - irr.height_error_dz[i - 1]);
+}
+
 void add_block(Triplets& t, const std::array<int, 4>& d, const Eigen::Matrix4d& k) {
   for (int a = 0; a < 4; ++a)
     for (int b = 0; b < 4; ++b)
@@ -53,20 +62,53 @@ void add_block(Triplets& t, const std::array<int, 4>& d, const Eigen::Matrix4d& 
 }  // namespace
 
 int FeLine::dof(int wire, int node, int c) const {
-  return dof_[static_cast<std::size_t>((node * 2 + wire) * 2 + c)];
+  return dof_[static_cast<std::size_t>((node * kWires + wire) * 2 + c)];
 }
+
+double FeLine::stitch_height(int node) const { return stitch_y_[static_cast<std::size_t>(node)]; }
 
 FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   const numerics::PhaseTimer timer("line: mesh, form-finding, matrices");
   d_.validate();
-  // Mesh: stations at the masts and droppers, each interval divided into equal elements <= h.
-  std::vector<double> marks;
-  std::vector<int> dropper_at;  // per dropper, its station (filled below)
+  // The line's description, as data: per span its marks (mast, droppers, stitch clamps) in order.
+  // A stitch wire at every interior mast (FeStitch); the stitch droppers on the line's side of an
+  // end mast, and all of them without the stitch wire, hang from the messenger.
+  const FeStitch& st = d_.stitch;
+  const bool stitched = d_.has_stitch();
+  enum class Mark { Mast, SpanDropper, StitchDropper, StitchEnd };
+  struct Item {
+    double x;  // from the span's first mast
+    Mark kind;
+    int index;       // droppers.x / stitch.droppers.x
+    bool on_stitch;  // a stitch dropper hanging from the stitch wire
+  };
+  std::vector<std::vector<Item>> items(static_cast<std::size_t>(d_.spans));
   for (int s = 0; s < d_.spans; ++s) {
-    marks.push_back(s * d_.span);
-    for (double xd : d_.dropper_x) marks.push_back(s * d_.span + xd);
+    std::vector<Item>& it = items[static_cast<std::size_t>(s)];
+    it.push_back({0.0, Mark::Mast, 0, false});
+    for (std::size_t j = 0; j < d_.dropper_x.size(); ++j) it.push_back({d_.dropper_x[j], Mark::SpanDropper, static_cast<int>(j), false});
+    if (st.present) {
+      const bool behind_stitch = stitched && s > 0, ahead_stitch = stitched && s + 1 < d_.spans;  // the masts at s, s + 1
+      for (std::size_t j = 0; j < st.dropper_x.size(); ++j) {
+        const double p = st.dropper_x[j];
+        if (p > 0) it.push_back({p, Mark::StitchDropper, static_cast<int>(j), behind_stitch});
+        if (p < 0) it.push_back({d_.span + p, Mark::StitchDropper, static_cast<int>(j), ahead_stitch});
+      }
+      if (behind_stitch) it.push_back({0.5 * st.length, Mark::StitchEnd, 0, false});
+      if (ahead_stitch) it.push_back({d_.span - 0.5 * st.length, Mark::StitchEnd, 1, false});
+      std::stable_sort(it.begin(), it.end(), [](const Item& a, const Item& b) { return a.x < b.x; });
+    }
   }
+  // Mesh: stations at the marks, each interval divided into equal elements <= h.
+  std::vector<double> marks;
+  std::vector<const Item*> mark_item;
+  for (int s = 0; s < d_.spans; ++s)
+    for (const Item& it : items[static_cast<std::size_t>(s)]) {
+      marks.push_back(it.kind == Mark::Mast ? s * d_.span : s * d_.span + it.x);
+      mark_item.push_back(&it);
+    }
   marks.push_back(d_.spans * d_.span);
+  mark_item.push_back(nullptr);
   std::vector<int> mark_node;
   for (std::size_t i = 0; i + 1 < marks.size(); ++i) {
     mark_node.push_back(static_cast<int>(x_.size()));
@@ -76,20 +118,41 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   mark_node.push_back(static_cast<int>(x_.size()));
   x_.push_back(marks.back());
   const int N = n_nodes();
-
-  // DOFs interleaved by station [w_m θ_m w_c θ_c] (a narrow band); w fixed at the line's ends.
-  dof_.assign(static_cast<std::size_t>(N) * 4, -1);
-  for (int i = 0; i < N; ++i)
-    for (int w = 0; w < 2; ++w)
-      for (int c = 0; c < 2; ++c)
-        if (!(c == 0 && (i == 0 || i == N - 1))) dof_[static_cast<std::size_t>((i * 2 + w) * 2 + c)] = n_dofs_++;
-
-  const std::size_t per_span = d_.dropper_x.size() + 1;
   std::vector<int> mast_nodes;  // interior masts
-  for (int s = 1; s < d_.spans; ++s) mast_nodes.push_back(mark_node[s * per_span]);
+  for (std::size_t i = 0; i + 1 < marks.size(); ++i)
+    if (mark_item[i]->kind == Mark::Mast && i > 0) mast_nodes.push_back(mark_node[i]);
+  // The stitch wire's stations: from its clamp behind a mast to its clamp ahead (0: none, 1: inside,
+  // 2: a clamp — its w is the messenger's).
+  std::vector<char> on_stitch(static_cast<std::size_t>(N), 0);
+  if (stitched)
+    for (std::size_t i = 0; i + 1 < marks.size(); ++i)
+      if (mark_item[i]->kind == Mark::StitchEnd && mark_item[i]->index == 1) {
+        std::size_t e = i + 1;
+        while (!(mark_item[e]->kind == Mark::StitchEnd && mark_item[e]->index == 0)) ++e;
+        for (int n = mark_node[i]; n <= mark_node[e]; ++n) on_stitch[static_cast<std::size_t>(n)] = 1;
+        on_stitch[static_cast<std::size_t>(mark_node[i])] = on_stitch[static_cast<std::size_t>(mark_node[e])] = 2;
+      }
 
-  // Wire matrices and gravity loads, each wire separately (the form-finding needs them apart).
-  const FeWire* wires[2] = {&d_.messenger, &d_.contact_wire};
+  // DOFs interleaved by station [w_m θ_m w_c θ_c (w_s θ_s)] (a narrow band); w fixed at the line's ends.
+  dof_.assign(static_cast<std::size_t>(N) * 2 * kWires, -1);
+  for (int i = 0; i < N; ++i)
+    for (int w = 0; w < kWires; ++w)
+      for (int c = 0; c < 2; ++c) {
+        int& slot = dof_[static_cast<std::size_t>((i * kWires + w) * 2 + c)];
+        if (w == 2) {
+          const char o = on_stitch[static_cast<std::size_t>(i)];
+          if (o == 0) continue;
+          if (o == 2 && c == 0) {  // clamped to the messenger: the same vertical displacement
+            slot = dof(0, i, 0);
+            continue;
+          }
+        }
+        if (!(c == 0 && (i == 0 || i == N - 1))) slot = n_dofs_++;
+      }
+
+  // Wire matrices and gravity loads; the messenger and the stitch wires (the upper structure) apart
+  // from the contact wire (the form-finding needs them apart).
+  const FeWire* wires[3] = {&d_.messenger, &d_.contact_wire, &st.wire};
   Triplets tk[2], tm[2];
   Eigen::VectorXd fg[2];
   for (int w = 0; w < 2; ++w) {
@@ -112,31 +175,79 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
       fg[w][k] -= m * d_.gravity;
     }
   }
+  if (stitched) {  // stitch wires: part of the upper structure; clamp masses on the messenger
+    for (int i = 0; i + 1 < N; ++i) {
+      const char a = on_stitch[static_cast<std::size_t>(i)], b = on_stitch[static_cast<std::size_t>(i) + 1];
+      if (!a || !b || (a == 2 && b == 2)) continue;  // two clamps in a row: of two stitch wires
+      const double l = x_[i + 1] - x_[i];
+      const std::array<int, 4> d{dof(2, i, 0), dof(2, i, 1), dof(2, i + 1, 0), dof(2, i + 1, 1)};
+      add_block(tk[0], d, beam_stiffness(st.wire.EI, st.wire.tension, l));
+      add_block(tm[0], d, beam_mass(st.wire.mass_per_length, l));
+      const double q = -st.wire.mass_per_length * d_.gravity;
+      const std::array<double, 4> f{q * l / 2, q * l * l / 12, q * l / 2, -q * l * l / 12};
+      for (int a = 0; a < 4; ++a)
+        if (d[a] >= 0) fg[0][d[a]] += f[a];
+    }
+    for (int i = 0; i < N; ++i)
+      if (on_stitch[static_cast<std::size_t>(i)] == 2) {
+        const int k = dof(0, i, 0);
+        tm[0].emplace_back(k, k, st.clamp_mass);
+        fg[0][k] -= st.clamp_mass * d_.gravity;
+      }
+  }
   // Each wire alone (form-finding): unit diagonal on the other wire's DOFs.
   Triplets tk_alone[2] = {tk[0], tk[1]};
   for (int i = 0; i < N; ++i)
     for (int c = 0; c < 2; ++c)
       for (int w = 0; w < 2; ++w)
         if (dof(1 - w, i, c) >= 0) tk_alone[w].emplace_back(dof(1 - w, i, c), dof(1 - w, i, c), 1.0);
+  for (int i = 0; i < N; ++i)  // the stitch wires' own DOFs belong to the upper structure
+    for (int c = 0; c < 2; ++c)
+      if (const int k = dof(2, i, c); k >= 0 && !(c == 0 && on_stitch[static_cast<std::size_t>(i)] == 2))
+        tk_alone[1].emplace_back(k, k, 1.0);
   auto sparse = [&](const Triplets& t) {
     Eigen::SparseMatrix<double> a(n_dofs_, n_dofs_);
     a.setFromTriplets(t.begin(), t.end());
     return a;
   };
 
-  // Droppers (geometry first; lengths from the form-finding below).
-  for (int s = 0; s < d_.spans; ++s)
-    for (std::size_t j = 0; j < d_.dropper_x.size(); ++j) {
-      const int n = mark_node[s * per_span + 1 + j];
-      droppers_.push_back({x_[n], n, dof(0, n, 0), dof(1, n, 0), 0, 0, 0});
+  // Droppers in line order (geometry first; lengths from the form-finding below), each with its data.
+  std::vector<double> presag;  // per dropper
+  for (std::size_t i = 0; i + 1 < marks.size(); ++i) {
+    const Item& it = *mark_item[i];
+    if (it.kind != Mark::SpanDropper && it.kind != Mark::StitchDropper) continue;
+    const int n = mark_node[i];
+    Dropper dr{x_[n], n, dof(it.on_stitch ? 2 : 0, n, 0), dof(1, n, 0), 0, 0, 0};
+    dr.index = it.index;
+    const std::size_t j = static_cast<std::size_t>(it.index);
+    if (it.kind == Mark::SpanDropper) {
+      dr.kind = Dropper::Kind::Span;
+      dr.EA = d_.dropper_EA, dr.mass_per_length = d_.dropper_mass_per_length;
+      dr.clamp_upper = d_.clamp_mass_messenger, dr.clamp_contact = d_.clamp_mass_contact;
+      presag.push_back(d_.presag[j]);
+    } else {
+      dr.kind = Dropper::Kind::Stitch;
+      dr.on_stitch_wire = it.on_stitch;
+      dr.EA = st.dropper_EA, dr.mass_per_length = st.dropper_mass_per_length;
+      dr.clamp_upper = it.on_stitch ? st.clamp_mass_stitch : d_.clamp_mass_messenger;
+      dr.clamp_contact = st.clamp_mass_contact;
+      presag.push_back(st.dropper_presag.empty() ? 0.0 : st.dropper_presag[j]);
     }
+    droppers_.push_back(dr);
+  }
   for (int n : mast_nodes) support_x_.push_back(x_[n]), support_dofs_.push_back(dof(1, n, 0));
+  const FeIrregularity& irr = d_.irregularity;
+  const int nd = static_cast<int>(droppers_.size()), nm = static_cast<int>(mast_nodes.size());
+  if (!irr.dropper_length_errors.empty() && irr.dropper_length_errors.size() != droppers_.size())
+    throw InvalidArgument("finite-element catenary: irregularity", "dropper_length_errors",
+                          fmt::format("needs one value per dropper of the line in line order ({}), got {}", nd,
+                                      irr.dropper_length_errors.size()));
 
   // Form-finding (header): unknown upward forces on the contact wire — dropper tensions T_d at the
-  // droppers and registration forces at the masts — such that w_c = −presag at the droppers and 0 at
-  // the masts; then the messenger under its weight and the dropper tensions, with w_m = 0 at the masts.
-  // The droppers' own weight depends on their length: iterate (converges in a few passes).
-  const int nd = static_cast<int>(droppers_.size()), nm = static_cast<int>(mast_nodes.size());
+  // droppers and registration forces at the masts — such that w_c = −presag (+ the height error) at
+  // the droppers and 0 at the masts; then the upper structure (messenger and stitch wires, the
+  // stitch's ends on the messenger) under its weight and the dropper tensions, with w_m = 0 at the
+  // masts. The droppers' own weight depends on their length: iterate (converges in a few passes).
   std::vector<int> cdofs, mdofs;  // constrained w DOFs: contact wire at droppers then masts; messenger at masts
   for (const Dropper& dr : droppers_) cdofs.push_back(dr.dof_c);
   for (int n : mast_nodes) cdofs.push_back(dof(1, n, 0)), mdofs.push_back(dof(0, n, 0));
@@ -183,16 +294,19 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   if (con_c.llt.info() != Eigen::Success || con_m.llt.info() != Eigen::Success)
     throw NumericalError("finite-element catenary: the wire stiffness matrix is singular (check tensions)");
   Eigen::VectorXd target = Eigen::VectorXd::Zero(nd + nm);
-  for (int k = 0; k < nd; ++k) target[k] = -d_.presag[static_cast<std::size_t>(k) % d_.presag.size()];
+  for (int k = 0; k < nd; ++k) target[k] = -presag[static_cast<std::size_t>(k)];
+  if (!irr.height_error_x.empty())  // installation error: added to the target heights at the droppers
+    for (int k = 0; k < nd; ++k) target[k] += height_error_at(irr, droppers_[static_cast<std::size_t>(k)].x);
   const Eigen::VectorXd zero_m = Eigen::VectorXd::Zero(nm);
   std::vector<double> len(static_cast<std::size_t>(nd), d_.encumbrance);
   Eigen::VectorXd wc, wm, T;
   for (int pass = 0; pass < 20; ++pass) {
     Eigen::VectorXd fc = fg[1], fm = fg[0];
     for (int k = 0; k < nd; ++k) {
-      const double half = 0.5 * d_.dropper_mass_per_length * len[static_cast<std::size_t>(k)] * d_.gravity;
-      fc[droppers_[k].dof_c] -= d_.clamp_mass_contact * d_.gravity + half;
-      fm[droppers_[k].dof_m] -= d_.clamp_mass_messenger * d_.gravity + half;
+      const Dropper& dr = droppers_[static_cast<std::size_t>(k)];
+      const double half = 0.5 * dr.mass_per_length * len[static_cast<std::size_t>(k)] * d_.gravity;
+      fc[dr.dof_c] -= dr.clamp_contact * d_.gravity + half;
+      fm[dr.dof_m] -= dr.clamp_upper * d_.gravity + half;
     }
     Eigen::VectorXd z;
     std::tie(wc, z) = con_c.solve(fc, target);
@@ -221,37 +335,97 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
           "finite-element catenary: dropper {} (x = {:.3f} m) would need a length of {:.4g} m — the messenger sags "
           "below the contact wire; increase the encumbrance or the messenger tension",
           k + 1, dr.x, stretched));
-    dr.length = stretched / (1 + dr.tension / d_.dropper_EA);
-    dr.stiffness = d_.dropper_EA / dr.length;
+    dr.length = stretched / (1 + dr.tension / dr.EA);
+    dr.stiffness = dr.EA / dr.length;
+  }
+
+  // Irregularities on the form-found line (FeIrregularity): dropper lengths off by δ_k (the dropper
+  // now pulls T'_k = EA/L'_k (ℓ_k − L'_k), L'_k = L_k + δ_k, at the form-found geometry) and point
+  // masses on the contact wire. Their loads f' move the line to its reference state u_ref = K'⁻¹ f'
+  // (droppers bilateral: linear); a dropper whose tension there is negative is slack in the static
+  // state, which the solvers' static_displacement finds from the reference state (header).
+  std::vector<double> delta(static_cast<std::size_t>(nd), 0.0);
+  if (irr.dropper_length_std > 0) delta = dropper_length_errors(irr, static_cast<std::size_t>(nd));
+  for (std::size_t k = 0; k < irr.dropper_length_errors.size(); ++k) delta[k] += irr.dropper_length_errors[k];
+  Eigen::VectorXd f_irr = Eigen::VectorXd::Zero(n_dofs_);
+  bool irregular = !irr.point_masses.empty();
+  for (int k = 0; k < nd; ++k) {
+    const double dk = delta[static_cast<std::size_t>(k)];
+    if (dk == 0) continue;
+    irregular = true;
+    Dropper& dr = droppers_[static_cast<std::size_t>(k)];
+    const double stretched = len[static_cast<std::size_t>(k)], L1 = dr.length + dk;
+    if (!(L1 > 0))
+      throw ModelError(fmt::format("finite-element catenary: irregularity: dropper {} (x = {:.3f} m) of {:.4g} m "
+                                   "with a length error of {:.4g} m has no length left",
+                                   k + 1, dr.x, dr.length, dk));
+    const double T1 = dr.EA / L1 * (stretched - L1);
+    // Its weight changes with its length too (half at each end).
+    const double dw = 0.5 * dr.mass_per_length * dk * d_.gravity;
+    f_irr[dr.dof_c] += (T1 - dr.tension) - dw;
+    f_irr[dr.dof_m] -= (T1 - dr.tension) + dw;
+    dr.length = L1, dr.stiffness = dr.EA / L1, dr.tension = T1;
+  }
+  Triplets point_mass_m;
+  for (const FeIrregularity::PointMass& pm : irr.point_masses) {
+    const Shape sh = contact_shape(pm.x);
+    for (int a = 0; a < 4; ++a) {
+      if (sh.dofs[a] < 0) continue;
+      f_irr[sh.dofs[a]] -= pm.mass * d_.gravity * sh.N[a];
+      for (int b = 0; b < 4; ++b)
+        if (sh.dofs[b] >= 0) point_mass_m.emplace_back(sh.dofs[a], sh.dofs[b], pm.mass * sh.N[a] * sh.N[b]);
+    }
   }
 
   // The whole line: both wires, droppers taut, dropper and clamp masses.
   Triplets K = tk[0], Mt = tm[0];
   K.insert(K.end(), tk[1].begin(), tk[1].end());
   Mt.insert(Mt.end(), tm[1].begin(), tm[1].end());
-  for (const Dropper& dr : droppers_) {
+  K_wires_ = sparse(K);
+  f_gravity_ = fg[0] + fg[1];
+  for (std::size_t k = 0; k < droppers_.size(); ++k) {
+    const Dropper& dr = droppers_[k];
     K.emplace_back(dr.dof_m, dr.dof_m, dr.stiffness);
     K.emplace_back(dr.dof_c, dr.dof_c, dr.stiffness);
     K.emplace_back(dr.dof_m, dr.dof_c, -dr.stiffness);
     K.emplace_back(dr.dof_c, dr.dof_m, -dr.stiffness);
-    const double half = 0.5 * d_.dropper_mass_per_length * dr.length;
-    Mt.emplace_back(dr.dof_m, dr.dof_m, half + d_.clamp_mass_messenger);
-    Mt.emplace_back(dr.dof_c, dr.dof_c, half + d_.clamp_mass_contact);
+    const double half = 0.5 * dr.mass_per_length * dr.length;
+    Mt.emplace_back(dr.dof_m, dr.dof_m, half + dr.clamp_upper);
+    Mt.emplace_back(dr.dof_c, dr.dof_c, half + dr.clamp_contact);
+    // The weight the static state carries: the form-finding takes a dropper's weight at its stretched
+    // length (a T/EA ≈ 0.1 % approximation of it), an irregular one's changed by its error.
+    const double carried = 0.5 * dr.mass_per_length * (len[k] + delta[k]);
+    f_gravity_[dr.dof_m] -= (carried + dr.clamp_upper) * d_.gravity;
+    f_gravity_[dr.dof_c] -= (carried + dr.clamp_contact) * d_.gravity;
   }
+  for (const FeIrregularity::PointMass& pm : irr.point_masses) {
+    const Shape sh = contact_shape(pm.x);
+    for (int a = 0; a < 4; ++a)
+      if (sh.dofs[a] >= 0) f_gravity_[sh.dofs[a]] -= pm.mass * d_.gravity * sh.N[a];
+  }
+  Mt.insert(Mt.end(), point_mass_m.begin(), point_mass_m.end());
   K_ = sparse(K);
   M_ = sparse(Mt);
   C_ = d_.rayleigh_mass * M_ + d_.rayleigh_stiffness * K_;
   K_llt_.compute(K_);
   if (K_llt_.info() != Eigen::Success) throw NumericalError("finite-element catenary: K is not positive definite");
+  w_static_ = wc + wm;
+  if (irregular) {
+    const Eigen::VectorXd u = K_llt_.solve(f_irr);
+    w_static_ += u;
+    for (Dropper& dr : droppers_) dr.tension += dr.stiffness * (u[dr.dof_m] - u[dr.dof_c]);
+  }
 
   y_contact_.resize(static_cast<std::size_t>(N));
   s_contact_.resize(static_cast<std::size_t>(N));
   messenger_y_.resize(static_cast<std::size_t>(N));
+  stitch_y_.assign(static_cast<std::size_t>(N), NAN);
   for (int i = 0; i < N; ++i) {
-    const int dw = dof(1, i, 0), dt = dof(1, i, 1), mw = dof(0, i, 0);
-    y_contact_[static_cast<std::size_t>(i)] = dw >= 0 ? wc[dw] : 0.0;
-    s_contact_[static_cast<std::size_t>(i)] = dt >= 0 ? wc[dt] : 0.0;
-    messenger_y_[static_cast<std::size_t>(i)] = d_.encumbrance + (mw >= 0 ? wm[mw] : 0.0);
+    const int dw = dof(1, i, 0), dt = dof(1, i, 1), mw = dof(0, i, 0), sw = dof(2, i, 0);
+    y_contact_[static_cast<std::size_t>(i)] = dw >= 0 ? w_static_[dw] : 0.0;
+    s_contact_[static_cast<std::size_t>(i)] = dt >= 0 ? w_static_[dt] : 0.0;
+    messenger_y_[static_cast<std::size_t>(i)] = d_.encumbrance + (mw >= 0 ? w_static_[mw] : 0.0);
+    if (sw >= 0) stitch_y_[static_cast<std::size_t>(i)] = d_.encumbrance + w_static_[sw];
   }
 }
 
@@ -345,18 +519,58 @@ Eigen::VectorXd FeLine::static_displacement(const std::vector<double>& x, const 
 double FeLine::dropper_length_error_max() const {
   double e = 0;
   if (d_.nominal_dropper_length.empty()) return 0;
-  for (std::size_t k = 0; k < droppers_.size(); ++k)
-    e = std::max(e, std::abs(droppers_[k].length -
-                             d_.nominal_dropper_length[k % d_.nominal_dropper_length.size()]));
+  for (const Dropper& dr : droppers_)
+    if (dr.kind == Dropper::Kind::Span)
+      e = std::max(e, std::abs(dr.length - d_.nominal_dropper_length[static_cast<std::size_t>(dr.index)]));
   return e;
 }
 
+// Equilibrium of the static state on the assembled line (header): heights w = w_ref + u₀ (u₀ the
+// static displacement without pantographs, slack droppers found), the residual of
+// K_w w − f_g − Σ T_d (e_c − e_upper) at every free DOF but the masts' w (their support forces).
+FeLine::Residual FeLine::equilibrium_residual() const {
+  std::vector<char> slack;
+  const Eigen::VectorXd u0 = static_displacement({}, {}, &slack);
+  const Eigen::VectorXd w = w_static_ + u0;
+  Eigen::VectorXd r = K_wires_ * w - f_gravity_;
+  Residual out;
+  for (std::size_t k = 0; k < droppers_.size(); ++k) {
+    const Dropper& dr = droppers_[k];
+    const double upper = d_.encumbrance + w[dr.dof_m], lower = w[dr.dof_c];
+    const double T = std::max(0.0, dr.EA / dr.length * ((upper - lower) - dr.length));
+    if (!slack[k]) {
+      const double T_lin = dr.tension + dr.stiffness * (u0[dr.dof_m] - u0[dr.dof_c]);
+      out.dropper = std::max(out.dropper, std::abs(T - T_lin));
+    }
+    r[dr.dof_c] -= T;
+    r[dr.dof_m] += T;
+  }
+  std::vector<char> mast(static_cast<std::size_t>(n_dofs_), 0);
+  for (int n = 0; n < n_nodes(); ++n)
+    for (double xs : support_x_)
+      if (std::abs(x_[static_cast<std::size_t>(n)] - xs) < 1e-9) mast[static_cast<std::size_t>(dof(0, n, 0))] = mast[static_cast<std::size_t>(dof(1, n, 0))] = 1;
+  for (int i = 0; i < n_dofs_; ++i) {
+    out.load_scale = std::max(out.load_scale, std::abs(f_gravity_[i]));
+    if (!mast[static_cast<std::size_t>(i)]) out.force = std::max(out.force, std::abs(r[i]));
+  }
+  return out;
+}
+
 std::string FeLine::describe() const {
-  return fmt::format(
+  std::string s = fmt::format(
       "finite-element catenary: {} spans of {:g} m ({:g} m), {} droppers, {} elements a wire, {} unknowns; wave speed "
       "contact wire {:.1f} m/s ({:.0f} km/h), messenger {:.1f} m/s",
       d_.spans, d_.span, length(), droppers_.size(), n_nodes() - 1, n_dofs_, d_.contact_wire.wave_speed(),
       3.6 * d_.contact_wire.wave_speed(), d_.messenger.wave_speed());
+  if (d_.has_stitch())
+    s += fmt::format("; stitch wires of {:g} m at the {} interior masts ({:g} N)", d_.stitch.length, support_x_.size(),
+                     d_.stitch.wire.tension);
+  if (d_.irregularity.any()) {
+    int slack = 0;
+    for (const Dropper& dr : droppers_) slack += dr.tension < 0;
+    s += fmt::format("; irregular ({} dropper(s) slack in the static state)", slack);
+  }
+  return s;
 }
 
 }  // namespace inerta::catenary

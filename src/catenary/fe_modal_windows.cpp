@@ -81,10 +81,11 @@ std::shared_ptr<FeWindow> FeModalLine::structure(int first_span, int spans, Spar
   w->first_span = first_span, w->spans = spans;
   w->first_node = mast_node(first_span), w->last_node = mast_node(first_span + spans);
   for (int node = w->first_node; node <= w->last_node; ++node)
-    for (int wire = 0; wire < 2; ++wire)
+    for (int wire = 0; wire < FeLine::kWires; ++wire)
       for (int c = 0; c < 2; ++c)
         if (const int g = L.dof(wire, node, c); g >= 0) w->dofs.push_back(g);
   std::sort(w->dofs.begin(), w->dofs.end());
+  w->dofs.erase(std::unique(w->dofs.begin(), w->dofs.end()), w->dofs.end());  // a stitch clamp's w is the messenger's
   const FeWire* wires[2] = {&L.data().messenger, &L.data().contact_wire};
   for (int node : {w->first_node, w->last_node})
     for (int wire = 0; wire < 2; ++wire)
@@ -212,12 +213,12 @@ std::vector<std::pair<int, double>> FeModalLine::mirror(const FeWindow& a, const
   std::vector<std::pair<int, double>> map;
   if (a.dofs.size() != b.dofs.size() || a.last_node - a.first_node != b.last_node - b.first_node) return {};
   for (int node = b.first_node; node <= b.last_node; ++node)
-    for (int wire = 0; wire < 2; ++wire)
+    for (int wire = 0; wire < FeLine::kWires; ++wire)
       for (int c = 0; c < 2; ++c) {
         const int gb = L.dof(wire, node, c);
-        if (gb < 0) continue;
-        const int ga = L.dof(wire, a.last_node - (node - b.first_node), c);
-        if (ga < 0 || a.local(ga) < 0) return {};
+        if (gb < 0 || (wire == 2 && c == 0 && gb == L.dof(0, node, 0))) continue;  // a stitch clamp: the messenger's
+        const int na = a.last_node - (node - b.first_node), ga = L.dof(wire, na, c);
+        if (ga < 0 || a.local(ga) < 0 || (wire == 2 && c == 0 && ga == L.dof(0, na, 0))) return {};
         map.push_back({a.local(ga), c == 1 ? -1.0 : 1.0});
       }
   return map;

@@ -215,7 +215,8 @@ std::vector<double>* fe_list(catenary::FeCatenaryData& d, const std::string& key
 
 const std::vector<std::string> kFeSections{"line",         "messenger", "contact_wire", "droppers",
                                            "supports",     "registration", "mesh",      "damping",
-                                           "integration",  "section",   "contact",      "solver"};
+                                           "integration",  "section",   "contact",      "solver",
+                                           "stitch",       "irregularity"};
 const std::set<std::string> kFeRequired{"line", "messenger", "contact_wire", "droppers", "supports", "registration"};
 
 std::vector<std::string> fe_keys(const std::string& section) {
@@ -223,6 +224,9 @@ std::vector<std::string> fe_keys(const std::string& section) {
   if (section == "droppers") k = {"x", "presag", "nominal_length"};
   if (section == "section") k = {"spans"};
   if (section == "solver") k = {"type"};
+  if (section == "stitch") k = {"enabled", "length", "tension", "mass_per_length", "EI", "clamp_mass", "droppers"};
+  if (section == "irregularity")
+    k = {"dropper_length_std", "seed", "dropper_length_errors", "height_errors", "point_masses"};
   for (const FeField& f : fe_fields())
     if (section == f.section) k.emplace_back(f.key);
   return k;
@@ -252,7 +256,16 @@ std::string fe_section_help(const std::string& section) {
   YAML::Node at = root;
   if (const YAML::Node s = root[section]; !section.empty() && s.IsDefined()) {
     at.reset(s);
-    if (const YAML::Node k = s.IsMap() ? s[key] : YAML::Node(); k.IsDefined()) {
+    std::string leaf = key;
+    YAML::Node parent = s;
+    if (const auto dot = key.find('.'); dot != std::string::npos && s.IsMap()) {  // stitch: droppers.x
+      if (const YAML::Node sub = s[key.substr(0, dot)]; sub.IsDefined() && sub.IsMap()) {
+        parent.reset(sub);
+        at.reset(sub);
+        leaf = key.substr(dot + 1);
+      }
+    }
+    if (const YAML::Node k = parent.IsMap() ? parent[leaf] : YAML::Node(); k.IsDefined()) {
       at.reset(k);
       if (index >= 0 && k.IsSequence() && static_cast<std::size_t>(index) < k.size()) {
         const YAML::Node item = k[static_cast<std::size_t>(index)];
@@ -274,6 +287,72 @@ std::vector<double> fe_numbers(const detail::Reader& rd, const YAML::Node& n, co
 int fe_whole(const detail::Reader& rd, const YAML::Node& n, const std::string& key, double v) {
   if (!(std::abs(v) < 1e9) || v != std::floor(v)) rd.fail(n, key, fmt::format("expected a whole number, got {}", v));
   return static_cast<int>(v);
+}
+
+// stitch: {enabled, length, tension, mass_per_length, EI, clamp_mass, droppers: {x, presag, EA,
+// mass_per_length, clamp_mass_stitch, clamp_mass_contact}} (docs/model-format.md).
+void read_fe_stitch(const detail::Reader& rd, const YAML::Node& st, catenary::FeStitch& s) {
+  if (!st.IsMap()) rd.fail(st, "stitch", "expected a section: {length, tension, mass_per_length, EI, clamp_mass, droppers}");
+  s.present = true;
+  if (const YAML::Node n = st["enabled"]; n.IsDefined()) s.enabled = rd.boolean(n, "enabled");
+  s.length = rd.number(rd.need(st, "length", "stitch"), "length");
+  s.wire.tension = rd.number(rd.need(st, "tension", "stitch"), "tension");
+  s.wire.mass_per_length = rd.number(rd.need(st, "mass_per_length", "stitch"), "mass_per_length");
+  s.wire.EI = rd.number_or(st, "EI", 0.0);
+  s.clamp_mass = rd.number_or(st, "clamp_mass", 0.0);
+  const YAML::Node dr = rd.need(st, "droppers", "stitch");
+  rd.keys(dr, "stitch.droppers", {"x", "presag", "EA", "mass_per_length", "clamp_mass_stitch", "clamp_mass_contact"});
+  const YAML::Node x = rd.need(dr, "x", "stitch.droppers");
+  if (!x.IsSequence()) rd.fail(x, "x", "expected a list of signed positions from the mast (m), e.g. [-7, -2, 2, 7]");
+  for (const auto& item : x) s.dropper_x.push_back(rd.number(item, "x"));
+  if (const YAML::Node p = dr["presag"]; p.IsDefined()) {
+    if (!p.IsSequence()) rd.fail(p, "presag", "expected a list of contact-wire pre-sags (m, positive down), one per stitch dropper");
+    for (const auto& item : p) s.dropper_presag.push_back(rd.number(item, "presag"));
+  }
+  s.dropper_EA = rd.number(rd.need(dr, "EA", "stitch.droppers"), "EA");
+  s.dropper_mass_per_length = rd.number_or(dr, "mass_per_length", 0.0);
+  s.clamp_mass_stitch = rd.number_or(dr, "clamp_mass_stitch", 0.0);
+  s.clamp_mass_contact = rd.number_or(dr, "clamp_mass_contact", 0.0);
+}
+
+// The height-error profile: a CSV with columns x and dz (m), relative to the catenary file.
+void read_height_errors(const std::string& csv, catenary::FeIrregularity& irr) {
+  const CsvTable t = CsvTable::read(csv);
+  irr.height_errors_file = csv;
+  irr.height_error_x = t.column("x");
+  irr.height_error_dz = t.column("dz");
+}
+
+// irregularity: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses}.
+void read_fe_irregularity(const detail::Reader& rd, const YAML::Node& ir, catenary::FeCatenaryData& d) {
+  catenary::FeIrregularity& irr = d.irregularity;
+  if (!ir.IsMap()) rd.fail(ir, "irregularity", "expected a section: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses}");
+  irr.dropper_length_std = rd.number_or(ir, "dropper_length_std", 0.0);
+  if (const YAML::Node n = ir["seed"]; n.IsDefined()) {
+    const double v = rd.number(n, "seed");
+    if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v)) rd.fail(n, "seed", fmt::format("expected a whole number >= 0, got {}", v));
+    irr.seed = static_cast<std::uint64_t>(v);
+  }
+  if (const YAML::Node n = ir["dropper_length_errors"]; n.IsDefined()) {
+    if (!n.IsSequence()) rd.fail(n, "dropper_length_errors", "expected a list of length errors (m), one per dropper of the line in line order");
+    for (const auto& item : n) irr.dropper_length_errors.push_back(rd.number(item, "dropper_length_errors"));
+  }
+  if (const YAML::Node n = ir["height_errors"]; n.IsDefined()) {
+    if (!n.IsScalar()) rd.fail(n, "height_errors", "expected the path of a CSV file with columns x and dz (m)");
+    try {
+      read_height_errors(rd.relative_path(n.Scalar()), irr);
+    } catch (const ModelError& e) {
+      rd.fail(n, "height_errors", e.what());
+    }
+  }
+  if (const YAML::Node n = ir["point_masses"]; n.IsDefined()) {
+    if (!n.IsSequence()) rd.fail(n, "point_masses", "expected a list of {x, mass}: x along the line (m), mass (kg)");
+    for (const auto& item : n) {
+      rd.keys(item, "point_masses", {"x", "mass"});
+      irr.point_masses.push_back({rd.number(rd.need(item, "x", "point_masses"), "x"),
+                                  rd.number(rd.need(item, "mass", "point_masses"), "mass")});
+    }
+  }
 }
 
 void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
@@ -332,6 +411,8 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     }
     *fe_list(d, k) = fe_numbers(rd, n, k);
   }
+  if (const YAML::Node st = root["stitch"]; st.IsDefined() && !st.IsNull()) read_fe_stitch(rd, st, d.stitch);
+  if (const YAML::Node ir = root["irregularity"]; ir.IsDefined() && !ir.IsNull()) read_fe_irregularity(rd, ir, d);
   if (const YAML::Node sec = root["section"]; sec.IsDefined() && !sec.IsNull()) {
     const YAML::Node n = rd.need(sec, "spans", "section");
     if (!n.IsSequence() || n.size() != 2) rd.fail(n, "spans", "expected [first, last]: the spans of the analysis section (1-based)");
@@ -406,6 +487,44 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
     d.solver = value == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
     return true;
   }
+  if (section == "stitch") {
+    catenary::FeStitch& st = d.stitch;
+    if (key == "enabled") {
+      if (value != "true" && value != "false") throw ModelError(fmt::format("--set '{}': expected stitch.enabled=true or false", o));
+      if (!st.present) throw ModelError(fmt::format("--set '{}': the file has no stitch section", o));
+      st.enabled = value == "true";
+      return true;
+    }
+    double* target = key == "length" ? &st.length : key == "tension" ? &st.wire.tension
+                   : key == "mass_per_length" ? &st.wire.mass_per_length : key == "EI" ? &st.wire.EI
+                   : key == "clamp_mass" ? &st.clamp_mass : key == "droppers.EA" ? &st.dropper_EA
+                   : key == "droppers.mass_per_length" ? &st.dropper_mass_per_length
+                   : key == "droppers.clamp_mass_stitch" ? &st.clamp_mass_stitch
+                   : key == "droppers.clamp_mass_contact" ? &st.clamp_mass_contact : nullptr;
+    if (!target) return false;
+    if (!st.present) throw ModelError(fmt::format("--set '{}': the file has no stitch section (give one in the file: length, tension, mass_per_length, droppers)", o));
+    *target = number();
+    return true;
+  }
+  if (section == "irregularity") {
+    catenary::FeIrregularity& irr = d.irregularity;
+    if (key == "dropper_length_std") {
+      irr.dropper_length_std = number();
+      return true;
+    }
+    if (key == "seed") {
+      const double v = number();
+      if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v))
+        throw ModelError(fmt::format("--set '{}': expected a whole number >= 0", o));
+      irr.seed = static_cast<std::uint64_t>(v);
+      return true;
+    }
+    if (key == "height_errors") {
+      read_height_errors(value, irr);
+      return true;
+    }
+    return false;
+  }
   if (section == "droppers") {
     if (const auto open = key.find('['); open != std::string::npos && key.back() == ']') {
       const std::string idx = key.substr(open + 1, key.size() - open - 2);
@@ -430,7 +549,9 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
 std::string fe_override_help() {
   std::string s;
   for (const FeField& f : fe_fields()) s += fmt::format("{}.{}, ", f.section, f.key);
-  return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, solver.type=modal|direct, ";
+  return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, solver.type=modal|direct, "
+             "stitch.enabled=true|false, stitch.length, stitch.tension, stitch.mass_per_length, stitch.EI, stitch.clamp_mass, "
+             "stitch.droppers.EA, irregularity.dropper_length_std, irregularity.seed, irregularity.height_errors=CSV, ";
 }
 
 void apply_override(Parsed& c, const std::string& o) {

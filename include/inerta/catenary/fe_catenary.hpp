@@ -29,6 +29,7 @@
 #include <Eigen/Sparse>
 #include <array>
 #include <atomic>
+#include <cstdint>
 #include <mutex>
 #include <memory>
 #include <string>
@@ -50,6 +51,53 @@ struct FeWire {
 /// Element matrices of a tensioned Euler–Bernoulli beam on [w_i, θ_i, w_j, θ_j] (header comment).
 Eigen::Matrix4d beam_stiffness(double EI, double tension, double length);
 Eigen::Matrix4d beam_mass(double mass_per_length, double length);
+
+/// A stitch wire at a mast (docs/catenary-fe.md "Stitch wire"): a short tensioned wire of `length`
+/// centred on the mast, its ends clamped to the messenger (the same vertical displacement, slopes
+/// free), not supported at the mast, from which the droppers near the mast hang (`dropper_x`: signed
+/// positions from the mast, negative in the span before it). Every interior mast carries one; the
+/// line's two end masts (anchors) carry none, and the stitch droppers on the line's side of an end
+/// mast hang from the messenger there. `enabled = false`: the same line without the stitch wire,
+/// every stitch dropper hanging from the messenger at its position.
+struct FeStitch {
+  bool present = false;          ///< the file has a `stitch:` section
+  bool enabled = true;
+  double length = 0;             ///< m, between its two clamps on the messenger
+  FeWire wire;                   ///< tension (N), mass per length (kg/m), EI (N·m²)
+  double clamp_mass = 0;         ///< kg, at each of its two clamps on the messenger
+  std::vector<double> dropper_x;       ///< m from the mast, signed, |x| < length / 2
+  std::vector<double> dropper_presag;  ///< m, contact-wire pre-sag at each (positive down); empty: 0
+  double dropper_EA = 200e3;               ///< N
+  double dropper_mass_per_length = 0;      ///< kg/m
+  double clamp_mass_stitch = 0;            ///< kg, at each stitch dropper's upper end
+  double clamp_mass_contact = 0;           ///< kg, at each stitch dropper's contact-wire end
+};
+
+/// Irregularities of the line (docs/catenary-fe.md "Irregularities"), applied to the form-found line.
+struct FeIrregularity {
+  /// m: random dropper-length errors, normal N(0, std²) truncated at ±4 std (a draw beyond is drawn
+  /// again), from splitmix64-seeded xoshiro256** and Box–Muller (the same numbers on every platform);
+  /// 0: none. One value per dropper in line order (stitch droppers included).
+  double dropper_length_std = 0;
+  std::uint64_t seed = 1;
+  /// m, explicit per-dropper length errors in line order (added to the random ones); empty: none.
+  std::vector<double> dropper_length_errors;
+  /// A contact-wire height-error profile (x m, Δz m, up): interpolated linearly at the droppers and
+  /// added to the form-finding's target heights (an installation error). Empty: none.
+  std::vector<double> height_error_x, height_error_dz;
+  std::string height_errors_file;  ///< where the profile was read from (for messages)
+  struct PointMass {
+    double x;     ///< m along the line
+    double mass;  ///< kg
+  };
+  std::vector<PointMass> point_masses;  ///< hard spots on the contact wire (clamps, section insulators)
+  bool any() const {
+    return dropper_length_std > 0 || !dropper_length_errors.empty() || !height_error_x.empty() || !point_masses.empty();
+  }
+};
+
+/// The random dropper-length errors of `irr` for `count` droppers (m; FeIrregularity header).
+std::vector<double> dropper_length_errors(const FeIrregularity& irr, std::size_t count);
 
 /// Everything a catenary file gives (docs/model-format.md#finite-element-catenary).
 struct FeCatenaryData {
@@ -85,6 +133,9 @@ struct FeCatenaryData {
   int window_behind = 2;     ///< spans of the window behind the rearmost pantograph's span; −1: the whole line
   int window_ahead = 3;      ///< spans ahead of the leading pantograph's span; −1: the whole line
   int section_first = -1, section_last = -1;  ///< analysis section: spans first..last (1-based); −1: default
+  FeStitch stitch;            ///< none unless stitch.present
+  FeIrregularity irregularity;
+  bool has_stitch() const { return stitch.present && stitch.enabled; }
   /// InvalidArgument naming the offending value.
   void validate() const;
 };
@@ -103,9 +154,11 @@ class FeLine {
   int n_dofs() const { return n_dofs_; }
   double length() const { return d_.span * d_.spans; }
   const std::vector<double>& node_x() const { return x_; }
-  /// Free-DOF index of wire `w` (0 messenger, 1 contact wire) at node i, component c (0: w, 1: θ);
-  /// −1 where the DOF is fixed (the line's ends).
+  /// Free-DOF index of wire `w` (0 messenger, 1 contact wire, 2 stitch wire) at node i, component c
+  /// (0: w, 1: θ); −1 where the DOF is fixed (the line's ends) or absent (no stitch wire there; a
+  /// stitch wire's w at its clamps is the messenger's).
   int dof(int wire, int node, int c) const;
+  static constexpr int kWires = 3;
 
   const Eigen::SparseMatrix<double>& M() const { return M_; }
   const Eigen::SparseMatrix<double>& K() const { return K_; }  ///< K₀: all droppers taut
@@ -117,7 +170,15 @@ class FeLine {
     int dof_m, dof_c;  ///< free DOFs of w at its messenger and contact-wire ends
     double length;     ///< unstretched length from the form-finding, m
     double stiffness;  ///< EA / length, N/m
-    double tension;    ///< static tension, N
+    double tension;    ///< static tension, N (negative: slack in the static state of an irregular line)
+    /// Where it hangs from: the messenger (a span dropper, or a stitch dropper without its stitch
+    /// wire) or a stitch wire (dof_m is then the stitch wire's w).
+    enum class Kind { Span, Stitch } kind = Kind::Span;
+    bool on_stitch_wire = false;
+    int index = 0;     ///< its position in droppers.x (Span) or stitch.droppers.x (Stitch)
+    double EA = 0;                 ///< N
+    double mass_per_length = 0;    ///< kg/m (half its mass lumped at each end)
+    double clamp_upper = 0, clamp_contact = 0;  ///< kg, clamp masses at its two ends
   };
   const std::vector<Dropper>& droppers() const { return droppers_; }
   /// Interior masts (the line's end masts are anchors): x and the contact wire's w DOF there.
@@ -139,8 +200,20 @@ class FeLine {
   Eigen::VectorXd load_vector(double x, double F) const;  ///< F N(x): an upward point force F at x
   /// Messenger height at station i in the static state, m (encumbrance at the masts).
   double messenger_height(int node) const { return messenger_y_[static_cast<std::size_t>(node)]; }
-  /// Largest |form-found − nominal| dropper length, m (0 without nominal lengths).
+  /// Largest |form-found − nominal| dropper length, m (0 without nominal lengths; span droppers only).
   double dropper_length_error_max() const;
+  /// Stitch-wire height at station i in the static state (m; NaN where there is none).
+  double stitch_height(int node) const;
+  /// The static state's equilibrium, checked on the assembled line itself (not the form-finding's
+  /// equations): the largest |K_w w − f_g − Σ T_d b_d| over the free DOFs other than the masts'
+  /// (N; K_w the wires' and supports' stiffness, w the static heights, f_g gravity, T_d the dropper
+  /// tensions), and the largest |T_d − EA/L₀ (ℓ_d − L₀)| of the taut droppers (N). The static state
+  /// of an irregular line is the form-found one displaced by static_displacement({}, {}) (its slack
+  /// droppers carry nothing).
+  struct Residual {
+    double force = 0, dropper = 0, load_scale = 0;  ///< N; load_scale: the largest gravity load of a DOF
+  };
+  Residual equilibrium_residual() const;
 
   /// Linear static uplift per newton at x (all droppers taut): N(x)ᵀ K₀⁻¹ N(x), m/N.
   double elasticity(double x) const;
@@ -163,6 +236,10 @@ class FeLine {
   std::vector<double> y_contact_;  ///< form-found contact-wire heights at the nodes
   std::vector<double> s_contact_;  ///< and slopes
   std::vector<double> messenger_y_;
+  std::vector<double> stitch_y_;   ///< form-found stitch heights at the nodes (NaN: none)
+  Eigen::SparseMatrix<double> K_wires_;  ///< wires and supports, no droppers (equilibrium_residual)
+  Eigen::VectorXd f_gravity_;      ///< gravity on the wires, clamps, droppers and point masses
+  Eigen::VectorXd w_static_;       ///< the heights of the reference state, per DOF (w from its reference)
   BandLlt K_llt_;
   friend class FeIntegrator;
 };
