@@ -295,32 +295,40 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
     throw NumericalError("finite-element catenary: the wire stiffness matrix is singular (check tensions)");
   Eigen::VectorXd target = Eigen::VectorXd::Zero(nd + nm);
   for (int k = 0; k < nd; ++k) target[k] = -presag[static_cast<std::size_t>(k)];
+  const Eigen::VectorXd design_target = target;
   if (!irr.height_error_x.empty())  // installation error: added to the target heights at the droppers
     for (int k = 0; k < nd; ++k) target[k] += height_error_at(irr, droppers_[static_cast<std::size_t>(k)].x);
   const Eigen::VectorXd zero_m = Eigen::VectorXd::Zero(nm);
-  std::vector<double> len(static_cast<std::size_t>(nd), d_.encumbrance);
+  // The form-finding at the contact-wire targets `tgt`: stretched dropper lengths, wire heights and
+  // dropper tensions.
+  auto form_find = [&](const Eigen::VectorXd& tgt, std::vector<double>& len, Eigen::VectorXd& wc, Eigen::VectorXd& wm,
+                       Eigen::VectorXd& T) {
+    len.assign(static_cast<std::size_t>(nd), d_.encumbrance);
+    for (int pass = 0; pass < 20; ++pass) {
+      Eigen::VectorXd fc = fg[1], fm = fg[0];
+      for (int k = 0; k < nd; ++k) {
+        const Dropper& dr = droppers_[static_cast<std::size_t>(k)];
+        const double half = 0.5 * dr.mass_per_length * len[static_cast<std::size_t>(k)] * d_.gravity;
+        fc[dr.dof_c] -= dr.clamp_contact * d_.gravity + half;
+        fm[dr.dof_m] -= dr.clamp_upper * d_.gravity + half;
+      }
+      Eigen::VectorXd z;
+      std::tie(wc, z) = con_c.solve(fc, tgt);
+      T = z.head(nd);  // dropper tensions (then the registration forces)
+      for (int k = 0; k < nd; ++k) fm[droppers_[k].dof_m] -= T[k];
+      wm = con_m.solve(fm, zero_m).first;
+      double change = 0;
+      for (int k = 0; k < nd; ++k) {
+        const double l = d_.encumbrance + wm[droppers_[k].dof_m] - wc[droppers_[k].dof_c];
+        change = std::max(change, std::abs(l - len[static_cast<std::size_t>(k)]));
+        len[static_cast<std::size_t>(k)] = l;
+      }
+      if (change < 1e-12) break;
+    }
+  };
+  std::vector<double> len;
   Eigen::VectorXd wc, wm, T;
-  for (int pass = 0; pass < 20; ++pass) {
-    Eigen::VectorXd fc = fg[1], fm = fg[0];
-    for (int k = 0; k < nd; ++k) {
-      const Dropper& dr = droppers_[static_cast<std::size_t>(k)];
-      const double half = 0.5 * dr.mass_per_length * len[static_cast<std::size_t>(k)] * d_.gravity;
-      fc[dr.dof_c] -= dr.clamp_contact * d_.gravity + half;
-      fm[dr.dof_m] -= dr.clamp_upper * d_.gravity + half;
-    }
-    Eigen::VectorXd z;
-    std::tie(wc, z) = con_c.solve(fc, target);
-    T = z.head(nd);  // dropper tensions (then the registration forces)
-    for (int k = 0; k < nd; ++k) fm[droppers_[k].dof_m] -= T[k];
-    wm = con_m.solve(fm, zero_m).first;
-    double change = 0;
-    for (int k = 0; k < nd; ++k) {
-      const double l = d_.encumbrance + wm[droppers_[k].dof_m] - wc[droppers_[k].dof_c];
-      change = std::max(change, std::abs(l - len[static_cast<std::size_t>(k)]));
-      len[static_cast<std::size_t>(k)] = l;
-    }
-    if (change < 1e-12) break;
-  }
+  form_find(target, len, wc, wm, T);
   for (int k = 0; k < nd; ++k) {
     Dropper& dr = droppers_[static_cast<std::size_t>(k)];
     dr.tension = T[k];
@@ -336,7 +344,18 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
           "below the contact wire; increase the encumbrance or the messenger tension",
           k + 1, dr.x, stretched));
     dr.length = stretched / (1 + dr.tension / dr.EA);
-    dr.stiffness = dr.EA / dr.length;
+    dr.stiffness = dr.static_stiffness = dr.EA / dr.length;
+  }
+  // The droppers as designed (the form-finding without height errors): their stiffness EA/L and
+  // mass in the line's dynamics (FeIrregularity::exact_dropper_dynamics).
+  std::vector<double> design_length(static_cast<std::size_t>(nd));
+  for (int k = 0; k < nd; ++k) design_length[static_cast<std::size_t>(k)] = droppers_[static_cast<std::size_t>(k)].length;
+  if (!irr.height_error_x.empty()) {
+    std::vector<double> dlen;
+    Eigen::VectorXd dwc, dwm, dT;
+    form_find(design_target, dlen, dwc, dwm, dT);
+    for (int k = 0; k < nd; ++k)
+      design_length[static_cast<std::size_t>(k)] = dlen[static_cast<std::size_t>(k)] / (1 + dT[k] / droppers_[static_cast<std::size_t>(k)].EA);
   }
 
   // Irregularities on the form-found line (FeIrregularity): dropper lengths off by δ_k (the dropper
@@ -364,7 +383,7 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
     const double dw = 0.5 * dr.mass_per_length * dk * d_.gravity;
     f_irr[dr.dof_c] += (T1 - dr.tension) - dw;
     f_irr[dr.dof_m] -= (T1 - dr.tension) + dw;
-    dr.length = L1, dr.stiffness = dr.EA / L1, dr.tension = T1;
+    dr.length = L1, dr.static_stiffness = dr.EA / L1, dr.tension = T1;
   }
   Triplets point_mass_m;
   for (const FeIrregularity::PointMass& pm : irr.point_masses) {
@@ -383,13 +402,19 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   Mt.insert(Mt.end(), tm[1].begin(), tm[1].end());
   K_wires_ = sparse(K);
   f_gravity_ = fg[0] + fg[1];
+  const bool design_dynamics = !irr.exact_dropper_dynamics;
+  Triplets Ks = K;
   for (std::size_t k = 0; k < droppers_.size(); ++k) {
-    const Dropper& dr = droppers_[k];
-    K.emplace_back(dr.dof_m, dr.dof_m, dr.stiffness);
-    K.emplace_back(dr.dof_c, dr.dof_c, dr.stiffness);
-    K.emplace_back(dr.dof_m, dr.dof_c, -dr.stiffness);
-    K.emplace_back(dr.dof_c, dr.dof_m, -dr.stiffness);
-    const double half = 0.5 * dr.mass_per_length * dr.length;
+    Dropper& dr = droppers_[k];
+    const double Ld = design_dynamics ? design_length[k] : dr.length;
+    dr.stiffness = dr.EA / Ld;
+    for (auto [t, kd] : {std::pair{&K, dr.stiffness}, std::pair{&Ks, dr.static_stiffness}}) {
+      t->emplace_back(dr.dof_m, dr.dof_m, kd);
+      t->emplace_back(dr.dof_c, dr.dof_c, kd);
+      t->emplace_back(dr.dof_m, dr.dof_c, -kd);
+      t->emplace_back(dr.dof_c, dr.dof_m, -kd);
+    }
+    const double half = 0.5 * dr.mass_per_length * Ld;
     Mt.emplace_back(dr.dof_m, dr.dof_m, half + dr.clamp_upper);
     Mt.emplace_back(dr.dof_c, dr.dof_c, half + dr.clamp_contact);
     // The weight the static state carries: the form-finding takes a dropper's weight at its stretched
@@ -405,15 +430,16 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   }
   Mt.insert(Mt.end(), point_mass_m.begin(), point_mass_m.end());
   K_ = sparse(K);
+  K_static_ = sparse(Ks);
   M_ = sparse(Mt);
   C_ = d_.rayleigh_mass * M_ + d_.rayleigh_stiffness * K_;
-  K_llt_.compute(K_);
+  K_llt_.compute(K_static_);
   if (K_llt_.info() != Eigen::Success) throw NumericalError("finite-element catenary: K is not positive definite");
   w_static_ = wc + wm;
   if (irregular) {
     const Eigen::VectorXd u = K_llt_.solve(f_irr);
     w_static_ += u;
-    for (Dropper& dr : droppers_) dr.tension += dr.stiffness * (u[dr.dof_m] - u[dr.dof_c]);
+    for (Dropper& dr : droppers_) dr.tension += dr.static_stiffness * (u[dr.dof_m] - u[dr.dof_c]);
   }
 
   y_contact_.resize(static_cast<std::size_t>(N));
@@ -488,7 +514,7 @@ Eigen::VectorXd FeLine::static_displacement(const std::vector<double>& x, const 
     bool changed = false;
     for (std::size_t k = 0; k < droppers_.size(); ++k) {
       const Dropper& d = droppers_[k];
-      const bool want = d.tension + d.stiffness * (u[d.dof_m] - u[d.dof_c]) < 0;
+      const bool want = d.tension + d.static_stiffness * (u[d.dof_m] - u[d.dof_c]) < 0;
       if (want != static_cast<bool>(slack[k])) slack[k] = want, changed = true;
     }
     if (!changed) {
@@ -496,15 +522,15 @@ Eigen::VectorXd FeLine::static_displacement(const std::vector<double>& x, const 
       return u;
     }
     // K with the slack droppers removed, their static tension applied as a load instead.
-    Eigen::SparseMatrix<double> Ks = K_;
+    Eigen::SparseMatrix<double> Ks = K_static_;
     Eigen::VectorXd fs = f;
     for (std::size_t k = 0; k < droppers_.size(); ++k) {
       if (!slack[k]) continue;
       const Dropper& d = droppers_[k];
-      Ks.coeffRef(d.dof_m, d.dof_m) -= d.stiffness;
-      Ks.coeffRef(d.dof_c, d.dof_c) -= d.stiffness;
-      Ks.coeffRef(d.dof_m, d.dof_c) += d.stiffness;
-      Ks.coeffRef(d.dof_c, d.dof_m) += d.stiffness;
+      Ks.coeffRef(d.dof_m, d.dof_m) -= d.static_stiffness;
+      Ks.coeffRef(d.dof_c, d.dof_c) -= d.static_stiffness;
+      Ks.coeffRef(d.dof_m, d.dof_c) += d.static_stiffness;
+      Ks.coeffRef(d.dof_c, d.dof_m) += d.static_stiffness;
       fs[d.dof_m] += d.tension;
       fs[d.dof_c] -= d.tension;
     }
@@ -539,7 +565,7 @@ FeLine::Residual FeLine::equilibrium_residual() const {
     const double upper = d_.encumbrance + w[dr.dof_m], lower = w[dr.dof_c];
     const double T = std::max(0.0, dr.EA / dr.length * ((upper - lower) - dr.length));
     if (!slack[k]) {
-      const double T_lin = dr.tension + dr.stiffness * (u0[dr.dof_m] - u0[dr.dof_c]);
+      const double T_lin = dr.tension + dr.static_stiffness * (u0[dr.dof_m] - u0[dr.dof_c]);
       out.dropper = std::max(out.dropper, std::abs(T - T_lin));
     }
     r[dr.dof_c] -= T;

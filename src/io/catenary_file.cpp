@@ -226,7 +226,7 @@ std::vector<std::string> fe_keys(const std::string& section) {
   if (section == "solver") k = {"type"};
   if (section == "stitch") k = {"enabled", "length", "tension", "mass_per_length", "EI", "clamp_mass", "droppers"};
   if (section == "irregularity")
-    k = {"dropper_length_std", "seed", "dropper_length_errors", "height_errors", "point_masses"};
+    k = {"dropper_length_std", "seed", "dropper_length_errors", "height_errors", "point_masses", "exact_dropper_dynamics"};
   for (const FeField& f : fe_fields())
     if (section == f.section) k.emplace_back(f.key);
   return k;
@@ -323,10 +323,11 @@ void read_height_errors(const std::string& csv, catenary::FeIrregularity& irr) {
   irr.height_error_dz = t.column("dz");
 }
 
-// irregularity: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses}.
+// irregularity: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses,
+// exact_dropper_dynamics}.
 void read_fe_irregularity(const detail::Reader& rd, const YAML::Node& ir, catenary::FeCatenaryData& d) {
   catenary::FeIrregularity& irr = d.irregularity;
-  if (!ir.IsMap()) rd.fail(ir, "irregularity", "expected a section: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses}");
+  if (!ir.IsMap()) rd.fail(ir, "irregularity", "expected a section: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses, exact_dropper_dynamics}");
   irr.dropper_length_std = rd.number_or(ir, "dropper_length_std", 0.0);
   if (const YAML::Node n = ir["seed"]; n.IsDefined()) {
     const double v = rd.number(n, "seed");
@@ -345,6 +346,7 @@ void read_fe_irregularity(const detail::Reader& rd, const YAML::Node& ir, catena
       rd.fail(n, "height_errors", e.what());
     }
   }
+  if (const YAML::Node n = ir["exact_dropper_dynamics"]; n.IsDefined()) irr.exact_dropper_dynamics = rd.boolean(n, "exact_dropper_dynamics");
   if (const YAML::Node n = ir["point_masses"]; n.IsDefined()) {
     if (!n.IsSequence()) rd.fail(n, "point_masses", "expected a list of {x, mass}: x along the line (m), mass (kg)");
     for (const auto& item : n) {
@@ -523,6 +525,12 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
       read_height_errors(value, irr);
       return true;
     }
+    if (key == "exact_dropper_dynamics") {
+      if (value != "true" && value != "false")
+        throw ModelError(fmt::format("--set '{}': expected irregularity.exact_dropper_dynamics=true or false", o));
+      irr.exact_dropper_dynamics = value == "true";
+      return true;
+    }
     return false;
   }
   if (section == "droppers") {
@@ -551,7 +559,8 @@ std::string fe_override_help() {
   for (const FeField& f : fe_fields()) s += fmt::format("{}.{}, ", f.section, f.key);
   return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, solver.type=modal|direct, "
              "stitch.enabled=true|false, stitch.length, stitch.tension, stitch.mass_per_length, stitch.EI, stitch.clamp_mass, "
-             "stitch.droppers.EA, irregularity.dropper_length_std, irregularity.seed, irregularity.height_errors=CSV, ";
+             "stitch.droppers.EA, irregularity.dropper_length_std, irregularity.seed, irregularity.height_errors=CSV, "
+             "irregularity.exact_dropper_dynamics=true|false, ";
 }
 
 void apply_override(Parsed& c, const std::string& o) {

@@ -176,7 +176,7 @@ optim::Objective read_objective(const std::string& path, const YAML::Node& o, co
   return obj;
 }
 
-optim::ModelStudy read(const std::string& path) {
+optim::ModelStudy read(const std::string& path, bool evaluate_baseline) {
   const YAML::Node loaded = yaml_load_file(path, "study file");
   const YAML::Node& root = loaded;
   if (!is_map(root)) yaml_fail(path, root, "", "expected a study (model, strut, objective, layouts)");
@@ -241,10 +241,12 @@ optim::ModelStudy read(const std::string& path) {
     if (!(s.hi > s.lo)) yaml_fail(path, se, "search", "expected lo < hi");
   }
   // The baseline must evaluate: unknown inputs, an output with infinite variance, ... fail here.
-  try {
-    optim::evaluate(s, optim::default_network(s));
-  } catch (const std::exception& e) {
-    yaml_fail(path, root["objective"], "objective", fmt::format("cannot evaluate the model's own strut: {}", e.what()));
+  if (evaluate_baseline) {
+    try {
+      optim::evaluate(s, optim::default_network(s));
+    } catch (const std::exception& e) {
+      yaml_fail(path, root["objective"], "objective", fmt::format("cannot evaluate the model's own strut: {}", e.what()));
+    }
   }
   return s;
 }
@@ -258,9 +260,9 @@ bool is_model_study(const std::string& path) {
   return o.IsDefined() && !(is_map(o) && is_scalar(o["type"]) && o["type"].Scalar() == "j2");
 }
 
-optim::ModelStudy load_model_study(const std::string& path) {
+optim::ModelStudy load_model_study(const std::string& path, bool evaluate_baseline) {
   try {
-    return read(path);
+    return read(path, evaluate_baseline);
   } catch (const YAML::Exception& e) {
     throw ModelError(fmt::format("{}:{}: {}; expected the study file format of docs/studies.md", path, e.mark.line + 1, e.msg));
   }

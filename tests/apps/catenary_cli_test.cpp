@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "support/cli.hpp"
 
 // One namespace a file: a unity build compiles several test files as one unit.
@@ -83,4 +85,52 @@ TEST_F(CatenaryCli, CheckReductionComparesTheModalAndDirectSolves) {
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_TRUE(contains(r.err, "needs a finite-element catenary")) << r.err;
 }
+}  // namespace test_apps_catenary_cli
+
+namespace test_apps_catenary_cli {
+
+TEST_F(CatenaryCli, BadStitchAndIrregularityInputIsAFileErrorNamingTheKey) {
+  // Issue 34 item 6 through the program: each exits 2 naming the file and the key.
+  const std::string src = read_file(std::string(INERTA_SOURCE_DIR) + "/models/catenary-fe-stitched.yaml");
+  write("short.csv", "x,dz\n0,0\n300,0.01\n");
+  write("back.csv", "x,dz\n0,0\n400,0.01\n300,0\n700,0\n");
+  struct Case {
+    const char* from;
+    const char* to;
+    const char* key;
+  };
+  const Case cases[] = {
+      {"  length: 18 ", "  length: 70 ", "'length'"},                        // longer than the span
+      {"    x: [-7, -2, 2, 7]", "    x: [-7, -2, 2, 9.5]", "x[3]"},          // a stitch dropper outside the stitch
+      {"  x:      [13.5,", "  x:      [8.5,", "x[0]"},                        // a span dropper inside it
+      {"  tension: 3500 ", "  tension: -3500 ", "'tension'"},
+      {"  tension: 3500 ", "  tension: .nan ", "'tension'"},
+      {"  mass_per_length: 0.31 ", "  mass_per_length: -0.31 ", "'mass_per_length'"},
+      {"solver:", "irregularity:\n  dropper_length_std: -0.001\nsolver:", "'dropper_length_std'"},
+      {"solver:", "irregularity:\n  height_errors: short.csv\nsolver:", "'height_errors'"},
+      {"solver:", "irregularity:\n  height_errors: back.csv\nsolver:", "'height_errors'"},
+      {"solver:", "irregularity:\n  point_masses: [{x: 700, mass: 2}]\nsolver:", "'point_masses[0]'"},
+      {"solver:", "irregularity:\n  dropper_length_errors: [0.001, 0.002]\nsolver:", "dropper_length_errors"},
+  };
+  int n = 0;
+  for (const Case& c : cases) {
+    std::string t = src;
+    const auto at = t.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    t.replace(at, std::string(c.from).size(), c.to);
+    const std::string file = write(fmt::format("bad{}.yaml", n++), t);
+    const auto r = run("check " + quote(file));
+    EXPECT_EQ(r.code, 2) << c.to << "\n" << r.err;
+    EXPECT_TRUE(contains(r.err, file)) << r.err;
+    EXPECT_TRUE(contains(r.err, c.key)) << c.key << "\n" << r.err;
+  }
+  // Overrides: a negative std, and a stitch key on a line that has none.
+  auto r = run("check " + model("catenary-fe.yaml") + " --set irregularity.dropper_length_std=-1");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "dropper_length_std")) << r.err;
+  r = run("check " + model("catenary-fe.yaml") + " --set stitch.enabled=false");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "stitch")) << r.err;
+}
+
 }  // namespace test_apps_catenary_cli

@@ -91,6 +91,10 @@ struct FeIrregularity {
     double mass;  ///< kg
   };
   std::vector<PointMass> point_masses;  ///< hard spots on the contact wire (clamps, section insulators)
+  /// The dynamics (K, M) with each dropper's own stiffness EA/L' and mass; false (default): with the
+  /// designed droppers' (the form-finding without errors), so that the modal solve keeps the perfect
+  /// line's modes (docs/catenary-fe.md "Irregularities"). The static state is exact either way.
+  bool exact_dropper_dynamics = false;
   bool any() const {
     return dropper_length_std > 0 || !dropper_length_errors.empty() || !height_error_x.empty() || !point_masses.empty();
   }
@@ -161,7 +165,10 @@ class FeLine {
   static constexpr int kWires = 3;
 
   const Eigen::SparseMatrix<double>& M() const { return M_; }
-  const Eigen::SparseMatrix<double>& K() const { return K_; }  ///< K₀: all droppers taut
+  const Eigen::SparseMatrix<double>& K() const { return K_; }  ///< K₀: all droppers taut (the dynamics)
+  /// The static stiffness: K with each dropper's own EA/length (the static state, elasticity); K
+  /// itself unless an irregular line's dropper lengths differ from the design (FeIrregularity).
+  const Eigen::SparseMatrix<double>& K_static() const { return K_static_; }
   const Eigen::SparseMatrix<double>& C() const { return C_; }
 
   struct Dropper {
@@ -169,7 +176,7 @@ class FeLine {
     int node;          ///< station
     int dof_m, dof_c;  ///< free DOFs of w at its messenger and contact-wire ends
     double length;     ///< unstretched length from the form-finding, m
-    double stiffness;  ///< EA / length, N/m
+    double stiffness;  ///< N/m, in the dynamics (K): EA / its designed length (FeIrregularity::exact_dropper_dynamics)
     double tension;    ///< static tension, N (negative: slack in the static state of an irregular line)
     /// Where it hangs from: the messenger (a span dropper, or a stitch dropper without its stitch
     /// wire) or a stitch wire (dof_m is then the stitch wire's w).
@@ -179,6 +186,7 @@ class FeLine {
     double EA = 0;                 ///< N
     double mass_per_length = 0;    ///< kg/m (half its mass lumped at each end)
     double clamp_upper = 0, clamp_contact = 0;  ///< kg, clamp masses at its two ends
+    double static_stiffness = 0;   ///< EA / length, N/m: the static state's (K_static)
   };
   const std::vector<Dropper>& droppers() const { return droppers_; }
   /// Interior masts (the line's end masts are anchors): x and the contact wire's w DOF there.
@@ -240,7 +248,8 @@ class FeLine {
   Eigen::SparseMatrix<double> K_wires_;  ///< wires and supports, no droppers (equilibrium_residual)
   Eigen::VectorXd f_gravity_;      ///< gravity on the wires, clamps, droppers and point masses
   Eigen::VectorXd w_static_;       ///< the heights of the reference state, per DOF (w from its reference)
-  BandLlt K_llt_;
+  Eigen::SparseMatrix<double> K_static_;
+  BandLlt K_llt_;  ///< of K_static_
   friend class FeIntegrator;
 };
 

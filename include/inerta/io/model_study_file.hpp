@@ -14,7 +14,9 @@ bool is_model_study(const std::string& path);
 
 /// Reads a model study; paths in it are relative to the file. ModelError with file:line:key for
 /// every bad key, value, input, output or layout; the baseline (the strut's own network) is
-/// evaluated once, so an objective that cannot be computed fails here.
-optim::ModelStudy load_model_study(const std::string& path);
+/// evaluated once, so an objective that cannot be computed fails here — unless `evaluate_baseline`
+/// is false (the file read and checked only: the fuzz target, whose inputs' baselines would cost a
+/// model's analysis each).
+optim::ModelStudy load_model_study(const std::string& path, bool evaluate_baseline = true);
 
 }  // namespace inerta::io
