@@ -16,6 +16,7 @@
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/fe_modal.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
@@ -179,6 +180,28 @@ TEST(FeStitch, ModalIsTheDirectSolveWithinTwoPercentAt250To350KmH) {
           << model << " " << r.speed * 3.6;
     }
   }
+}
+
+TEST(FeStitch, InteriorWindowsShareOneDecomposition) {
+  // The stitched line's interior windows differ mast to mast by ≈ 0.1 % in their droppers (the
+  // stitch wires carry the end spans' influence further in) and share one decomposition, as a simple
+  // line's do: first, interior, last = the first mirrored; two eigenproblems.
+  FeCatenaryData d = stitched(10);
+  d.solver = FeCatenaryData::Solver::Modal;
+  d.modal_cutoff = 20;
+  d.element_length = 1.0;
+  const catenary::FeModalLine ml(std::make_shared<const FeLine>(d));
+  ml.prepare(6);
+  EXPECT_EQ(ml.shapes(), 3);
+  EXPECT_EQ(ml.decompositions(), 2);
+  EXPECT_EQ(ml.window(1, 6)->modes, ml.window(2, 6)->modes);
+  EXPECT_EQ(ml.window(1, 6)->modes, ml.window(3, 6)->modes);
+  // But not an irregular line's windows with each dropper's own stiffness (≈ 1 % apart at 10 mm).
+  d.irregularity.dropper_length_std = 0.01;
+  d.irregularity.exact_dropper_dynamics = true;
+  const catenary::FeModalLine irr(std::make_shared<const FeLine>(d));
+  irr.prepare(6);
+  EXPECT_EQ(irr.shapes(), 5);
 }
 
 TEST(FeIrregularity, ZeroErrorsAreThePerfectLine) {
