@@ -19,9 +19,10 @@ std::vector<std::string> write_study_outcome(const std::string& dir, const optim
   std::filesystem::create_directories(dir);
   std::vector<std::string> files;
   auto add = [&](const std::vector<std::string>& more) { files.insert(files.end(), more.begin(), more.end()); };
-  if (study.all) {
-    write_text_file(dir + "/recheck.csv", o.recheck_csv());
-    files.push_back(dir + "/recheck.csv");
+  if (study.all) {  // multi-fidelity: the refined networks; else the time-domain re-checks
+    const std::string name = study.coarse ? "/refined.csv" : "/recheck.csv";
+    write_text_file(dir + name, study.coarse ? o.refined_csv() : o.recheck_csv());
+    files.push_back(dir + name);
   }
   if (!o.admittance.empty()) add(write_admittance_results(dir, o.admittance, o.default_cost.J));
   if (study.all) add(write_structure_results(dir, study.name, "J2", "N", o.default_cost.J, o.entries));
