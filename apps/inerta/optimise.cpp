@@ -164,7 +164,8 @@ class Printer : public optim::StudyEvents {
     if (study_.all && study_.coarse) {
       int evaluations = 0;
       for (const auto& e : o.entries) evaluations += e.evaluations;
-      fmt::print("coarse search: {} networks, {} evaluations\n", o.entries.size(), evaluations);
+      fmt::print("coarse search: {} networks, {} evaluations; the default there {:.4f} N\n", o.entries.size(), evaluations,
+                 o.coarse_default_cost.J);
       print_refined(o);
     } else if (study_.all) {
       print_structure(o.entries, o.default_cost.J, "N");

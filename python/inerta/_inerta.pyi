@@ -1711,6 +1711,7 @@ class StudyOutcome:
     model: Optional[ModelStudyResult]
     baseline: Network
     default_cost: StudyCost
+    coarse_default_cost: StudyCost
     results: list[LayoutResult]
     entries: list[StructureEntry]
     order: list[int]

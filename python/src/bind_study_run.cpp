@@ -167,6 +167,8 @@ void bind_study_run(py::module_& m) {
       .def_readonly("model", &optim::StudyOutcome::model, "a model study's ModelStudyResult, or None")
       .def_readonly("baseline", &optim::StudyOutcome::baseline, "the default suspension")
       .def_readonly("default_cost", &optim::StudyOutcome::default_cost)
+      .def_readonly("coarse_default_cost", &optim::StudyOutcome::coarse_default_cost,
+                    "multi-fidelity layouts: all: the default on the coarse study (the entries' baseline)")
       .def_readonly("results", &optim::StudyOutcome::results,
                     "study order; layouts: all: ranked, best first (with a coarse study: the refined networks)")
       .def_readonly("entries", &optim::StudyOutcome::entries)

@@ -186,6 +186,11 @@ StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEve
     throw NumericalError(fmt::format("{}: the default suspension's periodic solution is unstable at {:.4g} km/h "
                                      "(Floquet multiplier ≥ 1): the study has no baseline",
                                      study.source, o.default_cost.unstable_speed * 3.6));
+  if (study.all && study.coarse) try {  // the entries' baseline: the default on the coarse study
+      o.coarse_default_cost = evaluate(*study.coarse, o.baseline);
+    } catch (const NumericalError&) {
+      o.coarse_default_cost.J = NAN;
+    }
   if (study.all) {
     std::vector<LayoutResult> all(study.layouts.size());
     o.entries = structure_search_batched(

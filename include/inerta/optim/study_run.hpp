@@ -147,6 +147,8 @@ struct StudyOutcome {
   std::optional<ModelStudyResult> model;
   network::Network baseline;  ///< the default suspension
   StudyCost default_cost;
+  /// Multi-fidelity `layouts: all`: the default's cost on the coarse study (what the entries compare with).
+  StudyCost coarse_default_cost;
   /// Named layouts: in the study's order. `layouts: all`: every network, ranked best first; with a coarse
   /// study (multi-fidelity) the refined networks, ranked by this study's cost (results[k] from
   /// entries[refinements[k].entry]).
