@@ -147,8 +147,27 @@ class Printer : public optim::StudyEvents {
     std::fflush(stdout);
   }
   void network(const optim::StructureProgress& p) override { structure_(p); }
+  void refining(const std::vector<std::size_t>& entries) override {
+    fmt::print("\nrefining the best {} distinct reduced networks of the coarse search on this study ({} catenaries × {} "
+               "speeds, {}; at most {} evaluations each):\n",
+               entries.size(), study_.catenaries.size(), study_.speeds.size(),
+               study_.method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study_.refine.max_evaluations);
+    std::fflush(stdout);
+  }
+  void refined(std::size_t k, const optim::LayoutResult& r) override {
+    fmt::print("  {:>2}. {:<28} here {:.4f} N → refined {:.4f} N after {} evaluations{}{}\n", k + 1, r.expression,
+               r.coarse_here.J, r.cost.J, r.evaluations, r.budget_exhausted ? " (budget exhausted)" : "",
+               r.cost.feasible ? "" : "; outside the limits: " + r.cost.violation);
+    std::fflush(stdout);
+  }
   void searches_done(const optim::StudyOutcome& o) override {
-    if (study_.all) {
+    if (study_.all && study_.coarse) {
+      int evaluations = 0;
+      for (const auto& e : o.entries) evaluations += e.evaluations;
+      fmt::print("coarse search: {} networks, {} evaluations; the default there {:.4f} N\n", o.entries.size(), evaluations,
+                 o.coarse_default_cost.J);
+      print_refined(o);
+    } else if (study_.all) {
       print_structure(o.entries, o.default_cost.J, "N");
       int evaluations = 0;
       for (const auto& e : o.entries) evaluations += e.evaluations;
@@ -212,6 +231,23 @@ class Printer : public optim::StudyEvents {
                  o.entries[o.rechecks.front().entry].reduced, o.rechecks.front().periodic_rank);
   }
 
+  // Multi-fidelity layouts: all: the refined networks ranked by this study's J2 (the final table).
+  void print_refined(const optim::StudyOutcome& o) const {
+    fmt::print("\nthe refined networks, ranked by this study's J2 (default {:.4f} N):\n", o.default_cost.J);
+    fmt::print("  {:>4} {:<44} {:>10} {:>6} {:>10} {:>10} {:>8}  {}\n", "rank", "network (refined values)", "coarse [N]",
+               "c.rank", "start [N]", "J2 [N]", "vs def.", "limits");
+    for (std::size_t k = 0; k < o.results.size(); ++k) {
+      const optim::LayoutResult& r = o.results[k];
+      const optim::StructureEntry& e = o.entries[o.refinements[k].entry];
+      std::string limits = r.cost.feasible ? "kept" : "outside: " + r.cost.violation;
+      if (!r.cost.binding.empty())
+        limits += fmt::format("; binds: {} ({:+.1f} %)", r.cost.binding, 100 * r.cost.binding_margin);
+      fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10.4f} {:>10.4f} {:>+7.1f}%  {}\n", k + 1,
+                 network::to_string(optim::design_network(r.layout, r.values), true), e.J, o.refinements[k].coarse_rank,
+                 r.coarse_here.J, r.cost.J, 100 * (r.cost.J - o.default_cost.J) / o.default_cost.J, limits);
+    }
+  }
+
   const optim::Study& study_;
   bool tty_;
   optim::StructureProgressFn structure_;
@@ -227,7 +263,15 @@ int cmd_optimise(const OptimiseArgs& a) {
   if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
   optim::Study study = io::load_study(a.study);
   const bool tty = isatty(STDOUT_FILENO);
-  if (study.all)
+  if (study.all && study.coarse)
+    fmt::print("study {}: every network of up to {} elements ({} networks) searched on the coarse study ({} catenaries, {} "
+               "speeds, {}), then the best {} distinct reduced networks refined here ({} catenaries, {} speeds, {})\n",
+               study.name, study.all->max_elements, study.layouts.size(), study.coarse->catenaries.size(),
+               study.coarse->speeds.size(),
+               study.coarse->method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study.refine_networks,
+               study.catenaries.size(), study.speeds.size(),
+               study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path");
+  else if (study.all)
     fmt::print("study {}: every network of up to {} elements ({} networks), {} catenaries, {} speeds, {} starts (seed {}) and "
                "a warm start from the best sub-network, periodic fast path\n",
                study.name, study.all->max_elements, study.layouts.size(), study.catenaries.size(), study.speeds.size(),
@@ -250,7 +294,7 @@ int cmd_optimise(const OptimiseArgs& a) {
     // The time domain: its searches are bounded by their evaluations (refine.max_evaluations for
     // a multi-fidelity study, search.max_evaluations per start otherwise).
     const long evals = study.coarse ? static_cast<long>(study.refine.max_evaluations) * study.refine_candidates *
-                                          static_cast<long>(study.layouts.size())
+                                          static_cast<long>(study.all ? study.refine_networks : study.layouts.size())
                                     : static_cast<long>(study.search.max_evaluations) * study.search.starts *
                                           static_cast<long>(study.layouts.size());
     if (e > 1) fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,

@@ -1180,6 +1180,7 @@ class Study:
     refine: SearchOptions
     worst_speed_first: bool
     refine_candidates: int
+    refine_networks: int
     @property
     def refine_optimiser(self) -> str: ...
     @property
@@ -1249,6 +1250,7 @@ def design_cost(study: Study, layout: str, params: dict[str, float]) -> DesignCo
 def optimise_layout(study: Study, layout: str, *,
                     progress: Optional[Callable[[int, int, float], None]] = None,
                     batch: Optional[Callable[[list[dict[str, float]]], list[DesignCost]]] = None) -> LayoutResult: ...
+def refine_layout(study: Study, layout: str, coarse: LayoutResult) -> LayoutResult: ...
 
 class SpeedCurve:
     catenary: str
@@ -1338,6 +1340,22 @@ class Report:
     map_opt_J: float
     centripetal: list[ReportCentripetal]
     time_check: StudyCost
+    acceptance: str
+    margins: list[MarginRow]
+
+class MarginRow:
+    design: str
+    catenary: str
+    speed: float
+    contact: int
+    criterion: str
+    value: float
+    limit: float
+    unit: str
+    margin: float
+    assessed: bool
+    passed: bool
+    relative: float
 
 def make_report(study: Study, results: Sequence[LayoutResult], options: Optional[ReportOptions] = None, *,
                 progress: Optional[Callable[[int, int, str, int, int], None]] = None) -> Report: ...
@@ -1593,6 +1611,7 @@ class StructureEntry:
     seconds: float
     def reduces(self) -> bool: ...
 
+def reduced_design(entry: StructureEntry) -> tuple[str, dict[str, float]] | None: ...
 def ranking(entries: Sequence[StructureEntry]) -> list[int]: ...
 
 class ParetoPoint:
@@ -1630,7 +1649,10 @@ class SearchTask:
     layout: str
     warm: list[dict[str, float]]
     network: bool
-    def __init__(self, layout: str, warm: Sequence[dict[str, float]] = ..., network: bool = False) -> None: ...
+    coarse: bool
+    refine: bool
+    def __init__(self, layout: str, warm: Sequence[dict[str, float]] = ..., network: bool = False,
+                 coarse: bool = False, refine: bool = False) -> None: ...
 
 class CheckTask:
     layout: str
@@ -1669,6 +1691,10 @@ class Recheck:
     failure: str
     settling_spans: float
 
+class Refinement:
+    entry: int
+    coarse_rank: int
+
 class BestDesign:
     index: int
     layout: str
@@ -1685,10 +1711,12 @@ class StudyOutcome:
     model: Optional[ModelStudyResult]
     baseline: Network
     default_cost: StudyCost
+    coarse_default_cost: StudyCost
     results: list[LayoutResult]
     entries: list[StructureEntry]
     order: list[int]
     rechecks: list[Recheck]
+    refinements: list[Refinement]
     admittance: list[AdmittanceBound]
     report: Optional[Report]
     model_figures: Optional[ModelStudyFigures]
@@ -1696,6 +1724,7 @@ class StudyOutcome:
     best: BestDesign
     seconds: float
     def recheck_csv(self) -> str: ...
+    def refined_csv(self) -> str: ...
 
 def run_study(study: Union[Study, ModelStudy], options: Optional[StudyOptions] = None, *,
               progress: Optional[Callable[..., None]] = None,

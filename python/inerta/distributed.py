@@ -136,7 +136,7 @@ def _params_key(params):
 
 
 def _search_key(task):
-    return (task.layout, task.network, tuple(_params_key(w) for w in task.warm))
+    return (task.layout, task.network, task.coarse, task.refine, tuple(_params_key(w) for w in task.warm))
 
 
 class DaskExecutor(_inerta.StudyExecutor):
@@ -211,7 +211,9 @@ class DaskExecutor(_inerta.StudyExecutor):
 
         if not todo:
             return results
-        if study.method == "time":
+        # A time-domain search runs here and sends its designs; a coarse one (the exhaustive search of a
+        # multi-fidelity layouts: all, by the periodic fast path) is a task of its own.
+        if study.method == "time" and not any(tasks[i].coarse for i in todo):
             with concurrent.futures.ThreadPoolExecutor(max_workers=len(todo)) as pool:
                 running = {pool.submit(_inerta.run_search, study, tasks[i], batch=self._batch(tasks[i].layout)): i
                            for i in todo}
@@ -307,9 +309,23 @@ def _main(argv=None):
                       f"{r.evaluations} evaluations", flush=True)
             elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
                 print(f"  [{values[0]}/{values[1]}] networks, best J2 so far {values[2]:.4f} N", flush=True)
+            elif event == "refining":
+                print(f"\n  refining the best {len(values[0])} distinct reduced networks of the coarse search on this study:",
+                      flush=True)
+            elif event == "refined":
+                k, r = values
+                print(f"    {k + 1}. {r.expression:<28} here {r.coarse_here.J:.4f} N -> refined {r.cost.J:.4f} N after "
+                      f"{r.evaluations} evaluations" + ("" if r.cost.feasible else f"; outside the limits: {r.cost.violation}"),
+                      flush=True)
             elif event == "searches_done":
                 o = values[0]
-                if study.all_networks:
+                if study.all_networks and study.coarse is not None:
+                    print(f"\n  the refined networks, ranked by this study's J2 (default {o.default_cost.J:.4f} N):")
+                    for r, f in zip(o.results, o.refinements):
+                        e = o.entries[f.entry]
+                        print(f"    {r.expression:<28} coarse {e.J:.4f} N (#{f.coarse_rank}), start {r.coarse_here.J:.4f} N, "
+                              f"refined {r.cost.J:.4f} N" + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
+                elif study.all_networks:
                     print("\n  best networks (periodic fast path):")
                     for r in o.results[:10]:
                         print(f"    {r.expression:<40} J2 = {r.cost.J:.4f} N")

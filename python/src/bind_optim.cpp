@@ -126,6 +126,8 @@ void bind_optim(py::module_& m) {
                     "multi-fidelity: the refinement first at the start's worst speed only")
       .def_readonly("refine_candidates", &Study::refine_candidates,
                     "multi-fidelity: the refinement starts from this many best coarse end points")
+      .def_readonly("refine_networks", &Study::refine_networks,
+                    "multi-fidelity layouts: all (refine: {best_networks: K}): the K best distinct reduced networks refined")
       .def_property_readonly("refine_optimiser", [](const Study& s) { return numerics::optimiser_name(s.refine_optimiser); },
                              "multi-fidelity: the refinement's optimiser, 'pattern', 'bobyqa' or 'cobyla'")
       .def_property_readonly("all_networks", [](const Study& s) { return s.all.has_value(); },
@@ -310,6 +312,12 @@ void bind_optim(py::module_& m) {
         "progress(start, evaluations, best J in N); batch(list of params dicts) -> list of DesignCost: "
         "evaluates a time-domain search's polls elsewhere (inerta.distributed); Ctrl-C cancels.");
 
+  m.def("refine_layout", [](const Study& s, const std::string& layout, const optim::LayoutResult& coarse) {
+    return run(py::none(), [&](Call&) { return optim::refine_layout(s, layout, coarse); });
+  }, py::arg("study"), py::arg("layout"), py::arg("coarse"),
+        "Multi-fidelity: the refinement of a layout on a study with a coarse study, from a coarse LayoutResult "
+        "(its values and ends), as optimise_layout does after its coarse search.");
+
   py::class_<optim::SpeedCurve>(m, "SpeedCurve", "σ and the mean contact force over the speeds under one catenary.")
       .def_readonly("catenary", &optim::SpeedCurve::catenary)
       .def_property_readonly("speed", [](const optim::SpeedCurve& c) { return copy(c.speed); }, "m/s")
@@ -396,6 +404,20 @@ void bind_optim(py::module_& m) {
       .def_readonly("on", &optim::Report::Centripetal::on)
       .def_readonly("off", &optim::Report::Centripetal::off)
       .def_readonly("off_simulated", &optim::Report::Centripetal::off_simulated);
+  py::class_<optim::MarginRow>(m, "MarginRow",
+                               "One acceptance criterion for one design, catenary variant, speed and contact (Report.margins).")
+      .def_readonly("design", &optim::MarginRow::design)
+      .def_readonly("catenary", &optim::MarginRow::catenary)
+      .def_readonly("speed", &optim::MarginRow::speed, "m/s")
+      .def_readonly("contact", &optim::MarginRow::contact)
+      .def_property_readonly("criterion", [](const optim::MarginRow& r) { return r.result.criterion; })
+      .def_property_readonly("value", [](const optim::MarginRow& r) { return r.result.value; })
+      .def_property_readonly("limit", [](const optim::MarginRow& r) { return r.result.limit; })
+      .def_property_readonly("unit", [](const optim::MarginRow& r) { return r.result.unit; })
+      .def_property_readonly("margin", [](const optim::MarginRow& r) { return r.result.margin; }, "in the unit, > 0: passes")
+      .def_property_readonly("assessed", [](const optim::MarginRow& r) { return r.result.assessed; })
+      .def_property_readonly("passed", [](const optim::MarginRow& r) { return r.result.passed; })
+      .def_readonly("relative", &optim::MarginRow::relative, "the margin relative to the limit (< 0: fails)");
   py::class_<optim::Report>(m, "Report", "The data behind a study's figures (optim::make_report).")
       .def_readonly("study", &optim::Report::study)
       .def_readonly("catenaries", &optim::Report::catenaries)
@@ -417,7 +439,9 @@ void bind_optim(py::module_& m) {
       .def_readonly("map_opt_y", &optim::Report::map_opt_y)
       .def_readonly("map_opt_J", &optim::Report::map_opt_J)
       .def_readonly("centripetal", &optim::Report::centripetal)
-      .def_readonly("time_check", &optim::Report::time_check);
+      .def_readonly("time_check", &optim::Report::time_check)
+      .def_readonly("acceptance", &optim::Report::acceptance, "the acceptance set of the study's limits, or ''")
+      .def_readonly("margins", &optim::Report::margins, "every criterion's margin, default and best, per variant and speed");
   m.def("make_report", [](const Study& s, const std::vector<optim::LayoutResult>& results, const py::object& options,
                           const py::object& progress) {
     const optim::ReportOptions o = options.is_none() ? optim::ReportOptions{} : options.cast<optim::ReportOptions>();

@@ -104,6 +104,8 @@ void bind_structure(py::module_& m) {
       .def_readonly("warm_from", &optim::StructureEntry::warm_from, "the sub-network whose optimum was a start")
       .def_readonly("seconds", &optim::StructureEntry::seconds)
       .def("reduces", &optim::StructureEntry::reduces, "True if the reduced network has fewer elements");
+  m.def("reduced_design", &optim::reduced_design, py::arg("entry"),
+        "An entry's reduced network as a design: (expression, values), or None (no design, open or rigid).");
   m.def("ranking", &optim::ranking, py::arg("entries"), "Indices of the entries from best to worst (feasible first).");
   py::class_<optim::ParetoPoint>(m, "ParetoPoint", "The best reduced network with these many elements and inerters.")
       .def_readonly("elements", &optim::ParetoPoint::elements)

@@ -42,6 +42,12 @@ class PyEvents : public optim::StudyEvents {
   void network(const optim::StructureProgress& p) override {
     call_.post([done = p.done, total = p.total, b = p.best_J](const py::object& cb) { cb("network", done, total, b); });
   }
+  void refining(const std::vector<std::size_t>& entries) override {
+    call_.post([entries](const py::object& cb) { cb("refining", entries); });
+  }
+  void refined(std::size_t k, const optim::LayoutResult& r) override {
+    call_.post([k, r](const py::object& cb) { cb("refined", k, r); });
+  }
   void searches_done(const optim::StudyOutcome& o) override {
     call_.post([o](const py::object& cb) { cb("searches_done", o); });
   }
@@ -60,17 +66,21 @@ class PyEvents : public optim::StudyEvents {
 
 void bind_study_run(py::module_& m) {
   py::class_<optim::SearchTask>(m, "SearchTask", "One search of a study: a layout and further starts (optim::SearchTask).")
-      .def(py::init([](std::string layout, std::vector<network::Params> warm, bool network) {
-             return optim::SearchTask{std::move(layout), std::move(warm), network};
+      .def(py::init([](std::string layout, std::vector<network::Params> warm, bool network, bool coarse, bool refine) {
+             return optim::SearchTask{std::move(layout), std::move(warm), network, coarse, refine};
            }),
-           py::arg("layout"), py::arg("warm") = std::vector<network::Params>{}, py::arg("network") = false)
+           py::arg("layout"), py::arg("warm") = std::vector<network::Params>{}, py::arg("network") = false,
+           py::arg("coarse") = false, py::arg("refine") = false)
       .def_readonly("layout", &optim::SearchTask::layout)
       .def_readonly("warm", &optim::SearchTask::warm, "further starts: complete value sets")
       .def_readonly("network", &optim::SearchTask::network, "a network of layouts: all (grid start, pruned optimum)")
-      .def(py::pickle([](const optim::SearchTask& t) { return py::make_tuple(t.layout, t.warm, t.network); },
+      .def_readonly("coarse", &optim::SearchTask::coarse, "multi-fidelity layouts: all: searched on the study's coarse study")
+      .def_readonly("refine", &optim::SearchTask::refine,
+                    "multi-fidelity layouts: all: refined on this study from warm[0] (a coarse optimum)")
+      .def(py::pickle([](const optim::SearchTask& t) { return py::make_tuple(t.layout, t.warm, t.network, t.coarse, t.refine); },
                       [](const py::tuple& t) {
                         return optim::SearchTask{t[0].cast<std::string>(), t[1].cast<std::vector<network::Params>>(),
-                                                 t[2].cast<bool>()};
+                                                 t[2].cast<bool>(), t[3].cast<bool>(), t[4].cast<bool>()};
                       }));
   py::class_<optim::CheckTask>(m, "CheckTask",
                                "One design to evaluate: the default suspension (layout '') or a layout's values, by the "
@@ -136,6 +146,9 @@ void bind_study_run(py::module_& m) {
       .def_readonly("time", &optim::Recheck::time, "its J2 in the time domain")
       .def_readonly("failure", &optim::Recheck::failure)
       .def_readonly("settling_spans", &optim::Recheck::settling_spans);
+  py::class_<optim::Refinement>(m, "Refinement", "Multi-fidelity layouts: all: where a refined network came from.")
+      .def_readonly("entry", &optim::Refinement::entry, "index in StudyOutcome.entries (the coarse search's)")
+      .def_readonly("coarse_rank", &optim::Refinement::coarse_rank, "its rank among the refined by the coarse search");
   py::class_<optim::BestDesign>(m, "BestDesign", "The design a study recommends.")
       .def_readonly("index", &optim::BestDesign::index, "in StudyOutcome.results (a model study: model.results)")
       .def_readonly("layout", &optim::BestDesign::layout)
@@ -154,9 +167,15 @@ void bind_study_run(py::module_& m) {
       .def_readonly("model", &optim::StudyOutcome::model, "a model study's ModelStudyResult, or None")
       .def_readonly("baseline", &optim::StudyOutcome::baseline, "the default suspension")
       .def_readonly("default_cost", &optim::StudyOutcome::default_cost)
-      .def_readonly("results", &optim::StudyOutcome::results, "study order; layouts: all: ranked, best first")
+      .def_readonly("coarse_default_cost", &optim::StudyOutcome::coarse_default_cost,
+                    "multi-fidelity layouts: all: the default on the coarse study (the entries' baseline)")
+      .def_readonly("results", &optim::StudyOutcome::results,
+                    "study order; layouts: all: ranked, best first (with a coarse study: the refined networks)")
       .def_readonly("entries", &optim::StudyOutcome::entries)
-      .def_readonly("order", &optim::StudyOutcome::order, "results[k] is entries[order[k]]")
+      .def_readonly("order", &optim::StudyOutcome::order,
+                    "ranking(entries); without a coarse study results[k] is entries[order[k]]")
+      .def_readonly("refinements", &optim::StudyOutcome::refinements,
+                    "multi-fidelity layouts: all: results[k] refined from entries[refinements[k].entry]")
       .def_readonly("rechecks", &optim::StudyOutcome::rechecks, "ranked by the time-domain J2")
       .def_readonly("admittance", &optim::StudyOutcome::admittance)
       .def_readonly("report", &optim::StudyOutcome::report)
@@ -164,7 +183,8 @@ void bind_study_run(py::module_& m) {
       .def_readonly("time_check", &optim::StudyOutcome::time_check, "the best design's J2 in the time domain")
       .def_readonly("best", &optim::StudyOutcome::best)
       .def_readonly("seconds", &optim::StudyOutcome::seconds, "wall time of the default and the searches, s")
-      .def("recheck_csv", &optim::StudyOutcome::recheck_csv);
+      .def("recheck_csv", &optim::StudyOutcome::recheck_csv)
+      .def("refined_csv", &optim::StudyOutcome::refined_csv);
   m.def("run_study", [](const py::object& study, const py::object& options, const py::object& progress,
                         optim::StudyExecutor* executor) {
     const optim::StudyOptions o = options.is_none() ? optim::StudyOptions{} : options.cast<optim::StudyOptions>();
@@ -184,7 +204,7 @@ void bind_study_run(py::module_& m) {
   }, py::arg("study"), py::arg("options") = py::none(), py::kw_only(), py::arg("progress") = py::none(),
         py::arg("executor") = nullptr,
         "A whole study in one call (optim::run_study): a Study or a ModelStudy. progress(event, *values): "
-        "('searching', i, start, evaluations, best), ('searched', i, result), ('network', done, total, best J), "
+        "('searching', i, start, evaluations, best), ('searched', i, result), ('network', done, total, best J), ('refining', [entry]), ('refined', k, result), "
         "('searches_done', outcome), ('bound', AdmittanceBound), ('report', step, steps, what, done, total). "
         "executor: a StudyExecutor (default: this process). inerta.optimise is the convenient form.");
   m.def("write_study_outcome", [](const optim::StudyOutcome& o, const std::string& dir) {

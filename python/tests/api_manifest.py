@@ -68,6 +68,9 @@ BOUND = {
     "optim::LocalExecutor": "LocalExecutor",
     "optim::StudyOptions": "StudyOptions",
     "optim::Recheck": "Recheck",
+    "optim::Refinement": "Refinement",
+    "optim::reduced_design": "reduced_design",
+    "optim::refine_layout": "refine_layout",
     "optim::BestDesign": "BestDesign",
     "optim::StudyOutcome": "StudyOutcome",
     "optim::run_study": "run_study",
@@ -260,6 +263,7 @@ BOUND = {
     "optim::Design": "Design",
     "optim::ReportOptions": "ReportOptions",
     "optim::Report": "Report",
+    "optim::MarginRow": "MarginRow",
     "optim::make_report": "make_report",
     # finite-element catenary (inspection and the lumped fit; runs through Catenary)
     "catenary::FeCatenary": "FeCatenary",
@@ -369,6 +373,7 @@ EXCLUDED = {
     "optim::structure_search_batched": "takes a C++ batch optimiser; Python runs it through run_study's executor",
     "optim::structure_outcome": "run_study's bridge from a network's LayoutResult to structure_search (C++ only)",
     "optim::StudyEvents": "delivered to run_study's progress as (event, *values)",
+    "optim::acceptance_margins": "make_report computes it from its own runs: Report.margins",
     "optim::ModelStudyProgress": "delivered to run_model_study's progress as (done, total, best J)",
     "optim::admittance_bounds": "takes a C++ bound function; run_model_study returns a model study's bounds "
                                 "(ModelStudyResult.admittance), admittance_bound gives one",

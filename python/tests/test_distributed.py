@@ -266,3 +266,37 @@ def test_cli_workers_give_the_serial_table(study_file, tmp_path):
     missing = subprocess.run([str(CLI), "optimise", str(tmp_path / "none.yaml"), "--workers", "1"],
                              capture_output=True, text=True, cwd=SRC)
     assert missing.returncode == 2 and missing.stderr.startswith("error: ") and "Traceback" not in missing.stderr
+
+
+# Every network on a short FE line (issue 37): the exhaustive search on the FE-fitted lumped line as a
+# task per network, then the best two reduced networks refined on the FE line with their designs on the
+# workers.
+FE_ALL_STUDY = """name: small FE all
+model: {src}/models/hsx.yaml
+catenary: {src}/models/catenary-fe.yaml
+catenaries: [[line.spans=3, solver.cutoff=30]]
+speeds: {{from: 200, to: 200, step: 10, unit: kmh}}
+bounds: {{inerter: [0.1, 1000], spring: [1, 1.0e6], damper: [1, 1.0e5]}}
+layouts: all
+networks: {{max_elements: 2}}
+coarse:
+  catenary: {src}/models/catenary-fe-lumped.yaml
+  catenaries: [[catenary.mc1=0, catenary.mc2=0, catenary.mc3=0]]
+  speeds: {{from: 150, to: 250, step: 50, unit: kmh}}
+  search: {{starts: 1, seed: 1, min_step: 0.1}}
+refine: {{best_networks: 2, initial_step: 0.3, min_step: 0.1, max_evaluations: 4}}
+"""
+
+
+def test_every_network_on_the_fe_line_is_the_same_on_dask(client, tmp_path):
+    p = tmp_path / "fe-all.yaml"
+    p.write_text(FE_ALL_STUDY.format(src=SRC))
+    stats = {}
+    local = inerta.optimise(inerta.load_study(p))
+    dask = inerta.distributed.optimise(p, client, stats=stats)
+    assert len(local.results) == 2 and [f.entry for f in local.refinements] == [f.entry for f in dask.refinements]
+    same_layouts(local.results, dask.results)
+    assert local.best.J2 == dask.best.J2 and local.best.values == dask.best.values
+    assert stats["searches_sent"] == len(local.entries)  # a task per network of the coarse search
+    assert stats["designs_sent"] > 0                     # the refinements' designs went to the workers
+    assert local.refined_csv() == dask.refined_csv()

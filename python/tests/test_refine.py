@@ -102,3 +102,44 @@ def test_a_bobyqa_refinement_on_dask_equals_the_serial_one_and_resumes(tmp_path)
     finally:
         client.close()
         cluster.close()
+
+
+# Every network on a short FE line (issue 37): the coarse search's best reduced networks refined there.
+FE_ALL = """name: small FE all
+model: {src}/models/hsx.yaml
+catenary: {src}/models/catenary-fe.yaml
+catenaries: [[line.spans=3, solver.cutoff=30]]
+speeds: {{from: 200, to: 200, step: 10, unit: kmh}}
+bounds: {{inerter: [0.1, 1000], spring: [1, 1.0e6], damper: [1, 1.0e5]}}
+layouts: all
+networks: {{max_elements: 2}}
+coarse:
+  catenary: {src}/models/catenary-fe-lumped.yaml
+  catenaries: [[catenary.mc1=0, catenary.mc2=0, catenary.mc3=0]]
+  speeds: {{from: 150, to: 250, step: 50, unit: kmh}}
+  search: {{starts: 1, seed: 1, min_step: 0.1}}
+refine: {{best_networks: 2, initial_step: 0.3, min_step: 0.1, max_evaluations: 4}}
+"""
+
+
+def test_every_network_refined_on_the_fe_line_from_python(tmp_path):
+    p = tmp_path / "fe-all.yaml"
+    p.write_text(FE_ALL.format(src=SRC))
+    study = inerta.load_study(p)
+    assert study.refine_networks == 2 and study.coarse is not None
+    o = inerta.optimise(study)
+    assert len(o.results) == 2 == len(o.refinements)
+    # Each result is its reduced network refined directly from its coarse optimum (bit for bit).
+    for r, f in zip(o.results, o.refinements):
+        expression, values = inerta.reduced_design(o.entries[f.entry])
+        assert expression == r.expression
+        direct = inerta.run_search(study, inerta.SearchTask(expression, [values], refine=True))
+        assert pickle.dumps(direct.values) == pickle.dumps(r.values) and direct.cost.J == r.cost.J
+    assert o.results[0].cost.penalised() <= o.results[1].cost.penalised()
+    # refine_layout from a named layout's coarse result: what optimise_layout's refinement does.
+    named = tmp_path / "named.yaml"
+    named.write_text(FE_ALL.format(src=SRC).replace("layouts: all\nnetworks: {max_elements: 2}\n", "layouts: [S2-5]\n")
+                     .replace("best_networks: 2, ", ""))
+    ns = inerta.load_study(named)
+    coarse = inerta.optimise_layout(ns.coarse, "S2-5")
+    assert pickle.dumps(inerta.refine_layout(ns, "S2-5", coarse)) == pickle.dumps(inerta.optimise_layout(ns, "S2-5"))

@@ -99,6 +99,10 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
       s.refine_optimiser = *opt;
     } else if (k == "candidates" && refine)
       s.refine_candidates = static_cast<int>(yaml_integer(path, v, k, 1, 100));
+    else if (k == "best_networks" && refine) {
+      if (!s.all) yaml_fail(path, it->first, k, "refines the best networks of layouts: all; this study names its layouts");
+      s.refine_networks = static_cast<int>(yaml_integer(path, v, k, 1, 1000));
+    }
     else if (k == "initial_step" && refine)
       o.initial_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
     else if (k == "min_step")
@@ -107,7 +111,8 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
       o.max_evaluations = static_cast<int>(yaml_integer(path, v, k, 1, 100000000));
     else
       yaml_fail(path, it->first, k,
-                refine ? "unknown key in refine; expected optimiser, initial_step, min_step, max_evaluations, worst_speed_first, candidates"
+                refine ? "unknown key in refine; expected optimiser, initial_step, min_step, max_evaluations, worst_speed_first, "
+                         "candidates, best_networks"
                        : "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
   }
   if (!refine && (!(s.lo > 0) || !(s.hi > s.lo))) yaml_fail(path, se, "search", "expected 0 < lo < hi (SI units)");
@@ -123,12 +128,12 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     const std::string k = it->first.as<std::string>();
     static const char* allowed[] = {"name",      "model",     "catenary", "catenaries", "speeds", "layouts",
                                     "search",    "harmonics", "objective", "networks",  "admittance", "method",
-                                    "limits",    "bounds",    "coarse",   "refine",     "pantographs"};
+                                    "limits",    "bounds",    "coarse",   "refine",     "pantographs", "set"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
       yaml_fail(path, it->first, k,
                     "unknown key; expected name, model, catenary, catenaries, speeds, layouts, networks, admittance, search, "
-                    "harmonics, objective, method, limits, bounds, coarse, refine, pantographs");
+                    "harmonics, objective, method, limits, bounds, coarse, refine, pantographs, set");
   }
   if (const YAML::Node o = root["objective"]; o.IsDefined()) {  // optional: a pantograph study's objective is J2
     if (!o.IsMap() || o.size() != 1 || !o["type"].IsDefined() || !o["type"].IsScalar() || o["type"].Scalar() != "j2")
@@ -143,16 +148,64 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
   optim::Study s;
   s.source = path;
   s.name = root["name"].IsDefined() ? root["name"].as<std::string>() : path;
-  s.pantograph = load_pantograph(rel(root["model"], "model"));
+  // `set: [NAME.KEY=VALUE]`: overrides of the model (e.g. the aerodynamic uplift aero-fit gives).
+  std::vector<std::string> model_sets;
+  if (const YAML::Node st = root["set"]; st.IsDefined()) {
+    if (!st.IsSequence()) yaml_fail(path, st, "set", "expected a list of model overrides NAME.KEY=VALUE");
+    for (const auto& x : st) {
+      if (!x.IsScalar()) yaml_fail(path, x, "set", "expected an override NAME.KEY=VALUE");
+      model_sets.push_back(x.Scalar());
+    }
+  }
+  const std::string model_path = rel(root["model"], "model");
+  try {
+    s.pantograph = load_pantograph(model_path, model_sets);
+  } catch (const ModelError& e) {
+    if (model_sets.empty()) throw;
+    yaml_fail(path, root["set"], "set", e.what());
+  }
   const std::string cat_path = rel(root["catenary"], "catenary");
   const YAML::Node cats = root["catenaries"];
   if (cats.IsDefined()) {
-    if (!cats.IsSequence() || cats.size() == 0)
-      yaml_fail(path, cats, "catenaries", "expected a list of override lists");
-    for (const auto& c : cats) {
-      std::vector<std::string> sets;
-      if (!c.IsSequence()) yaml_fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
-      for (const auto& x : c) sets.push_back(x.as<std::string>());
+    // A list of override lists, or {product: [FACTOR, ...]}: every combination of one override list of
+    // each factor (a list of override lists), the first factor varying slowest (seeds × tensions).
+    std::vector<std::vector<std::string>> variants;
+    if (cats.IsMap()) {
+      if (cats.size() != 1 || !cats["product"].IsDefined())
+        yaml_fail(path, cats, "catenaries", "expected a list of override lists, or {product: [[...], [...]]}");
+      const YAML::Node fs = cats["product"];
+      if (!fs.IsSequence() || fs.size() == 0)
+        yaml_fail(path, fs, "product", "expected a list of factors, each a list of override lists");
+      variants.push_back({});
+      for (const auto& f : fs) {
+        if (!f.IsSequence() || f.size() == 0)
+          yaml_fail(path, f, "product",
+                    "expected a factor: a list of override lists such as [[irregularity.seed=1], [irregularity.seed=2]]");
+        std::vector<std::vector<std::string>> next;
+        for (const auto& v : variants)
+          for (const auto& c : f) {
+            if (!c.IsSequence()) yaml_fail(path, c, "product", "expected an override list such as [irregularity.seed=1]");
+            auto sets = v;
+            for (const auto& x : c) {
+              if (!x.IsScalar()) yaml_fail(path, x, "product", "expected an override NAME.KEY=VALUE");
+              sets.push_back(x.Scalar());
+            }
+            next.push_back(std::move(sets));
+          }
+        variants = std::move(next);
+        if (variants.size() > 1000) yaml_fail(path, fs, "product", "more than 1000 catenary variants");
+      }
+    } else {
+      if (!cats.IsSequence() || cats.size() == 0)
+        yaml_fail(path, cats, "catenaries", "expected a list of override lists, or {product: [[...], [...]]}");
+      for (const auto& c : cats) {
+        std::vector<std::string> sets;
+        if (!c.IsSequence()) yaml_fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
+        for (const auto& x : c) sets.push_back(x.as<std::string>());
+        variants.push_back(std::move(sets));
+      }
+    }
+    for (const auto& sets : variants) {
       CatenaryFile f = load_catenary(cat_path, sets);
       s.catenaries.push_back(f.catenary);
       s.contact = f.contact;
@@ -280,6 +333,10 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     s.refine_optimiser = numerics::Optimiser::Cobyla;
     if (const YAML::Node r = root["refine"]; r.IsDefined()) read_search(path, r, s, true);
     s.coarse = std::move(sub);
+    if (s.all && !s.admittance_degrees.empty())  // each bound would be a search on the fine line
+      yaml_fail(path, root["admittance"], "admittance",
+                "not with layouts: all and a coarse study (the bound's search would run on the fine line); "
+                "run the coarse study alone with admittance:");
   }
   try {
     if (operating_lengths) s.operating_length = optim::operating_lengths(s);

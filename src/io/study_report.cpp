@@ -79,6 +79,16 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
     csv.commit();
     written.push_back(csv.path);
   }
+  if (!r.margins.empty()) {  // every criterion of the acceptance set: the band of F_m(v), σ's limit, each margin
+    File csv(fs::path(dir) / "acceptance_margins.csv");
+    fmt::print(csv.f.get(), "design,catenary,v_kmh,contact,criterion,value,limit,unit,margin,relative_margin,assessed,passed\n");
+    for (const optim::MarginRow& m : r.margins)
+      fmt::print(csv.f.get(), "{},{},{:.6g},{},{},{:.10g},{:.10g},{},{:.10g},{:.10g},{},{}\n", csv_field(m.design),
+                 csv_field(m.catenary), m.speed * 3.6, m.contact, m.result.criterion, m.result.value, m.result.limit,
+                 m.result.unit, m.result.margin, m.relative, m.result.assessed ? 1 : 0, m.result.passed ? 1 : 0);
+    csv.commit();
+    written.push_back(csv.path);
+  }
   if (r.map) {
     File csv(fs::path(dir) / "j2_map.csv");
     fmt::print(csv.f.get(), "{},{},J2_N\n", r.map->x, r.map->y);
@@ -111,6 +121,7 @@ std::vector<std::string> write_study_report(const optim::Report& r, const std::s
     Json j;
     j["study"] = r.study;
     j["catenaries"] = r.catenaries;
+    if (!r.acceptance.empty()) j["acceptance"] = r.acceptance;
     j["default"] = design(r.baseline);
     j["default_cost"] = cost(r.default_cost);
     j["best"] = design(r.best);

@@ -49,24 +49,46 @@ std::vector<SpeedCurve> sigma_curves(const Study& study, const network::Network&
 }
 
 std::vector<SpeedCurve> sigma_curves_time(const Study& study, const network::Network& net, bool centripetal,
-                                          const std::function<void(int, int)>& progress) {
+                                          const std::function<void(int, int)>& progress,
+                                          std::vector<std::vector<analysis::SpeedResult>>* runs) {
   // The catenaries' sweeps run concurrently (nested oneTBB loops), so one sweep's slowest speeds
   // overlap the others' instead of idling a core.
   std::vector<SpeedCurve> curves(study.catenaries.size());
+  std::vector<std::vector<analysis::SpeedResult>> results(study.catenaries.size());
+  analysis::RunOptions options;
+  if (study.limits.acceptance)  // the criteria's filter for the 20 Hz statistics, as evaluate_time
+    options.filter_cutoff = study.limits.acceptance->filter_cutoff, options.filter_order = study.limits.acceptance->filter_order;
   const int total = static_cast<int>(study.catenaries.size() * study.speeds.size());
   std::mutex mutex;
   int done = 0;
   tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
     pantograph::Pantograph m = candidate(study, net, i);
     m.model.options.centripetal = centripetal;
-    curves[i] = curve_of(study.catenary_labels[i], analysis::sweep(m, *study.catenaries[i], study.contact, study.speeds,
-                                                                   analysis::RunOptions{}, [&](int, int) {
-                                                                     std::lock_guard<std::mutex> lock(mutex);
-                                                                     ++done;
-                                                                     if (progress) progress(done, total);
-                                                                   }));
+    results[i] = analysis::sweep(m, *study.catenaries[i], study.contact, study.speeds, options, [&](int, int) {
+      std::lock_guard<std::mutex> lock(mutex);
+      ++done;
+      if (progress) progress(done, total);
+    });
+    curves[i] = curve_of(study.catenary_labels[i], results[i]);
   });
+  if (runs) *runs = std::move(results);
   return curves;
+}
+
+std::vector<MarginRow> acceptance_margins(const Study& study, const std::string& design,
+                                          const std::vector<std::vector<analysis::SpeedResult>>& runs) {
+  std::vector<MarginRow> rows;
+  if (!study.limits.acceptance) return rows;
+  for (std::size_t i = 0; i < runs.size() && i < study.catenary_labels.size(); ++i)
+    for (const analysis::SpeedResult& x : runs[i]) {
+      if (!x.stable()) continue;
+      const std::vector<analysis::VerdictInput> inputs = analysis::verdict_inputs(x);
+      for (std::size_t c = 0; c < inputs.size(); ++c)
+        for (const analysis::CriterionResult& r : analysis::assess(*study.limits.acceptance, inputs[c]))
+          rows.push_back({design, study.catenary_labels[i], x.speed, static_cast<int>(c), r,
+                          r.assessed ? analysis::relative_margin(r) : NAN});
+    }
+  return rows;
 }
 
 StudyCost worst_of(const std::vector<SpeedCurve>& curves) {
@@ -197,8 +219,18 @@ Report make_report(const Study& study, const std::vector<LayoutResult>& results,
 
   step(1, study.method == Study::Method::Time ? "σ(v) of the default and the best design (time domain)"
                                                : "σ(v) of the default and the best design (periodic)");
-  r.sigma_default = sigma_curves(study, r.baseline.net);
-  r.sigma_best = sigma_curves(study, r.best.net);
+  if (study.method == Study::Method::Time && study.limits.acceptance) {  // and every criterion's margin
+    std::vector<std::vector<analysis::SpeedResult>> runs_default, runs_best;
+    r.sigma_default = sigma_curves_time(study, r.baseline.net, true, {}, &runs_default);
+    r.sigma_best = sigma_curves_time(study, r.best.net, true, {}, &runs_best);
+    r.acceptance = study.limits.acceptance->name;
+    r.margins = acceptance_margins(study, r.baseline.label, runs_default);
+    const auto best = acceptance_margins(study, r.best.label, runs_best);
+    r.margins.insert(r.margins.end(), best.begin(), best.end());
+  } else {
+    r.sigma_default = sigma_curves(study, r.baseline.net);
+    r.sigma_best = sigma_curves(study, r.best.net);
+  }
   r.default_cost = worst_of(r.sigma_default);
   r.best_cost = worst_of(r.sigma_best);
   step(1, "", 1, 1);

@@ -132,6 +132,18 @@ void describe_reduced(StructureEntry& e) {
 }
 }  // namespace
 
+std::optional<std::pair<std::string, network::Params>> reduced_design(const StructureEntry& e) {
+  if (e.values.size() < static_cast<std::size_t>(e.counts.elements)) return std::nullopt;
+  const Network b = network::simplify(network::assign(network::parse(e.expression), e.values));
+  if (degenerate(b)) return std::nullopt;
+  const Network c = network::renamed(network::canonical(b));
+  std::vector<const Network*> ls;
+  leaves(c, ls);
+  network::Params values;
+  for (const Network* l : ls) values[l->name] = l->value;
+  return std::make_pair(network::to_string(c), values);
+}
+
 std::vector<StructureEntry> structure_search_batched(const std::vector<std::string>& expressions, const StructureBatch& optimise,
                                                      const StructureProgressFn& progress) {
   const std::size_t n = expressions.size();
@@ -250,6 +262,27 @@ network::Params prune_optimum(const std::string& expression, const network::Para
 
 LayoutResult run_search(const Study& study_in, const SearchTask& task, const numerics::Progress& progress,
                         const DesignBatch& batch) {
+  if (task.coarse) {  // multi-fidelity layouts: all: the exhaustive search on the coarse study
+    if (!study_in.coarse) throw InvalidArgument(study_in.source + ": a coarse search task needs a study with a coarse study");
+    SearchTask t = task;
+    t.coarse = false;
+    return run_search(*study_in.coarse, t, progress, {});  // the batch evaluates designs on this study, not the coarse one
+  }
+  if (task.refine) {  // multi-fidelity layouts: all: a reduced network refined here from its coarse optimum
+    if (task.warm.empty()) throw InvalidArgument("run_search: a refine task needs its start (warm.front())");
+    LayoutResult c;
+    c.layout = c.expression = task.layout;
+    c.values = task.warm.front();
+    c.cost.J = NAN;
+    try {
+      return refine_layout(study_in, task.layout, c, progress, batch);
+    } catch (const NumericalError&) {  // the final evaluation failed: no design
+      LayoutResult r;
+      r.layout = r.expression = task.layout;
+      r.cost.J = INFINITY;
+      return r;
+    }
+  }
   if (!task.network) return optimise_layout(study_in, task.layout, progress, task.warm, batch);
   Study study = study_in;
   study.search.grid_variables = std::max(study.search.grid_variables, grid_variables);

@@ -189,8 +189,10 @@ DesignCost design_cost(const Study& study, const std::string& layout, const netw
   }
 }
 
-LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress,
-                             const std::vector<network::Params>& warm, const DesignBatch& batch) {
+namespace {
+// optimise_layout's body: with `coarse`, the refinement from that coarse result (study.coarse set).
+LayoutResult search_layout(const Study& study, const std::string& layout, const numerics::Progress& progress,
+                           const std::vector<network::Params>& warm, const DesignBatch& batch, const LayoutResult* coarse) {
   LayoutResult r;
   r.layout = layout;
   auto named = network::find_layout(layout);
@@ -256,13 +258,17 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
   };
   numerics::Options search = study.search;
   if (study.coarse) {  // multi-fidelity: the coarse study's optimum is the one start of the refinement
-    const LayoutResult c = optimise_layout(*study.coarse, layout, progress, warm);
+    const LayoutResult c = coarse ? *coarse : optimise_layout(*study.coarse, layout, progress, warm);
     r.coarse_values = c.values, r.coarse_cost = c.cost, r.coarse_evaluations = c.evaluations;
     search = study.refine;
     search.starts = 0;
     auto start_of = [&](const network::Params& p) {
       std::vector<double> start;
-      for (const auto& v : vars) start.push_back(p.count(v.name) ? p.at(v.name) : 0.0);
+      for (const auto& v : vars) {
+        double x = p.count(v.name) ? p.at(v.name) : 0.0;
+        if (std::isfinite(x) && x > 0) x = std::clamp(x, v.lo, v.hi);  // a reduced network's merged value may leave the box
+        start.push_back(x);
+      }
       return start;
     };
     const std::vector<double> start = start_of(c.values);
@@ -334,6 +340,18 @@ LayoutResult optimise_layout(const Study& study, const std::string& layout, cons
                                   std::abs(v - vars[i].hi) <= 1e-9 * vars[i].hi)
       r.at_bounds.push_back(vars[i].name);
   return r;
+}
+}  // namespace
+
+LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress,
+                             const std::vector<network::Params>& warm, const DesignBatch& batch) {
+  return search_layout(study, layout, progress, warm, batch, nullptr);
+}
+
+LayoutResult refine_layout(const Study& study, const std::string& layout, const LayoutResult& coarse,
+                           const numerics::Progress& progress, const DesignBatch& batch) {
+  if (!study.coarse) throw InvalidArgument(study.source + ": refine_layout needs a study with a coarse study");
+  return search_layout(study, layout, progress, {}, batch, &coarse);
 }
 
 }  // namespace inerta::optim

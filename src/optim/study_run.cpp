@@ -66,6 +66,23 @@ std::string StudyOutcome::recheck_csv() const {
   return csv;
 }
 
+std::string StudyOutcome::refined_csv() const {
+  std::string csv =
+      "rank,network,coarse_network,coarse_rank,J2_coarse,J2_start,J2,vs_default_pct,feasible,violation,binding,"
+      "binding_margin,evaluations,budget_exhausted,values\n";
+  for (std::size_t k = 0; k < results.size() && k < refinements.size(); ++k) {
+    const LayoutResult& r = results[k];
+    const StructureEntry& e = entries[refinements[k].entry];
+    std::string values;
+    for (const auto& [name, v] : r.values) values += fmt::format("{}{}={:.10g}", values.empty() ? "" : ";", name, v);
+    csv += fmt::format("{},\"{}\",\"{}\",{},{:.10g},{:.10g},{:.10g},{:.6g},{},\"{}\",\"{}\",{:.6g},{},{},\"{}\"\n", k + 1,
+                       r.expression, e.expression, refinements[k].coarse_rank, e.J, r.coarse_here.J, r.cost.J,
+                       100 * (r.cost.J - default_cost.J) / default_cost.J, r.cost.feasible ? 1 : 0, r.cost.violation,
+                       r.cost.binding, r.cost.binding_margin, r.evaluations, r.budget_exhausted ? 1 : 0, values);
+  }
+  return csv;
+}
+
 namespace {
 
 class NoEvents : public StudyEvents {};
@@ -102,6 +119,44 @@ std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntr
   return out;
 }
 
+// Multi-fidelity `layouts: all`: the study's refine_networks best distinct reduced networks of the coarse
+// search (feasible first, by the coarse ranking), each refined here from its coarse optimum; ranked by the
+// cost here (penalised: within the limits first), ties by the coarse rank. Sets o.refinements.
+std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, StudyExecutor& ex, StudyEvents& events) {
+  std::vector<std::string> seen;
+  std::vector<SearchTask> tasks;
+  std::vector<Refinement> from;
+  for (std::size_t i : o.order) {
+    if (static_cast<int>(tasks.size()) == study.refine_networks) break;
+    const StructureEntry& e = o.entries[i];
+    if (!std::isfinite(e.J)) continue;
+    const auto design = reduced_design(e);
+    if (!design || std::find(seen.begin(), seen.end(), e.reduced_structure) != seen.end()) continue;
+    seen.push_back(e.reduced_structure);
+    SearchTask t;
+    t.layout = design->first, t.warm = {design->second}, t.refine = true;
+    tasks.push_back(std::move(t));
+    from.push_back({i, static_cast<int>(from.size()) + 1});
+  }
+  std::vector<std::size_t> entries;
+  for (const auto& f : from) entries.push_back(f.entry);
+  events.refining(entries);
+  std::vector<LayoutResult> refined = ex.search(
+      study, tasks, [&](std::size_t k, const LayoutResult& r) { events.refined(k, r); }, {});
+  for (std::size_t k = 0; k < refined.size(); ++k) {  // the coarse search's side of each (not the task's)
+    const StructureEntry& e = o.entries[from[k].entry];
+    LayoutResult& r = refined[k];
+    r.coarse_cost.J = e.J, r.coarse_cost.feasible = e.feasible, r.coarse_evaluations = e.evaluations;
+  }
+  std::vector<std::size_t> idx(refined.size());
+  for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
+  std::stable_sort(idx.begin(), idx.end(),
+                   [&](std::size_t a, std::size_t b) { return refined[a].cost.penalised() < refined[b].cost.penalised(); });
+  std::vector<LayoutResult> out;
+  for (std::size_t k : idx) out.push_back(refined[k]), o.refinements.push_back(from[k]);
+  return out;
+}
+
 BestDesign best_of(const LayoutResult& r, std::size_t index) {
   BestDesign b;
   b.index = index;
@@ -131,13 +186,18 @@ StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEve
     throw NumericalError(fmt::format("{}: the default suspension's periodic solution is unstable at {:.4g} km/h "
                                      "(Floquet multiplier ≥ 1): the study has no baseline",
                                      study.source, o.default_cost.unstable_speed * 3.6));
+  if (study.all && study.coarse) try {  // the entries' baseline: the default on the coarse study
+      o.coarse_default_cost = evaluate(*study.coarse, o.baseline);
+    } catch (const NumericalError&) {
+      o.coarse_default_cost.J = NAN;
+    }
   if (study.all) {
     std::vector<LayoutResult> all(study.layouts.size());
     o.entries = structure_search_batched(
         study.layouts,
         [&](const std::vector<StructureTask>& tasks, const std::function<void(std::size_t, const StructureOutcome&)>& done) {
           std::vector<SearchTask> st;
-          for (const auto& t : tasks) st.push_back({t.expression, t.warm, true});
+          for (const auto& t : tasks) st.push_back({t.expression, t.warm, true, study.coarse != nullptr});
           ex.search(study, st, [&](std::size_t k, const LayoutResult& r) {
             all[tasks[k].index] = r;
             done(k, structure_outcome(r));
@@ -145,7 +205,10 @@ StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEve
         },
         [&](const StructureProgress& p) { events.network(p); });
     o.order = ranking(o.entries);
-    for (std::size_t i : o.order) o.results.push_back(all[i]);  // ranked: results.csv best first
+    if (study.coarse)  // multi-fidelity: the best distinct reduced networks refined here, ranked here
+      o.results = refine_networks(study, o, ex, events);
+    else
+      for (std::size_t i : o.order) o.results.push_back(all[i]);  // ranked: results.csv best first
   } else {
     std::vector<SearchTask> tasks;
     for (const auto& l : study.layouts) tasks.push_back({l, {}, false});
@@ -159,7 +222,7 @@ StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEve
   for (std::size_t i = 0; i < o.results.size(); ++i)
     if (o.results[i].cost.penalised() < o.results[best].cost.penalised()) best = i;  // within the limits first
   int verified = -1;
-  if (study.all) {
+  if (study.all && !study.coarse) {
     o.rechecks = recheck(study, o.entries, options.rechecks, ex);
     if (!o.rechecks.empty() && o.rechecks.front().failure.empty())  // the time domain has the last word
       verified = static_cast<int>(std::find(o.order.begin(), o.order.end(), o.rechecks.front().entry) - o.order.begin());

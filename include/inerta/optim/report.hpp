@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "inerta/analysis/acceptance.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/frf.hpp"
 #include "inerta/network/network.hpp"
@@ -36,8 +37,24 @@ std::vector<SpeedCurve> sigma_curves(const Study& study, const network::Network&
 /// The same by the time-domain reference (analysis::sweep), with the model option `centripetal`
 /// (the inerter's centripetal correction, as `--no-centripetal` switches it off).
 /// progress(done, total) counts speeds over all catenaries.
+/// With acceptance limits, the runs use the criteria's filter (as evaluate_time); `runs`, if given,
+/// receives each catenary's SpeedResults.
 std::vector<SpeedCurve> sigma_curves_time(const Study& study, const network::Network& net, bool centripetal = true,
-                                          const std::function<void(int, int)>& progress = {});
+                                          const std::function<void(int, int)>& progress = {},
+                                          std::vector<std::vector<analysis::SpeedResult>>* runs = nullptr);
+
+/// One criterion of a study's acceptance set for one design, catenary variant, speed and contact
+/// (analysis::assess of the run): its value, limit and margin, and the margin relative to the limit.
+struct MarginRow {
+  std::string design, catenary;
+  double speed = 0;  ///< m/s
+  int contact = 0;   ///< the pantograph (0: the first)
+  analysis::CriterionResult result;
+  double relative = NAN;  ///< analysis::relative_margin (< 0: fails)
+};
+/// Every criterion of the study's acceptance set on each run of `runs` (sigma_curves_time's), for `design`.
+std::vector<MarginRow> acceptance_margins(const Study& study, const std::string& design,
+                                          const std::vector<std::vector<analysis::SpeedResult>>& runs);
 
 /// The largest σ over the curves: J2, its speed, the mean force there and the catenary's index.
 StudyCost worst_of(const std::vector<SpeedCurve>& curves);
@@ -125,6 +142,10 @@ struct Report {
   };
   std::vector<Centripetal> centripetal;
   StudyCost time_check;  ///< the best design's J2 in the time domain (= worst_of(centripetal[0].on))
+  /// With acceptance limits (a time-domain study): the set's name and every criterion's margin for the
+  /// default and the best design, per catenary variant and speed (from the runs of (a)).
+  std::string acceptance;
+  std::vector<MarginRow> margins;
 };
 
 /// progress(step, steps, what, done, total): called with done = 0 when a step starts, then as it

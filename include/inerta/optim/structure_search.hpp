@@ -6,6 +6,8 @@
 // is never worse than that of any network it contains with one element fewer.
 #include <functional>
 #include <limits>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -82,6 +84,10 @@ using StructureBatch = std::function<void(const std::vector<StructureTask>& task
 /// same entries, as each size's warm starts come from smaller networks only.
 std::vector<StructureEntry> structure_search_batched(const std::vector<std::string>& expressions, const StructureBatch& optimise,
                                                      const StructureProgressFn& progress = {});
+
+/// An entry's reduced network as a design of its own: the expression (canonical, renamed: `reduced`
+/// without values) and its element values; nullopt if the entry has no design or reduces to open or rigid.
+std::optional<std::pair<std::string, network::Params>> reduced_design(const StructureEntry& entry);
 
 /// Indices of the entries from best to worst: feasible first, by cost, then by fewer reduced
 /// elements, then by the order of the list.

@@ -64,6 +64,10 @@ struct Study {
   /// points of the coarse search's starts (best first; fewer if fewer differ), each with `refine`'s
   /// budget, and keeps the best (1: the coarse optimum only).
   int refine_candidates = 1;
+  /// `layouts: all` with a coarse study, `refine: {best_networks: K}`: the exhaustive search runs on the
+  /// coarse study only, then the K best distinct reduced networks (feasible first) are refined here
+  /// (docs/studies.md "Every network on the finite-element line").
+  int refine_networks = 5;
   /// Multi-fidelity, `refine: {optimiser: bobyqa | cobyla | pattern}`: the refinement's optimiser — the
   /// pattern search, or NLopt's BOBYQA (the limits as an exact penalty) or COBYLA (the limits as a
   /// constraint) on the same log-scaled variables (numerics/model_search.hpp, docs/studies.md).
@@ -202,5 +206,11 @@ using DesignBatch = std::function<std::vector<DesignCost>(const std::vector<netw
 /// refinement) evaluate their polls through it instead of in threads here; the result is the same.
 LayoutResult optimise_layout(const Study& study, const std::string& layout, const numerics::Progress& progress = {},
                              const std::vector<network::Params>& warm = {}, const DesignBatch& batch = {});
+
+/// Multi-fidelity: the refinement of `layout` on `study` (which has a coarse study) from a coarse result
+/// (its values, and its ends as further candidates, refine_candidates at most); what optimise_layout does
+/// after its coarse search. The result's coarse_* fields are the coarse result's.
+LayoutResult refine_layout(const Study& study, const std::string& layout, const LayoutResult& coarse,
+                           const numerics::Progress& progress = {}, const DesignBatch& batch = {});
 
 }  // namespace inerta::optim

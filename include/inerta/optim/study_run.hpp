@@ -25,6 +25,11 @@ struct SearchTask {
   std::string layout;
   std::vector<network::Params> warm;
   bool network = false;  ///< a network of `layouts: all`: a grid start (≤ 2 elements), its optimum pruned
+  /// Multi-fidelity `layouts: all`: the search runs on the study's coarse study (the exhaustive search).
+  bool coarse = false;
+  /// Multi-fidelity `layouts: all`: the refinement on this study from warm.front() (a coarse optimum:
+  /// refine_layout), no coarse search.
+  bool refine = false;
 };
 
 /// What a search task computes: optimise_layout(study, layout, progress, warm, batch); for a network
@@ -87,6 +92,10 @@ class StudyEvents {
   virtual void searched(std::size_t /*index*/, const ModelLayoutResult&) {}
   /// `layouts: all`: after each network.
   virtual void network(const StructureProgress&) {}
+  /// Multi-fidelity `layouts: all`: before the refinements, the coarse entries refined (their indices).
+  virtual void refining(const std::vector<std::size_t>& /*entries*/) {}
+  /// Multi-fidelity `layouts: all`: after the refinement of the k-th network refined (in `refining`'s order).
+  virtual void refined(std::size_t /*k*/, const LayoutResult&) {}
   /// After the searches (and a `layouts: all` J2 study's re-checks): the outcome without its bounds and report.
   virtual void searches_done(const StudyOutcome&) {}
   /// After each admittance bound.
@@ -112,6 +121,12 @@ struct Recheck {
   double settling_spans = 0;  ///< the slowest free vibration's decay (periodic path), spans; 0 if unknown
 };
 
+/// Multi-fidelity `layouts: all`: where a refined network came from.
+struct Refinement {
+  std::size_t entry = 0;  ///< index in StudyOutcome::entries (the coarse search's)
+  int coarse_rank = 0;    ///< its rank among the refined by the coarse search (1: best)
+};
+
 /// The design a study recommends.
 struct BestDesign {
   std::size_t index = 0;  ///< in StudyOutcome::results (J2) or model->results
@@ -132,10 +147,17 @@ struct StudyOutcome {
   std::optional<ModelStudyResult> model;
   network::Network baseline;  ///< the default suspension
   StudyCost default_cost;
-  /// Named layouts: in the study's order. `layouts: all`: every network, ranked best first.
+  /// Multi-fidelity `layouts: all`: the default's cost on the coarse study (what the entries compare with).
+  StudyCost coarse_default_cost;
+  /// Named layouts: in the study's order. `layouts: all`: every network, ranked best first; with a coarse
+  /// study (multi-fidelity) the refined networks, ranked by this study's cost (results[k] from
+  /// entries[refinements[k].entry]).
   std::vector<LayoutResult> results;
-  std::vector<StructureEntry> entries;  ///< `layouts: all`: the structure search's entries (results[k] = entries[order[k]])
-  std::vector<std::size_t> order;
+  /// `layouts: all`: the structure search's entries (on the coarse study if there is one); without a
+  /// coarse study results[k] = entries[order[k]].
+  std::vector<StructureEntry> entries;
+  std::vector<std::size_t> order;        ///< ranking(entries)
+  std::vector<Refinement> refinements;  ///< multi-fidelity `layouts: all`: one per result
   std::vector<Recheck> rechecks;        ///< `layouts: all`: ranked by the time-domain J2
   std::vector<AdmittanceBound> admittance;
   std::optional<Report> report;         ///< with StudyOptions::report (J2)
@@ -145,6 +167,9 @@ struct StudyOutcome {
   double seconds = 0;                   ///< wall time of the default's evaluation and the searches
   /// The re-checks as CSV (recheck.csv): network, reduced, J2 periodic and time, speed, rank, settling.
   std::string recheck_csv() const;
+  /// Multi-fidelity `layouts: all` (refined.csv): rank, network refined, its coarse J and rank, its J here
+  /// before and after the refinement, feasible, evaluations, values.
+  std::string refined_csv() const;
 };
 
 /// Runs a whole J2 study. The executor runs the searches and evaluations (LocalExecutor if null).
