@@ -143,6 +143,17 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
     fmt::print("type: finite_element (messenger and contact wire as tensioned beams, droppers slack in compression)\n");
     fmt::print("line: {} spans of {:g} m, length {:g} m, encumbrance {:g} m\n", d.spans, d.span, d.span * d.spans,
                d.encumbrance);
+    for (std::size_t k = 0; k < d.tension_sections.size(); ++k) {  // a line of tension sections (issue 35)
+      const catenary::FeCatenaryData& s = d.tension_sections[k];
+      fmt::print("tension section {}: spans {} to {} ({:g} … {:g} m), contact wire {} (T = {:g} N), messenger T = {:g} N, "
+                 "anchors {}\n",
+                 k + 1, s.first_span + 1, s.first_span + s.spans, s.line_start, s.line_start + s.spans * s.span,
+                 s.wire_label, s.contact_wire.tension, s.messenger.tension,
+                 s.anchor.pinned ? "pinned" : fmt::format("on a tensioning device ({:g} N/m, {:g} kg)", s.anchor.stiffness, s.anchor.mass));
+    }
+    if (d.sectioned())
+      fmt::print("overlaps: {} spans each; contact-wire heights at their supports: outgoing [{}] m, incoming [{}] m\n",
+                 d.overlap_spans, fmt::join(d.overlap_outgoing, ", "), fmt::join(d.overlap_incoming, ", "));
     for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
       fmt::print("{:<13} T = {:g} N, rho A = {:g} kg/m, EI = {:g} N·m², wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n",
                  std::string(which) + ":", w.tension, w.mass_per_length, w.EI, w.wave_speed(), 3.6 * w.wave_speed());

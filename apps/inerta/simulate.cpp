@@ -144,6 +144,20 @@ void print_line_outputs(std::FILE* info, const analysis::CoupledSimulation& r,
       fmt::print(info, "  pantograph {}: contact lost in {} samples over the run; first at t = {:.6g} s, x = {:.6g} m\n",
                  k + 1, cs.lost_samples, cs.first_loss_t, cs.first_loss_x);
   }
+  if (!r.overlap_quality.empty()) {  // a line of tension sections: the overlap spans alone (issue 35)
+    std::string where;
+    for (const auto& p : r.overlaps) where += fmt::format("{}{:g} … {:g}", where.empty() ? "" : ", ", p.from, p.to);
+    fmt::print(info, "overlap spans in the section ({} m; two contact wires, the force their sum):\n", where);
+    for (std::size_t k = 0; k < r.overlap_quality.size(); ++k) {
+      const std::string who = fmt::format("{} (x0 = {:g} m)", k + 1, train[k].x0);
+      for (int f = 0; f < 2; ++f) {
+        const analysis::ContactStatistics& c = f == 0 ? r.overlap_quality[k].raw : r.overlap_quality[k].filtered;
+        fmt::print(info, "  {:<22} {:8.2f} {:8.2f} {:10.2f} {:10.2f} {:8.2f} {:8.2f} {:7.2f}\n",
+                   f == 0 ? who + " raw" : std::string(who.size(), ' ') + " 20 Hz", c.mean, c.std, c.stat_max, c.stat_min,
+                   c.max, c.min, c.loss_pct);
+      }
+    }
+  }
   if (r.uplift.empty()) {  // issue 38: not "max 0 mm at x = 0 m", a support outside the section
     fmt::print(info, "support uplift in the section: no support in the section (a line of one span has none)\n");
     return;

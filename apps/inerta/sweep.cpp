@@ -133,8 +133,12 @@ int cmd_sweep(const SweepArgs& a) {
   std::vector<analysis::VerdictRow> verdict;
   if (criteria) verdict = analysis::verdict(*criteria, results);
   const bool counted = criteria && !criteria->contact_loss.empty();
-  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}{}{}\n",
+  const bool overlaps = line && !results.front().overlap.empty();  // a line of tension sections (issue 35)
+  fmt::print(out, "v_kmh,v_ms,mean,std,max,min,stat_max,stat_min,loss_pct{}{}{}{}\n",
              line ? ",f_mean,f_std,f_max,f_min,f_stat_max,f_stat_min,uplift_max_m" : "",
+             overlaps ? ",mean_overlap,std_overlap,max_overlap,min_overlap,stat_max_overlap,stat_min_overlap,loss_pct_overlap,"
+                        "f_mean_overlap,f_std_overlap,f_max_overlap,f_min_overlap,f_stat_max_overlap,f_stat_min_overlap"
+                      : "",
              periodic ? ",floquet_max,stable" : ",converged", counted ? ",loss_counted_pct" : "");
   std::size_t worst = results.size();
   int spans_max = 0;
@@ -148,6 +152,12 @@ int cmd_sweep(const SweepArgs& a) {
       const auto& up = results[i].support_uplift;
       fmt::print(out, ",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", f.mean, f.std, f.max, f.min, f.stat_max,
                  f.stat_min, up.empty() ? 0.0 : *std::max_element(up.begin(), up.end()));
+    }
+    if (overlaps) {
+      const auto& o = results[i].overlap.front();
+      const auto& f = results[i].overlap_filtered.front();
+      fmt::print(out, ",{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.4g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}", o.mean,
+                 o.std, o.max, o.min, o.stat_max, o.stat_min, o.loss_pct, f.mean, f.std, f.max, f.min, f.stat_max, f.stat_min);
     }
     if (periodic)
       fmt::print(out, ",{:.6g},{:d}", results[i].floquet, results[i].stable() ? 1 : 0);

@@ -631,6 +631,15 @@ class FeCatenaryData:
     modal_cutoff: float
     window_behind: int
     window_ahead: int
+    tension_sections: list[FeCatenaryData]
+    overlap_spans: int
+    overlap_outgoing: list[float]
+    overlap_incoming: list[float]
+    mast_height: list[float]
+    line_start: float
+    first_span: int
+    wire_label: int
+    def link_sections(self) -> None: ...
     section_first: int
     section_last: int
     def __init__(self) -> None: ...
@@ -775,6 +784,13 @@ class ContactQuality:
 
 def contact_quality(t: ArrayLike, x_contact: ArrayLike, F: ArrayLike, x_from: Union[float, Section],
                     x_to: Optional[float] = None, options: Optional[ContactQualityOptions] = None) -> ContactQuality: ...
+
+class PartStatistics:
+    raw: ContactStatistics
+    filtered: ContactStatistics
+
+def part_statistics(t: ArrayLike, x_contact: ArrayLike, F: ArrayLike, section: Section, parts: Sequence[Section],
+                    options: Optional[ContactQualityOptions] = None) -> PartStatistics: ...
 
 class SupportUplift:
     support: int
@@ -948,6 +964,8 @@ class SpeedResult:
     @property
     def support_uplift(self) -> FloatArray: ...
     filtered: list[ContactStatistics]
+    overlap: list[ContactStatistics]
+    overlap_filtered: list[ContactStatistics]
     loss_runs: list[list[int]]
     sample_dt: float
     uplift_limit: float

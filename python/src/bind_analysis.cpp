@@ -451,6 +451,10 @@ void bind_analysis(py::module_& m) {
       .def_readonly("uplift_limit", &analysis::SpeedResult::uplift_limit, "m, the line's registration uplift limit (NaN: none)")
       .def_readonly("filtered", &analysis::SpeedResult::filtered,
                     "a finite line: each contact's statistics after the 20 Hz low-pass (EN 50317)")
+      .def_readonly("overlap", &analysis::SpeedResult::overlap,
+                    "a line of tension sections: each contact's statistics over the overlap spans in the section")
+      .def_readonly("overlap_filtered", &analysis::SpeedResult::overlap_filtered,
+                    "the same after the 20 Hz low-pass")
       .def_property_readonly("t", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().t, self); },
                              "s (run_speed only; empty in sweeps)")
       .def_property_readonly("F", [](py::object self) { return view(self.cast<const analysis::SpeedResult&>().F, self); },

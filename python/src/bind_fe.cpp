@@ -88,6 +88,17 @@ void bind_fe(py::module_& m) {
       .def_readwrite("modal_cutoff", &FeCatenaryData::modal_cutoff, "Hz, highest natural frequency kept")
       .def_readwrite("window_behind", &FeCatenaryData::window_behind, "spans behind the rear pantograph's span (−1: whole line)")
       .def_readwrite("window_ahead", &FeCatenaryData::window_ahead, "spans ahead of the leading pantograph's span (−1: whole line)")
+      .def_readwrite("tension_sections", &FeCatenaryData::tension_sections,
+                     "a line of tension sections: each section whole (empty: one section); then call link_sections()")
+      .def_readwrite("overlap_spans", &FeCatenaryData::overlap_spans, "spans consecutive sections share")
+      .def_readwrite("overlap_outgoing", &FeCatenaryData::overlap_outgoing, "m, the ending section's contact wire at the overlap's supports")
+      .def_readwrite("overlap_incoming", &FeCatenaryData::overlap_incoming, "m, the starting section's")
+      .def_readwrite("mast_height", &FeCatenaryData::mast_height, "m, a section's contact wire at each of its masts (empty: 0)")
+      .def_readonly("line_start", &FeCatenaryData::line_start, "m, a section's first mast along the line")
+      .def_readonly("first_span", &FeCatenaryData::first_span, "a section's first span along the line (0-based)")
+      .def_readonly("wire_label", &FeCatenaryData::wire_label, "a section's contact wire: 1 or 2")
+      .def("link_sections", &FeCatenaryData::link_sections,
+           "places the tension sections along the line and sets their mast heights from the overlap")
       .def("validate", &FeCatenaryData::validate, "InvalidArgument naming the offending value");
 
   py::class_<FeLine::Dropper>(m, "FeDropper", "One dropper of the assembled line.")

@@ -120,6 +120,19 @@ void bind_signal(py::module_& m) {
         py::arg("options") = py::none(),
         "EN 50317 contact quality of one pantograph's uniformly sampled history t (s), x_contact (m), F (N) over "
         "[x_from, x_to] (m; or a Section as x_from).");
+  py::class_<analysis::PartStatistics>(m, "PartStatistics", "Raw and low-passed statistics over parts of a section.")
+      .def_readonly("raw", &analysis::PartStatistics::raw)
+      .def_readonly("filtered", &analysis::PartStatistics::filtered);
+  m.def("part_statistics", [](const py::object& t, const py::object& x, const py::object& F, const catenary::Section& section,
+                              const std::vector<catenary::Section>& parts, const py::object& options) {
+    const std::vector<double> tv = doubles(t), xv = doubles(x), Fv = doubles(F);
+    const analysis::ContactQualityOptions o =
+        options.is_none() ? analysis::ContactQualityOptions{} : options.cast<analysis::ContactQualityOptions>();
+    py::gil_scoped_release nogil;
+    return analysis::part_statistics(tv, xv, Fv, section, parts, o);
+  }, py::arg("t"), py::arg("x_contact"), py::arg("F"), py::arg("section"), py::arg("parts"), py::arg("options") = py::none(),
+        "Statistics of the samples with x in one of `parts` (Sections, m) within `section` (the overlaps of a line of "
+        "tension sections), raw and after the low-pass of the whole history.");
   py::class_<analysis::SupportUplift>(m, "SupportUplift", "The largest uplift of one support over a run.")
       .def_readonly("support", &analysis::SupportUplift::support)
       .def_readonly("x", &analysis::SupportUplift::x, "m")

@@ -294,6 +294,8 @@ BOUND = {
     "analysis::ContactQualityOptions": "ContactQualityOptions",
     "analysis::SupportUplift": "SupportUplift",
     "analysis::contact_quality": "contact_quality",
+    "analysis::PartStatistics": "PartStatistics",
+    "analysis::part_statistics": "part_statistics",
     "analysis::support_uplift": "support_uplift",
     # lumped pantographs, aerodynamic uplift
     "pantograph::LumpedPantographData": "LumpedPantographData",
@@ -434,6 +436,7 @@ EXCLUDED = {
     "catenary::make_direct_solver": "makes an FeLineSolver (see there)",
     "catenary::make_modal_solver": "makes an FeLineSolver (see there)",
     "catenary::FeModalLine": "the modes' cache inside FeCatenary: a catenary held in Python keeps it",
+    "catenary::FeSectionLine": "a tension section inside FeCatenary as its runs see it; its data are FeCatenaryData.tension_sections",
     "catenary::FeWindow": "a window of FeModalLine (see there)",
     "catenary::FeWindowModes": "the decomposition of a window (see FeModalLine)",
     "numerics::BandInverse": "numerical kernel of the modal solve's residual flexibility",

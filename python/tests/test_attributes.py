@@ -107,6 +107,7 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     FF = 100 + np.sin(2 * np.pi * 3 * tt)
     out += [lp, inerta.welch(FF, 1000.0), inerta.WelchOptions(), inerta.ContactQualityOptions()]
     out += [inerta.contact_quality(tt, 10 * tt, FF, 1.0, 15.0)]
+    out += [inerta.part_statistics(tt, 10 * tt, FF, inerta.Section(1.0, 15.0), [inerta.Section(2.0, 5.0)])]
     out += inerta.support_uplift([0.0, 1.0], [5.0], [[0.0], [0.01]], 0, 10)
     out += [inerta.Stepper(twobar, x), inerta.Section(0, 1)]
     qc = inerta.load_model(model("quarter_car.yaml"))

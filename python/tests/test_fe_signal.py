@@ -161,6 +161,13 @@ def test_contact_quality_and_support_uplift():
     assert q.loss_pct == 0 and q.psd.integral() == pytest.approx(q.raw.std ** 2, rel=0.05)
     with pytest.raises(inerta.InvalidArgument):
         inerta.contact_quality(t, x, F, 1000.0, 2000.0)
+    # Over parts of the section (the overlaps of a line of tension sections): a part where the force
+    # is constant 100 N has σ 0; the whole section as the one part gives contact_quality's numbers.
+    Fp = np.where((x >= 200) & (x <= 250), 100.0, F)
+    part = inerta.part_statistics(t, x, Fp, inerta.Section(100.0, 400.0), [inerta.Section(200.0, 250.0)])
+    assert part.raw.std == pytest.approx(0, abs=1e-12) and part.raw.samples == np.count_nonzero((x >= 200) & (x <= 250))
+    whole = inerta.part_statistics(t, x, F, inerta.Section(100.0, 400.0), [inerta.Section(0.0, 1000.0)])
+    assert whole.raw.std == pytest.approx(q.raw.std, rel=1e-12) and whole.filtered.std == pytest.approx(q.filtered.std, rel=1e-12)
     up = inerta.support_uplift([0.0, 1.0, 2.0], [50.0, 100.0], [[0.0, 0.0], [0.01, 0.02], [0.005, 0.03]], 0, 75)
     assert len(up) == 1 and up[0].max_uplift == 0.01 and up[0].t_max == 1.0 and up[0].x == 50
 

@@ -86,6 +86,24 @@ ContactQuality contact_quality(const std::vector<double>& t, const std::vector<d
   return q;
 }
 
+PartStatistics part_statistics(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& F,
+                               const catenary::Section& section, const std::vector<catenary::Section>& parts,
+                               const ContactQualityOptions& o) {
+  const ContactQuality q = contact_quality(t, x, F, section, o);  // the checks, the rate
+  const numerics::SosFilter lowpass = with_context([&] { return numerics::butterworth_lowpass(o.cutoff, q.sample_rate, o.order); });
+  const std::vector<double> smooth = numerics::filtfilt(lowpass, F);
+  std::vector<double> raw, filtered;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!(x[i] >= section.from && x[i] <= section.to)) continue;
+    for (const catenary::Section& p : parts)
+      if (x[i] >= p.from && x[i] <= p.to) {
+        raw.push_back(F[i]), filtered.push_back(smooth[i]);
+        break;
+      }
+  }
+  return {statistics(raw), statistics(filtered)};
+}
+
 ContactQuality contact_quality(const std::vector<double>& t, const std::vector<double>& x_contact,
                                const std::vector<double>& F, const catenary::Section& section,
                                const ContactQualityOptions& options) {

@@ -96,6 +96,10 @@ SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
     ContactQuality q = contact_quality(ts[cc], xc[cc], Fall[cc], sec, {.cutoff = o.filter_cutoff, .order = o.filter_order});
     r.filtered.push_back(q.filtered);
     r.loss_runs.push_back(std::move(q.loss_runs));
+    if (const std::vector<catenary::Section> parts = sys.overlaps(); !parts.empty()) {
+      const PartStatistics ps = part_statistics(ts[cc], xc[cc], Fall[cc], sec, parts, {.cutoff = o.filter_cutoff, .order = o.filter_order});
+      r.overlap.push_back(ps.raw), r.overlap_filtered.push_back(ps.filtered);
+    }
   }
   r.sample_dt = T / o.samples_per_span;
   r.stats = r.contacts.front();

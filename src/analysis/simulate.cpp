@@ -119,9 +119,13 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   check_samples(r.t_end, r.sample);
   r.window_from = std::max(0.0, r.t_end - o.window_spans * T);
   if (line) r.section = sys->section();
+  if (line)
+    for (const catenary::Section& p : sys->overlaps())  // the overlaps' parts in the section
+      if (std::max(p.from, r.section.from) < std::min(p.to, r.section.to))
+        r.overlaps.push_back({std::max(p.from, r.section.from), std::min(p.to, r.section.to)});
   r.support_x = sys->support_x();
   r.supports.t.clear();
-  for (double x : r.support_x) r.supports.names.push_back(fmt::format("uplift@{:g}", x));
+  r.supports.names = sys->support_names();
   r.supports.columns.resize(r.support_x.size());
   const int nc = sys->n_contacts();
   std::vector<std::vector<double>> window(static_cast<std::size_t>(nc));
@@ -130,6 +134,8 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   for (int c = 0; c < nc; ++c) {
     TimeHistory h = empty_history(sys->model(sys->contact(c)));
     if (line) {  // m along the line; m above the wire's static height
+      if (sys->wires() == 2)  // each contact wire's force (N) and uplift (m; nan where it is not) (issue 35)
+        for (const char* n : {"F_contact_w1", "F_contact_w2", "wire_uplift_w1", "wire_uplift_w2"}) h.names.push_back(n);
       h.names.push_back("x_contact"), h.names.push_back("wire_uplift");
       h.columns.resize(h.names.size());
     }
@@ -149,8 +155,14 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
           const auto c = static_cast<std::size_t>(s.contact.index);
           record(r.histories[c], s.model, s.t, s.state, s.ws);
           if (line) {
-            r.histories[c].columns.back().push_back(s.wire_uplift);
-            r.histories[c].columns[r.histories[c].columns.size() - 2].push_back(s.x_contact);
+            auto& cols = r.histories[c].columns;
+            cols.back().push_back(s.wire_uplift);
+            cols[cols.size() - 2].push_back(s.x_contact);
+            if (sys->wires() == 2) {
+              const std::size_t b = cols.size() - 6;
+              cols[b].push_back(s.force_wire[0]), cols[b + 1].push_back(s.force_wire[1]);
+              cols[b + 2].push_back(s.uplift_wire[0]), cols[b + 3].push_back(s.uplift_wire[1]);
+            }
           }
           if (c == 0 && !r.support_x.empty()) {
             r.supports.t.push_back(s.t);
@@ -175,6 +187,9 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
       const TimeHistory& h = r.histories[static_cast<std::size_t>(c)];
       r.quality.push_back(contact_quality(h.t, h.columns[h.columns.size() - 2], force[static_cast<std::size_t>(c)], r.section,
                                           {.cutoff = o.filter_cutoff, .order = o.filter_order}));
+      if (!r.overlaps.empty())
+        r.overlap_quality.push_back(part_statistics(h.t, h.columns[h.columns.size() - 2], force[static_cast<std::size_t>(c)],
+                                                    r.section, r.overlaps, {.cutoff = o.filter_cutoff, .order = o.filter_order}));
     }
     std::vector<std::vector<double>> rows(r.supports.t.size(), std::vector<double>(r.support_x.size()));
     for (std::size_t i = 0; i < rows.size(); ++i)

@@ -36,3 +36,13 @@ std::unique_ptr<Coupled> Catenary::couple(const pantograph::Pantograph& p, const
 }
 
 }  // namespace inerta::catenary
+
+namespace inerta::catenary {
+
+std::vector<std::string> Coupled::support_names() const {
+  std::vector<std::string> names;
+  for (double x : support_x()) names.push_back(fmt::format("uplift@{:g}", x));
+  return names;
+}
+
+}  // namespace inerta::catenary

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -28,11 +29,11 @@ namespace inerta::catenary {
 
 namespace {
 
-// The wire's height at one pantograph's contact point over the current coupling step (in the
-// pantograph model's coordinates). The coupling's input signal: set between integrations.
+// The wires' heights at one pantograph's contact point over the current coupling step (in the
+// pantograph model's coordinates): one track per contact wire it can touch (two on a line of
+// tension sections). The coupling's input signal: set between integrations.
 struct WireTrack {
   double t0 = 0, t1 = 1, y0 = 0, y1 = 0, v0 = 0, v1 = 0;
-  bool linear = false;  ///< the static solve: a linear spring (no contact loss), for a regular Jacobian
   void hold(double t, double y) { t0 = t, t1 = t + 1, y0 = y1 = y, v0 = v1 = 0; }
   double value(double t) const {
     const double h = t1 - t0, s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
@@ -43,10 +44,17 @@ struct WireTrack {
     return ((6 * s2 - 6 * s) * y0 + (-6 * s2 + 6 * s) * y1) / h + (3 * s2 - 4 * s + 1) * v0 + (3 * s2 - 2 * s) * v1;
   }
 };
+struct Tracks {
+  std::array<WireTrack, 2> wire;
+  std::array<bool, 2> present{true, false};  ///< the wire is at the contact point over this step
+  int n = 1;                                  ///< contact wires of the line
+  int primary = 0;                            ///< the wire of the static solve
+  bool linear = false;  ///< the static solve: a linear spring on the primary wire (no contact loss), for a regular Jacobian
+};
 
 class TrackContact : public mbs::ForceElement {
  public:
-  TrackContact(int body, mbs::Vec2 u, std::shared_ptr<const WireTrack> track, double ks, double cs)
+  TrackContact(int body, mbs::Vec2 u, std::shared_ptr<const Tracks> track, double ks, double cs)
       : ForceElement("contact"), body_(body), u_(u), track_(std::move(track)), ks_(ks), cs_(cs) {}
   void add(const mbs::Model& model, double t, const mbs::State&, mbs::Workspace& ws) const override {
     const mbs::PointKinematics p = mbs::point_kinematics(ws.frame(body_), u_);
@@ -59,35 +67,76 @@ class TrackContact : public mbs::ForceElement {
   double force(const mbs::Model&, double t, const mbs::State&, const mbs::Workspace& ws) const override {
     return force_at(t, mbs::point_kinematics(ws.frame(body_), u_));
   }
+  /// The force of contact wire i alone (N).
+  double wire_force(int i, double t, const mbs::Workspace& ws) const {
+    return wire_force_at(i, t, mbs::point_kinematics(ws.frame(body_), u_));
+  }
   double length(const mbs::Model& model, const mbs::State& x) const override {
-    return mbs::point_kinematics(model.frame(x, body_), u_).r.y() - track_->value(track_->t0);
+    const WireTrack& w = track_->wire[static_cast<std::size_t>(track_->primary)];
+    return mbs::point_kinematics(model.frame(x, body_), u_).r.y() - w.value(w.t0);
   }
   double energy(const mbs::Model& model, double t, const mbs::State& x) const override {
-    const double d = mbs::point_kinematics(model.frame(x, body_), u_).r.y() - track_->value(t);
-    return d > 0 ? 0.5 * ks_ * d * d : 0.0;
+    double e = 0;
+    for (int i = 0; i < track_->n; ++i) {
+      if (!track_->present[static_cast<std::size_t>(i)]) continue;
+      const double d = mbs::point_kinematics(model.frame(x, body_), u_).r.y() - track_->wire[static_cast<std::size_t>(i)].value(t);
+      e += d > 0 ? 0.5 * ks_ * d * d : 0.0;
+    }
+    return e;
   }
 
  private:
-  double force_at(double t, const mbs::PointKinematics& p) const {
-    const double d = p.r.y() - track_->value(t);
-    if (track_->linear) return ks_ * d;
+  double wire_force_at(int i, double t, const mbs::PointKinematics& p) const {
+    if (!track_->present[static_cast<std::size_t>(i)]) return 0.0;
+    const WireTrack& w = track_->wire[static_cast<std::size_t>(i)];
+    const double d = p.r.y() - w.value(t);
+    if (track_->linear) return i == track_->primary ? ks_ * d : 0.0;
     if (d <= 0) return 0.0;
-    return std::max(0.0, ks_ * d + cs_ * (p.v.y() - track_->rate(t)));
+    return std::max(0.0, ks_ * d + cs_ * (p.v.y() - w.rate(t)));
+  }
+  // The sum over the wires at the contact point (one penalty contact per wire; issue 35).
+  double force_at(double t, const mbs::PointKinematics& p) const {
+    if (track_->n == 1) return wire_force_at(0, t, p);
+    return wire_force_at(0, t, p) + wire_force_at(1, t, p);
   }
   int body_;
   mbs::Vec2 u_;
-  std::shared_ptr<const WireTrack> track_;
+  std::shared_ptr<const Tracks> track_;
   double ks_, cs_;
 };
 
+// Pantographs on a line of one or more tension sections. Each section has its own structural
+// solver; the sections share no element, so they meet only at the pantographs: a pantograph's
+// contact force is the sum of one penalty contact per contact wire at its contact point, each
+// section stepped with the penalty contacts of the pantographs on its wire (and, to place a modal
+// window, a zero force at the nearest point of its line for the others). A section no pantograph
+// has reached yet is at rest in its static state (nothing has acted on it): it starts when the
+// first one reaches its anchor. One the last pantograph has left by more than window_behind + 1
+// spans can no longer act on any contact: it is no longer stepped (its supports' uplift held).
 class FeCoupled final : public Coupled {
  public:
-  FeCoupled(std::shared_ptr<const FeLine> line, std::shared_ptr<const FeModalLine> modal,
-            const std::vector<PantographOnLine>& ps, double speed, Section section)
-      : line_(std::move(line)), v_(speed), section_(section) {
-    double lo = line_->length(), hi = 0;
+  FeCoupled(const std::vector<FeSectionLine>& sections, const std::vector<PantographOnLine>& ps, double speed,
+            Section section, double length, double span, std::vector<Section> overlaps)
+      : v_(speed), section_(section), length_(length), span_(span), overlaps_(std::move(overlaps)) {
+    double lo = length_, hi = 0;
     for (const PantographOnLine& p : ps) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
-    fe_ = modal ? make_modal_solver(std::move(modal), std::max(0.0, hi - lo)) : make_direct_solver(*line_);
+    for (const FeSectionLine& s : sections) {
+      Run r;
+      r.sec = s;
+      r.fe = s.modal ? make_modal_solver(s.modal, std::max(0.0, hi - lo)) : make_direct_solver(*s.line);
+      const int behind = s.line->data().window_behind;
+      r.stop_after = behind < 0 || sections.size() == 1 ? INFINITY : s.end + (behind + 1) * s.line->data().span;
+      runs_.push_back(std::move(r));
+    }
+    wires_ = runs_.size() > 1 ? 2 : 1;
+    for (std::size_t i = 0; i < runs_.size(); ++i) {  // the registrations, in line order (both at an overlap support)
+      const FeLine& L = *runs_[i].sec.line;
+      for (std::size_t j = 0; j < L.support_x().size(); ++j)
+        supports_.push_back({runs_[i].sec.start + L.support_x()[j], static_cast<int>(i), static_cast<int>(j), runs_[i].sec.wire});
+    }
+    std::stable_sort(supports_.begin(), supports_.end(), [](const Support& a, const Support& b) {
+      return a.x < b.x - 1e-6 || (a.x <= b.x + 1e-6 && a.wire < b.wire);
+    });
     for (std::size_t k = 0; k < ps.size(); ++k) {
       const PantographOnLine& p = ps[k];
       if (p.contact.kind != Contact::Kind::Penalty)
@@ -95,9 +144,8 @@ class FeCoupled final : public Coupled {
             "pantograph {}: the finite-element catenary needs a penalty contact (contact: {{type: penalty, stiffness: "
             "50000}}), not a bilateral one",
             k + 1));
-      if (p.x0 < 0 || p.x0 > line_->length())
-        throw ModelError(fmt::format("pantograph {}: x0 = {:g} m is off the line [0, {:g}] m", k + 1, p.x0,
-                                     line_->length()));
+      if (p.x0 < 0 || p.x0 > length_)
+        throw ModelError(fmt::format("pantograph {}: x0 = {:g} m is off the line [0, {:g}] m", k + 1, p.x0, length_));
       auto part = std::make_unique<Part>();
       part->x0 = p.x0;
       part->ks = p.contact.stiffness;
@@ -112,11 +160,19 @@ class FeCoupled final : public Coupled {
       part->body = point.body;
       part->u = point.u;
       if (part->body < 0) throw ModelError(fmt::format("pantograph {}: its contact point is not on a body", k + 1));
+      part->primary = primary_run(p.x0);
+      const int w = runs_[static_cast<std::size_t>(part->primary)].sec.wire - 1;
+      const double y0 = static_height(part->primary, p.x0);
       const mbs::State x = mbs::assemble(m, 0.0);
-      part->offset = mbs::point_kinematics(m.frame(x, point.body), point.u).r.y() - line_->static_height(p.x0);
-      part->track = std::make_shared<WireTrack>();
-      part->track->hold(0, part->offset + line_->static_height(p.x0));
-      m.forces.push_back(std::make_shared<TrackContact>(point.body, point.u, part->track, part->ks, part->cs));
+      part->offset = mbs::point_kinematics(m.frame(x, point.body), point.u).r.y() - y0;
+      part->track = std::make_shared<Tracks>();
+      part->track->n = wires_;
+      part->track->primary = w;
+      part->track->present = {false, false};
+      part->track->present[static_cast<std::size_t>(w)] = true;
+      part->track->wire[static_cast<std::size_t>(w)].hold(0, part->offset + y0);
+      part->contact = std::make_shared<TrackContact>(point.body, point.u, part->track, part->ks, part->cs);
+      m.forces.push_back(part->contact);
       part->force.name = "F_contact";
       part->force.kind = mbs::Output::Kind::ElementForce;
       part->force.index = static_cast<int>(m.forces.size()) - 1;
@@ -131,57 +187,91 @@ class FeCoupled final : public Coupled {
 
   int n_contacts() const override { return static_cast<int>(parts_.size()); }
   double speed() const override { return v_; }
-  double span() const override { return line_->data().span; }
+  double span() const override { return span_; }
   const mbs::Model& model(ContactId c) const override { return part(c).model; }
   const mbs::State& state(ContactId c) const override {
     const Part& p = part(c);
     return p.stepper ? p.stepper->state() : p.x;
   }
-  double time() const override { return fe_->time(); }
-  double line_length() const override { return line_->length(); }
+  double time() const override { return runs_.size() == 1 ? runs_.front().fe->time() : t_; }
+  double line_length() const override { return length_; }
   Section section() const override { return section_; }
   double end_time() const override {
     double lead = 0;
     for (const auto& p : parts_) lead = std::max(lead, p->x0);
-    return (line_->length() - 1.0 - lead) / v_;
+    return (length_ - 1.0 - lead) / v_;
   }
-  std::vector<double> support_x() const override { return line_->support_x(); }
+  int wires() const override { return wires_; }
+  std::vector<Section> overlaps() const override { return overlaps_; }
+  std::vector<double> support_x() const override {
+    std::vector<double> x;
+    for (const Support& s : supports_) x.push_back(s.x);
+    return x;
+  }
+  std::vector<std::string> support_names() const override {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < supports_.size(); ++i) {
+      const bool shared = (i > 0 && std::abs(supports_[i - 1].x - supports_[i].x) < 1e-6) ||
+                          (i + 1 < supports_.size() && std::abs(supports_[i + 1].x - supports_[i].x) < 1e-6);
+      names.push_back(shared ? fmt::format("uplift@{:g}_w{}", supports_[i].x, supports_[i].wire)
+                             : fmt::format("uplift@{:g}", supports_[i].x));
+    }
+    return names;
+  }
   std::vector<double> support_uplift() const override {
     start_line();
-    return fe_->support_uplift();
+    if (runs_.size() == 1) return runs_.front().fe->support_uplift();
+    std::vector<std::vector<double>> per(runs_.size());
+    for (std::size_t i = 0; i < runs_.size(); ++i) {
+      const Run& r = runs_[i];
+      per[i] = r.stopped ? r.held : r.started ? r.fe->support_uplift() : std::vector<double>(r.sec.line->support_x().size(), 0.0);
+    }
+    std::vector<double> u;
+    for (const Support& s : supports_) u.push_back(per[static_cast<std::size_t>(s.run)][static_cast<std::size_t>(s.index)]);
+    return u;
   }
 
   void equilibrate() override {
     // Fixed point between the pantographs' static forces (wire held still) and the line's static
-    // uplift under them; the pantographs are soft compared with the wire's point stiffness.
+    // uplift under them; the pantographs are soft compared with the wire's point stiffness. Each
+    // pantograph presses on one wire in the static state (its primary: the lower one at x0).
     const std::size_t n = parts_.size();
     std::vector<double> xs(n), F(n, 0.0), y(n);
-    for (std::size_t k = 0; k < n; ++k) xs[k] = parts_[k]->x0, y[k] = line_->static_height(xs[k]);
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(line_->n_dofs());
+    std::vector<Eigen::VectorXd> u(runs_.size());
+    for (std::size_t i = 0; i < runs_.size(); ++i) u[i] = Eigen::VectorXd::Zero(runs_[i].sec.line->n_dofs());
+    for (std::size_t k = 0; k < n; ++k) xs[k] = parts_[k]->x0, y[k] = static_height(parts_[k]->primary, xs[k]);
     double change = 0;
     for (int iter = 0; iter < 100; ++iter) {
       change = 0;
       for (std::size_t k = 0; k < n; ++k) {
         Part& p = *parts_[k];
-        const double yw = line_->static_height(xs[k]) + line_->contact_displacement(u, xs[k]);
+        const Run& r = runs_[static_cast<std::size_t>(p.primary)];
+        const double xl = xs[k] - r.sec.start;
+        const double yw = r.sec.line->static_height(xl) + r.sec.line->contact_displacement(u[static_cast<std::size_t>(p.primary)], xl);
         change = std::max(change, std::abs(yw - y[k]));
         y[k] = yw;
-        p.track->hold(0, p.offset + yw);
+        p.track->wire[static_cast<std::size_t>(p.track->primary)].hold(0, p.offset + yw);
         p.track->linear = true;
         p.x = mbs::assemble(p.model, 0.0);
         mbs::static_equilibrium(p.model, 0.0, p.x);
         p.track->linear = false;
         p.ws->set_state(p.x);
         F[k] = mbs::evaluate_output(p.force, p.model, 0.0, p.x, *p.ws);
-        const double d = mbs::point_kinematics(p.model.frame(p.x, p.body), p.u).r.y() - p.track->value(0);
+        const double d = mbs::point_kinematics(p.model.frame(p.x, p.body), p.u).r.y() - p.track->wire[static_cast<std::size_t>(p.track->primary)].value(0);
         if (!(d > 0))
           throw NumericalError(fmt::format(
               "pantograph {}: in its static equilibrium it does not press against the wire (contact force {:.4g} N); "
               "check its static uplift",
               k + 1, p.ks * d));
       }
-      std::vector<char> slack;
-      u = line_->static_displacement(xs, F, &slack);
+      for (std::size_t i = 0; i < runs_.size(); ++i) {
+        std::vector<double> xi, Fi;
+        for (std::size_t k = 0; k < n; ++k)
+          if (parts_[k]->primary == static_cast<int>(i)) xi.push_back(xs[k] - runs_[i].sec.start), Fi.push_back(F[k]);
+        if (runs_.size() > 1 && xi.empty()) continue;
+        std::vector<char> slack;
+        u[i] = runs_[i].sec.line->static_displacement(xi, Fi, &slack);
+      }
       if (iter > 0 && change < 1e-10) break;
     }
     if (change >= 1e-10)
@@ -189,6 +279,17 @@ class FeCoupled final : public Coupled {
           "finite-element catenary: the static uplift of the pantographs against the line did not converge (last "
           "change {:.3g} m)",
           change));
+    // A pantograph that starts where a second wire hangs within its reach (an overlap's middle span).
+    for (std::size_t k = 0; k < n; ++k) {
+      const Part& p = *parts_[k];
+      const double head = mbs::point_kinematics(p.model.frame(p.x, p.body), p.u).r.y() - p.offset;
+      for (std::size_t i = 0; i < runs_.size(); ++i)
+        if (static_cast<int>(i) != p.primary && covers(runs_[i], xs[k]) && head > static_height(static_cast<int>(i), xs[k]))
+          throw ModelError(fmt::format(
+              "pantograph {}: at x0 = {:g} m it would touch both contact wires of an overlap in its static state; start "
+              "it where one wire runs alone (outside the overlap's middle span)",
+              k + 1, xs[k]));
+    }
     // The line's dynamic solve starts at the first advance: a static state alone (a study's operating
     // length) needs no modes.
     start_x_ = xs, start_F_ = F;
@@ -196,8 +297,8 @@ class FeCoupled final : public Coupled {
     for (std::size_t k = 0; k < n; ++k) {
       Part& p = *parts_[k];
       p.stepper.reset();  // made by the first advance, with its options
-      p.y_wire = y[k];
-      p.v_wire = 0;
+      p.y_wire = {y[k], y[k]};
+      p.v_wire = {0, 0};
       p.acc_y = 0;
       p.F = F[k];
     }
@@ -209,11 +310,11 @@ class FeCoupled final : public Coupled {
                           const SampleObserver& observer, bool accelerations) override {
     if (!(dt > 0)) throw InvalidArgument("advance: the sample interval must be > 0 s");
     start_line();
-    const double h = fe_->dt();
+    const double h = runs_.front().fe->dt();
     if (!started_ || options.method != options_.method || options.rtol != options_.rtol ||
         options.atol != options_.atol || options.max_step != options_.max_step) {
       options_ = options;
-      for (auto& p : parts_) p->stepper = std::make_unique<solve::Stepper>(p->model, state_of(*p), fe_->time(), options_);
+      for (auto& p : parts_) p->stepper = std::make_unique<solve::Stepper>(p->model, state_of(*p), time(), options_);
       started_ = true;
     }
     const auto wall0 = std::chrono::steady_clock::now();
@@ -229,46 +330,92 @@ class FeCoupled final : public Coupled {
         else
           p.ws->set_state(x);
         const double F = mbs::evaluate_output(p.force, p.model, t, x, *p.ws);
-        const double xc = p.x0 + v_ * t;
+        const double xc = at(p.x0, t);
         if (observer) {
           Sample smp{ContactId{static_cast<int>(k)}, t, xc, F, p.model, x, *p.ws};
-          smp.wire_uplift = fe_->uplift(xc);
+          if (runs_.size() == 1) {
+            smp.wire_uplift = runs_.front().fe->uplift(xc);
+            smp.force_wire[0] = F;
+            smp.uplift_wire[0] = smp.wire_uplift;
+          } else {
+            double lowest = INFINITY;
+            for (const Run& r : runs_)
+              if (r.started && !r.stopped && covers(r, xc)) {
+                const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
+                const double xl = xc - r.sec.start, up = r.fe->uplift(xl), y = r.sec.line->static_height(xl) + up;
+                smp.uplift_wire[w] = up;
+                smp.force_wire[w] = p.contact->wire_force(static_cast<int>(w), t, *p.ws);
+                if (y < lowest) lowest = y, smp.wire_uplift = up;
+              }
+          }
           observer(smp);
         }
       }
     };
-    if (!sampled_start_) deliver(fe_->time());
-    std::vector<FeLoad> loads(parts_.size());
-    std::vector<double> forces;
-    const int n_steps = static_cast<int>(std::floor((t_end - fe_->time()) / h + 1e-6));
+    if (!sampled_start_) deliver(time());
+    std::vector<double> heads(parts_.size()), head_rates(parts_.size());
+    const int n_steps = static_cast<int>(std::floor((t_end - time()) / h + 1e-6));
     for (int i = 0; i < n_steps; ++i) {
-      const double t = fe_->time(), t1 = t + h;
+      const double t = time(), t1 = t + h;
+      double rear = INFINITY;
       for (std::size_t k = 0; k < parts_.size(); ++k) {
         Part& p = *parts_[k];
-        const double xc1 = p.x0 + v_ * t1;
-        if (xc1 > line_->length())
+        const double xc1 = at(p.x0, t1);
+        rear = std::min(rear, xc1);
+        if (xc1 > length_)
           throw NumericalError(fmt::format(
               "t = {:.6g} s: pantograph {} (contact point at x = {:.6g} m) has run off the end of the line ({:g} m)", t1,
-              k + 1, xc1, line_->length()));
+              k + 1, xc1, length_));
         const mbs::State& x = p.stepper->state();
         const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(x, p.body), p.u);
         const double y = pk.r.y(), yd = pk.v.y();
-        loads[k] = FeLoad{xc1, true, 0, y + h * yd + 0.5 * h * h * p.acc_y - p.offset, yd + h * p.acc_y,
-                          p.ks, p.cs, v_};
+        heads[k] = y + h * yd + 0.5 * h * h * p.acc_y - p.offset;
+        head_rates[k] = yd + h * p.acc_y;
         p.yd_prev = yd;
       }
-      fe_->step(loads, forces);
+      for (Run& r : runs_) {
+        if (r.stopped) continue;
+        bool any = false;
+        for (const auto& p : parts_) any = any || covers(r, at(p->x0, t1));
+        if (!r.started) {
+          if (!any) continue;
+          std::vector<double> xs, F(parts_.size(), 0.0);
+          for (const auto& p : parts_) xs.push_back(local(r, at(p->x0, t)));
+          r.fe->start(xs, F, t);
+          r.started = true;
+        }
+        r.loads.resize(parts_.size());
+        for (std::size_t k = 0; k < parts_.size(); ++k) {
+          const Part& p = *parts_[k];
+          const double xc1 = at(p.x0, t1);
+          r.loads[k] = covers(r, xc1) ? FeLoad{xc1 - r.sec.start, true, 0, heads[k], head_rates[k], p.ks, p.cs, v_}
+                                      : FeLoad{local(r, xc1), false, 0, 0, 0, 0, 0, v_};
+        }
+        r.fe->step(r.loads, r.forces);
+        if (rear > r.stop_after) r.held = r.fe->support_uplift(), r.stopped = true;
+      }
+      if (runs_.size() > 1) t_ = t1;
       for (std::size_t k = 0; k < parts_.size(); ++k) {
         Part& p = *parts_[k];
-        const double xc1 = p.x0 + v_ * t1;
-        const double y1 = fe_->height(xc1), v1 = fe_->height_rate(xc1, v_);
-        *p.track = WireTrack{t, t1, p.offset + p.y_wire, p.offset + y1, p.v_wire, v1};
-        p.y_wire = y1, p.v_wire = v1;
+        const double xc = at(p.x0, t), xc1 = at(p.x0, t1);
+        p.track->present = {false, false};
+        for (const Run& r : runs_) {
+          if (!r.started || r.stopped || !covers(r, xc1)) continue;
+          const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
+          const double y1 = r.fe->height(xc1 - r.sec.start), v1 = r.fe->height_rate(xc1 - r.sec.start, v_);
+          if (runs_.size() > 1 && !covers(r, xc)) {  // the wire reached at this step: from its anchor
+            p.y_wire[w] = r.sec.line->static_height(local(r, xc));
+            p.v_wire[w] = 0;
+          }
+          p.track->wire[w] = WireTrack{t, t1, p.offset + p.y_wire[w], p.offset + y1, p.v_wire[w], v1};
+          p.track->present[w] = true;
+          p.y_wire[w] = y1, p.v_wire[w] = v1;
+        }
         p.stepper->advance(t1);
         const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(p.stepper->state(), p.body), p.u);
         p.acc_y = (pk.v.y() - p.yd_prev) / h;
       }
-      if (++step_index % every == 0) deliver(fe_->time());
+      if (++step_index % every == 0) deliver(time());
     }
     sampled_start_ = true;
     solve::RunStats total;
@@ -288,13 +435,28 @@ class FeCoupled final : public Coupled {
     mbs::State x;  // before the first advance
     std::unique_ptr<mbs::Workspace> ws;
     std::unique_ptr<solve::Stepper> stepper;
-    std::shared_ptr<WireTrack> track;
+    std::shared_ptr<Tracks> track;
+    std::shared_ptr<TrackContact> contact;
     mbs::Output force;
     int body = -1;
+    int primary = 0;  // the run of its static contact
     mbs::Vec2 u = mbs::Vec2::Zero();
     double x0 = 0, ks = 0, cs = 0, offset = 0;
-    double y_wire = 0, v_wire = 0, acc_y = 0, yd_prev = 0, F = 0;
+    std::array<double, 2> y_wire{}, v_wire{};
+    double acc_y = 0, yd_prev = 0, F = 0;
     long steps_reported = 0, rhs_reported = 0;
+  };
+  struct Run {
+    FeSectionLine sec;
+    std::unique_ptr<FeLineSolver> fe;
+    bool started = false, stopped = false;
+    double stop_after = INFINITY;  // m: past this (the rearmost pantograph) it is no longer stepped
+    std::vector<FeLoad> loads;
+    std::vector<double> forces, held;
+  };
+  struct Support {
+    double x;
+    int run, index, wire;
   };
   const Part& part(ContactId c) const {
     if (c.index < 0 || c.index >= n_contacts())
@@ -303,41 +465,100 @@ class FeCoupled final : public Coupled {
     return *parts_[static_cast<std::size_t>(c.index)];
   }
   static const mbs::State& state_of(const Part& p) { return p.stepper ? p.stepper->state() : p.x; }
-  // The line at rest in the static state equilibrate() found (the modal solve's windows are made here).
+  // The contact point of the pantograph started at x0, at time t (m): one rounding, so that every
+  // place computes the same x whatever the compiler contracts.
+  double at(double x0, double t) const { return std::fma(v_, t, x0); }
+  static bool covers(const Run& r, double x) { return x >= r.sec.start - 1e-9 && x <= r.sec.end + 1e-9; }
+  static double local(const Run& r, double x) { return std::clamp(x - r.sec.start, 0.0, r.sec.line->length()); }
+  double static_height(int run, double x) const {
+    const Run& r = runs_[static_cast<std::size_t>(run)];
+    return r.sec.line->static_height(local(r, x));
+  }
+  // The section whose wire is lowest at x (the running wire).
+  int primary_run(double x) const {
+    int best = -1;
+    for (std::size_t i = 0; i < runs_.size(); ++i)
+      if (covers(runs_[i], x) && (best < 0 || static_height(static_cast<int>(i), x) < static_height(best, x))) best = static_cast<int>(i);
+    if (best < 0) throw ModelError(fmt::format("x = {:g} m is on no tension section of the line", x));
+    return best;
+  }
+  // The line at rest in the static state equilibrate() found (the modal solve's windows are made
+  // here): the sections under a pantograph now; the others when a pantograph reaches them.
   void start_line() const {
     if (line_started_) return;
-    fe_->start(start_x_, start_F_, 0.0);
+    for (std::size_t i = 0; i < runs_.size(); ++i) {
+      Run& r = const_cast<Run&>(runs_[i]);
+      r.started = r.stopped = false;
+      std::vector<double> xs, F;
+      bool any = false;
+      for (std::size_t k = 0; k < parts_.size(); ++k) {
+        const bool mine = parts_[k]->primary == static_cast<int>(i);
+        any = any || covers(r, start_x_[k]);
+        xs.push_back(runs_.size() == 1 ? start_x_[k] : local(r, start_x_[k]));
+        F.push_back(mine ? start_F_[k] : 0.0);
+      }
+      if (runs_.size() > 1 && !any) continue;
+      r.fe->start(xs, F, 0.0);
+      r.started = true;
+    }
+    t_ = 0;
     for (std::size_t k = 0; k < parts_.size(); ++k) {
       Part& p = *parts_[k];
-      p.y_wire = fe_->height(start_x_[k]);
-      p.v_wire = fe_->height_rate(start_x_[k], v_);
+      for (const Run& r : runs_)
+        if (r.started && covers(r, start_x_[k])) {
+          const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
+          p.y_wire[w] = r.fe->height(start_x_[k] - r.sec.start);
+          p.v_wire[w] = r.fe->height_rate(start_x_[k] - r.sec.start, v_);
+        }
     }
     line_started_ = true;
   }
 
-  std::shared_ptr<const FeLine> line_;
-  std::unique_ptr<FeLineSolver> fe_;
+  mutable std::vector<Run> runs_;
+  std::vector<Support> supports_;
+  int wires_ = 1;
   double v_;
   Section section_;
+  double length_, span_;
+  std::vector<Section> overlaps_;
   std::vector<std::unique_ptr<Part>> parts_;
   solve::IntegratorOptions options_;
   bool sampled_start_ = false, started_ = false;
   std::vector<double> start_x_, start_F_;
   mutable bool line_started_ = false;
+  mutable double t_ = 0;
 };
 
 }  // namespace
 
-FeCatenary::FeCatenary(FeCatenaryData data) : data_(std::move(data)) { data_.validate(); }
+FeCatenary::FeCatenary(FeCatenaryData data) : data_(std::move(data)) {
+  data_.link_sections();
+  data_.validate();
+}
 
 void FeCatenary::build() const {
   std::call_once(built_, [&] {
-    auto line = std::make_shared<const FeLine>(data_);
-    if (data_.solver == FeCatenaryData::Solver::Modal)
-      modal_ = std::make_shared<FeModalLine>(line, ModeStore::from_environment());
-    line_ = std::move(line);
+    // Each tension section is a line of its own (form-finding per section); one for a plain file.
+    std::vector<FeSectionLine> secs;
+    const std::vector<FeCatenaryData> one{data_};
+    for (const FeCatenaryData& d : data_.sectioned() ? data_.tension_sections : one) {
+      FeSectionLine s;
+      auto line = std::make_shared<const FeLine>(d);
+      if (d.solver == FeCatenaryData::Solver::Modal) s.modal = std::make_shared<FeModalLine>(line, ModeStore::from_environment());
+      s.start = d.line_start, s.end = d.line_start + line->length(), s.wire = d.wire_label;
+      s.line = std::move(line);
+      secs.push_back(std::move(s));
+    }
+    sections_ = std::move(secs);
+    modal_ = sections_.front().modal;
+    line_ = sections_.front().line;
     line_ready_.store(true);
   });
+}
+
+const std::vector<FeSectionLine>& FeCatenary::sections() const {
+  build();
+  return sections_;
 }
 
 const FeLine& FeCatenary::line() const {
@@ -354,6 +575,10 @@ std::string FeCatenary::describe() const {
   build();
   std::string s = line_->describe();
   const FeCatenaryData& d = data_;
+  if (d.sectioned())
+    s = fmt::format("a line of {} tension sections ({:g} m, {} spans; overlaps of {} spans, two contact wires there); "
+                    "section 1: {}",
+                    sections_.size(), line_length(), d.spans, d.overlap_spans, s);
   if (modal_)
     s += d.window_behind < 0 || d.window_ahead < 0
              ? fmt::format("; modal solve below {:g} Hz, the whole line", d.modal_cutoff)
@@ -367,9 +592,9 @@ std::string FeCatenary::describe() const {
 void FeCatenary::prepare(const std::vector<PantographOnLine>& pantographs) const {
   build();
   if (!modal_ || pantographs.empty()) return;
-  double lo = line_->length(), hi = 0;
+  double lo = line_length(), hi = 0;
   for (const PantographOnLine& p : pantographs) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
-  modal_->prepare(modal_->window_spans(std::max(0.0, hi - lo)));
+  for (const FeSectionLine& s : sections_) s.modal->prepare(s.modal->window_spans(std::max(0.0, hi - lo)));
 }
 
 FeCostEstimate FeCatenary::estimate(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
@@ -399,6 +624,13 @@ double FeCatenary::estimated_setup_seconds(const std::vector<PantographOnLine>& 
 
 double FeCatenary::line_length() const { return data_.span * data_.spans; }
 
+std::vector<Section> FeCatenary::overlaps() const {
+  std::vector<Section> o;
+  const std::vector<FeCatenaryData>& s = data_.tension_sections;
+  for (std::size_t k = 0; k + 1 < s.size(); ++k) o.push_back({s[k + 1].line_start, s[k].line_start + s[k].spans * s[k].span});
+  return o;
+}
+
 Section FeCatenary::section() const {
   const FeCatenaryData& d = data_;
   int first = d.section_first, last = d.section_last;
@@ -419,7 +651,7 @@ std::shared_ptr<const Catenary> FeCatenary::mean() const {
 std::unique_ptr<Coupled> FeCatenary::make_coupled(const std::vector<PantographOnLine>& pantographs,
                                                   double speed) const {
   build();
-  return std::make_unique<FeCoupled>(line_, modal_, pantographs, speed, section());
+  return std::make_unique<FeCoupled>(sections_, pantographs, speed, section(), line_length(), data_.span, overlaps());
 }
 
 }  // namespace inerta::catenary

@@ -37,7 +37,121 @@ std::vector<double> dropper_length_errors(const FeIrregularity& irr, std::size_t
   return e;
 }
 
+int FeCatenaryData::line_spans() const {
+  if (!sectioned()) return spans;
+  int n = 0;
+  for (const FeCatenaryData& s : tension_sections) n += s.spans;
+  return n - overlap_spans * static_cast<int>(tension_sections.size() - 1);
+}
+
+void FeCatenaryData::link_sections() {
+  if (!sectioned()) return;
+  const std::size_t ns = tension_sections.size();
+  const int N = overlap_spans;
+  auto fail = [](const std::string& key, const std::string& problem) {
+    throw InvalidArgument("finite-element catenary: tension_sections", key, problem);
+  };
+  if (ns < 2) fail("tension_sections", fmt::format("a line of tension sections needs at least two, got {}", ns));
+  if (ns > 100) fail("tension_sections", fmt::format("at most 100 sections, got {}", ns));
+  if (N < 1 || N > 20)
+    throw InvalidArgument("finite-element catenary: overlap", "spans",
+                          fmt::format("must be 1 … 20 spans (3 and 5 are the usual designs), got {}", N));
+  for (const auto* h : {&overlap_outgoing, &overlap_incoming})
+    if (h->size() != static_cast<std::size_t>(N + 1))
+      throw InvalidArgument("finite-element catenary: overlap", h == &overlap_outgoing ? "outgoing" : "incoming",
+                            fmt::format("needs one height per overlap support (overlap.spans + 1 = {}), got {}", N + 1,
+                                        h->size()));
+  for (int j = 0; j <= N; ++j) {
+    const double o = overlap_outgoing[static_cast<std::size_t>(j)], in = overlap_incoming[static_cast<std::size_t>(j)];
+    for (auto [v, key] : {std::pair{o, "outgoing"}, std::pair{in, "incoming"}})
+      if (!std::isfinite(v) || std::abs(v) >= encumbrance)
+        throw InvalidArgument("finite-element catenary: overlap", fmt::format("{}[{}]", key, j),
+                              fmt::format("must be finite and smaller than the encumbrance ({} m), got {} m", encumbrance, v));
+    // Towards its anchor a wire is out of running: the incoming one before the overlap's middle,
+    // the outgoing one after it; it must not hang below the running wire there (strictly above
+    // at the anchors).
+    if (2 * j < N && (j == 0 ? !(in > o) : !(in >= o)))
+      throw InvalidArgument("finite-element catenary: overlap", fmt::format("incoming[{}]", j),
+                            fmt::format("{} m puts the incoming wire, out of running at overlap support {} (its anchor "
+                                        "side), below the running outgoing wire ({} m); it must be above{}",
+                                        in, j, o, j == 0 ? " (strictly, at its anchor)" : ""));
+    if (2 * j > N && (j == N ? !(o > in) : !(o >= in)))
+      throw InvalidArgument("finite-element catenary: overlap", fmt::format("outgoing[{}]", j),
+                            fmt::format("{} m puts the outgoing wire, out of running at overlap support {} (its anchor "
+                                        "side), below the running incoming wire ({} m); it must be above{}",
+                                        o, j, in, j == N ? " (strictly, at its anchor)" : ""));
+  }
+  double start = 0;
+  int first = 0;
+  for (std::size_t k = 0; k < ns; ++k) {
+    FeCatenaryData& s = tension_sections[k];
+    const bool middle = k > 0 && k + 1 < ns;
+    const int need = middle ? 2 * N + 1 : N + 1;
+    if (s.spans < need)
+      fail(fmt::format("[{}].spans", k),
+           fmt::format("{} span(s) cannot hold {}: an overlap of {} spans is longer than the section allows (at least {} "
+                       "spans{})",
+                       s.spans, middle ? "its two overlaps" : "its overlap", N, need,
+                       middle ? ": its two overlaps must not cross" : ": one of its own besides the overlap"));
+    if (k > 0) {
+      const FeCatenaryData& p = tension_sections[k - 1];
+      for (int i = 0; i <= N; ++i) {
+        const double mine = start + i * s.span, theirs = p.line_start + (p.spans - N + i) * p.span;
+        if (std::abs(mine - theirs) > 1e-6)
+          fail(fmt::format("[{}].span", k),
+               fmt::format("section {} does not share its overlap supports with section {}: its mast {} is at {:.6g} m, "
+                           "theirs at {:.6g} m (spans {} m and {} m); consecutive sections share overlap.spans + 1 = {} masts",
+                           k + 1, k, i + 1, mine, theirs, s.span, p.span, N + 1));
+      }
+    }
+    s.line_start = start;
+    s.first_span = first;
+    s.wire_label = static_cast<int>(k % 2) + 1;
+    s.mast_height.assign(static_cast<std::size_t>(s.spans) + 1, 0.0);
+    if (k > 0)
+      for (int j = 0; j <= N; ++j) s.mast_height[static_cast<std::size_t>(j)] = overlap_incoming[static_cast<std::size_t>(j)];
+    if (k + 1 < ns)
+      for (int j = 0; j <= N; ++j)
+        s.mast_height[static_cast<std::size_t>(s.spans - N + j)] = overlap_outgoing[static_cast<std::size_t>(j)];
+    s.tension_sections.clear();
+    start += (s.spans - N) * s.span;
+    first += s.spans - N;
+  }
+  spans = line_spans();
+  span = tension_sections.front().span;
+}
+
 void FeCatenaryData::validate() const {
+  if (sectioned()) {
+    for (std::size_t k = 0; k < tension_sections.size(); ++k) {
+      try {
+        tension_sections[k].validate();
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument("finite-element catenary: tension_sections",
+                              fmt::format("[{}].{}", k, e.parameter()), fmt::format("section {}: {}", k + 1, e.what()));
+      }
+      if (tension_sections[k].spans + tension_sections[k].first_span > spans || tension_sections[k].line_start < 0)
+        throw InvalidArgument("finite-element catenary: tension_sections", fmt::format("[{}]", k),
+                              "the sections are not linked into a line (FeCatenaryData::link_sections)");
+    }
+    if (irregularity.any())
+      throw InvalidArgument("finite-element catenary: irregularity", "irregularity",
+                            "irregularities on a line of tension sections are not modelled yet; give them on a "
+                            "single-section line");
+  }
+  if (!mast_height.empty()) {
+    if (mast_height.size() != static_cast<std::size_t>(spans) + 1)
+      throw InvalidArgument("finite-element catenary: line", "mast_height",
+                            fmt::format("needs spans + 1 = {} heights, got {}", spans + 1, mast_height.size()));
+    for (double h : mast_height)
+      if (!std::isfinite(h) || std::abs(h) >= encumbrance)
+        throw InvalidArgument("finite-element catenary: line", "mast_height",
+                              fmt::format("must be finite and smaller than the encumbrance, got {} m", h));
+  }
+  if (!anchor.pinned) {
+    positive("anchors", "stiffness", anchor.stiffness, "N/m");
+    non_negative("anchors", "mass", anchor.mass, "kg");
+  }
   positive("line", "span", span, "m");
   if (spans < 1 || spans > 1000)
     throw InvalidArgument("finite-element catenary: line", "spans", fmt::format("must be 1 … 1000, got {}", spans));

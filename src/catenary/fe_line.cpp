@@ -121,6 +121,19 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   std::vector<int> mast_nodes;  // interior masts
   for (std::size_t i = 0; i + 1 < marks.size(); ++i)
     if (mark_item[i]->kind == Mark::Mast && i > 0) mast_nodes.push_back(mark_node[i]);
+  std::vector<int> end_nodes;  // anchors on a tensioning device (not pinned): their w is free
+  if (!d_.anchor.pinned) end_nodes = {0, N - 1};
+  // A tension section's mast heights (FeCatenaryData::mast_height): w is taken from the straight
+  // line g between the two anchors' heights (a linear g loads no interior DOF of a tensioned beam),
+  // the masts' and droppers' targets relative to it.
+  const bool heights = !d_.mast_height.empty();
+  const double g_a = heights ? d_.mast_height.front() : 0.0, g_slope = heights ? (d_.mast_height.back() - g_a) / length() : 0.0;
+  auto g_of = [&](double x) { return g_a + g_slope * x; };
+  auto height_at = [&](double x) {  // the mast heights interpolated linearly
+    const int i = std::clamp(static_cast<int>(std::floor(x / d_.span)), 0, d_.spans - 1);
+    const double t = (x - i * d_.span) / d_.span;
+    return d_.mast_height[static_cast<std::size_t>(i)] * (1 - t) + d_.mast_height[static_cast<std::size_t>(i) + 1] * t;
+  };
   // The stitch wire's stations: from its clamp behind a mast to its clamp ahead (0: none, 1: inside,
   // 2: a clamp — its w is the messenger's).
   std::vector<char> on_stitch(static_cast<std::size_t>(N), 0);
@@ -147,7 +160,7 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
             continue;
           }
         }
-        if (!(c == 0 && (i == 0 || i == N - 1))) slot = n_dofs_++;
+        if (!(c == 0 && (i == 0 || i == N - 1) && d_.anchor.pinned)) slot = n_dofs_++;
       }
 
   // Wire matrices and gravity loads; the messenger and the stitch wires (the upper structure) apart
@@ -173,6 +186,12 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
       const double m = w == 0 ? d_.support_mass : d_.registration_mass;
       tm[w].emplace_back(k, k, m);
       fg[w][k] -= m * d_.gravity;
+    }
+    for (int n : end_nodes) {  // a tensioning device at the anchors: its vertical stiffness and mass
+      const int k = dof(w, n, 0);
+      tk[w].emplace_back(k, k, d_.anchor.stiffness);
+      tm[w].emplace_back(k, k, d_.anchor.mass);
+      fg[w][k] -= d_.anchor.mass * d_.gravity;
     }
   }
   if (stitched) {  // stitch wires: part of the upper structure; clamp masses on the messenger
@@ -251,6 +270,8 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   std::vector<int> cdofs, mdofs;  // constrained w DOFs: contact wire at droppers then masts; messenger at masts
   for (const Dropper& dr : droppers_) cdofs.push_back(dr.dof_c);
   for (int n : mast_nodes) cdofs.push_back(dof(1, n, 0)), mdofs.push_back(dof(0, n, 0));
+  for (int n : end_nodes) cdofs.push_back(dof(1, n, 0)), mdofs.push_back(dof(0, n, 0));
+  const int ne = static_cast<int>(end_nodes.size());
   // K w = f + Σ e_j z_j with w_j prescribed at the constrained DOFs j: eliminate them (K_FF w_F =
   // f_F − K_FC w_C, one sparse factor of K_FF, work linear in the line) and the reactions z_j are
   // (K w − f)_j. The same solution as the influence form w = K⁻¹(f + E z), without its dense n × #j.
@@ -293,19 +314,42 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
   const Constrained con_c(sparse(tk_alone[1]), cdofs), con_m(sparse(tk_alone[0]), mdofs);
   if (con_c.llt.info() != Eigen::Success || con_m.llt.info() != Eigen::Success)
     throw NumericalError("finite-element catenary: the wire stiffness matrix is singular (check tensions)");
-  Eigen::VectorXd target = Eigen::VectorXd::Zero(nd + nm);
+  Eigen::VectorXd target = Eigen::VectorXd::Zero(nd + nm + ne);
   for (int k = 0; k < nd; ++k) target[k] = -presag[static_cast<std::size_t>(k)];
+  Eigen::VectorXd zero_m = Eigen::VectorXd::Zero(nm + ne);
+  if (heights) {
+    for (int k = 0; k < nd; ++k) {
+      const double x = droppers_[static_cast<std::size_t>(k)].x;
+      target[k] += height_at(x) - g_of(x);
+    }
+    for (int j = 0; j < nm; ++j) {
+      const double x = x_[static_cast<std::size_t>(mast_nodes[static_cast<std::size_t>(j)])];
+      target[nd + j] = zero_m[j] = height_at(x) - g_of(x);
+    }
+  }
   const Eigen::VectorXd design_target = target;
   if (!irr.height_error_x.empty())  // installation error: added to the target heights at the droppers
     for (int k = 0; k < nd; ++k) target[k] += height_error_at(irr, droppers_[static_cast<std::size_t>(k)].x);
-  const Eigen::VectorXd zero_m = Eigen::VectorXd::Zero(nm);
   // The form-finding at the contact-wire targets `tgt`: stretched dropper lengths, wire heights and
   // dropper tensions.
+  // The straight line g as DOF values (w: g(x), θ: its slope) and the forces K g of each wire on
+  // it: zero inside a wire, but not where a stitch wire ends on the messenger (T_s g′ at its clamps).
+  Eigen::VectorXd kg[2];
+  if (heights) {
+    g_dofs_ = Eigen::VectorXd::Zero(n_dofs_);
+    for (int i = 0; i < N; ++i)
+      for (int w = 0; w < kWires; ++w) {
+        if (const int k = dof(w, i, 0); k >= 0) g_dofs_[k] = g_of(x_[static_cast<std::size_t>(i)]);
+        if (const int k = dof(w, i, 1); k >= 0) g_dofs_[k] = g_slope;
+      }
+    for (int w = 0; w < 2; ++w) kg[w] = sparse(tk[w]) * g_dofs_;
+  }
   auto form_find = [&](const Eigen::VectorXd& tgt, std::vector<double>& len, Eigen::VectorXd& wc, Eigen::VectorXd& wm,
                        Eigen::VectorXd& T) {
     len.assign(static_cast<std::size_t>(nd), d_.encumbrance);
     for (int pass = 0; pass < 20; ++pass) {
       Eigen::VectorXd fc = fg[1], fm = fg[0];
+      if (heights) fc -= kg[1], fm -= kg[0];
       for (int k = 0; k < nd; ++k) {
         const Dropper& dr = droppers_[static_cast<std::size_t>(k)];
         const double half = 0.5 * dr.mass_per_length * len[static_cast<std::size_t>(k)] * d_.gravity;
@@ -452,6 +496,12 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
     s_contact_[static_cast<std::size_t>(i)] = dt >= 0 ? w_static_[dt] : 0.0;
     messenger_y_[static_cast<std::size_t>(i)] = d_.encumbrance + (mw >= 0 ? w_static_[mw] : 0.0);
     if (sw >= 0) stitch_y_[static_cast<std::size_t>(i)] = d_.encumbrance + w_static_[sw];
+    if (heights) {  // from the straight line between the anchors (above)
+      const double g = g_of(x_[static_cast<std::size_t>(i)]);
+      y_contact_[static_cast<std::size_t>(i)] += g, s_contact_[static_cast<std::size_t>(i)] += g_slope;
+      messenger_y_[static_cast<std::size_t>(i)] += g;
+      if (sw >= 0) stitch_y_[static_cast<std::size_t>(i)] += g;
+    }
   }
 }
 
@@ -558,7 +608,7 @@ FeLine::Residual FeLine::equilibrium_residual() const {
   std::vector<char> slack;
   const Eigen::VectorXd u0 = static_displacement({}, {}, &slack);
   const Eigen::VectorXd w = w_static_ + u0;
-  Eigen::VectorXd r = K_wires_ * w - f_gravity_;
+  Eigen::VectorXd r = K_wires_ * (g_dofs_.size() ? Eigen::VectorXd(w + g_dofs_) : w) - f_gravity_;
   Residual out;
   for (std::size_t k = 0; k < droppers_.size(); ++k) {
     const Dropper& dr = droppers_[k];
@@ -575,6 +625,8 @@ FeLine::Residual FeLine::equilibrium_residual() const {
   for (int n = 0; n < n_nodes(); ++n)
     for (double xs : support_x_)
       if (std::abs(x_[static_cast<std::size_t>(n)] - xs) < 1e-9) mast[static_cast<std::size_t>(dof(0, n, 0))] = mast[static_cast<std::size_t>(dof(1, n, 0))] = 1;
+  if (!d_.anchor.pinned)  // the anchors' devices carry the wires' end forces
+    for (int n : {0, n_nodes() - 1}) mast[static_cast<std::size_t>(dof(0, n, 0))] = mast[static_cast<std::size_t>(dof(1, n, 0))] = 1;
   for (int i = 0; i < n_dofs_; ++i) {
     out.load_scale = std::max(out.load_scale, std::abs(f_gravity_[i]));
     if (!mast[static_cast<std::size_t>(i)]) out.force = std::max(out.force, std::abs(r[i]));

@@ -357,11 +357,17 @@ void read_fe_irregularity(const detail::Reader& rd, const YAML::Node& ir, catena
   }
 }
 
+void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary::FeCatenaryData& d);
+
 void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
   const detail::Reader rd(path);
   std::vector<std::string> top{"name", "type"};
   top.insert(top.end(), kFeSections.begin(), kFeSections.end());
+  top.insert(top.end(), {"tension_sections", "overlap"});
   rd.keys(root, "a finite-element catenary file", top);
+  const bool sectioned = root["tension_sections"].IsDefined();
+  if (root["overlap"].IsDefined() && !sectioned)
+    rd.fail(root["overlap"], "overlap", "an overlap joins tension sections; give tension_sections too (docs/model-format.md)");
   catenary::FeCatenaryData& d = c.fe;
   // Masses the file does not give are absent (not the benchmark's values, FeCatenaryData's defaults).
   d.dropper_mass_per_length = d.clamp_mass_messenger = d.clamp_mass_contact = 0;
@@ -383,6 +389,12 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     const YAML::Node sec = root[f.section];
     if (!sec.IsDefined() || sec.IsNull() || !sec.IsMap()) continue;
     const YAML::Node n = sec[f.key];
+    const bool section_spans = std::string(f.section) == "line" && std::string(f.key) == "spans";
+    if (sectioned && section_spans) {
+      if (n.IsDefined())
+        rd.fail(n, "spans", "a line of tension_sections takes its spans from its sections (tension_sections[k].spans); remove line.spans");
+      continue;
+    }
     if (!n.IsDefined() || n.IsNull()) {
       if (f.required) rd.fail(sec, f.key, fmt::format("missing in {}; expected a number ({})", f.section, f.unit));
       continue;
@@ -421,6 +433,7 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     d.section_first = fe_whole(rd, n[0], "spans", rd.number(n[0], "spans"));
     d.section_last = fe_whole(rd, n[1], "spans", rd.number(n[1], "spans"));
   }
+  if (sectioned) read_fe_sections(rd, root, d);
   c.contact = catenary::Contact{catenary::Contact::Kind::Penalty, 50e3, 0.0};
   if (const YAML::Node ct = root["contact"]; ct.IsDefined()) {
     rd.keys(ct, "contact", {"type", "stiffness", "damping"});
@@ -434,6 +447,107 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     d.validate();
   } catch (const InvalidArgument& e) {
     fe_fail(rd, root, e);
+  }
+}
+
+// tension_sections: [{spans, anchors, span?, messenger?, contact_wire?, droppers?, stitch?, supports?,
+// registration?}, …] and overlap: {spans, outgoing, incoming} (docs/model-format.md "Tension sections").
+// Each section is the file's line with its own keys over it; `d` the whole line (its spans set here).
+void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary::FeCatenaryData& d) {
+  const YAML::Node list = root["tension_sections"];
+  if (!list.IsSequence() || list.size() == 0)
+    rd.fail(list, "tension_sections", "expected a list of sections: - {spans: 12, anchors: pinned}, one per tension section");
+  const YAML::Node ov = root["overlap"];
+  if (!ov.IsDefined() || !ov.IsMap())
+    rd.fail(ov.IsDefined() ? ov : root, "overlap",
+            "missing: a line of tension sections needs overlap: {spans: N, outgoing: [N+1 heights, m], incoming: [N+1 heights, m]}");
+  rd.keys(ov, "overlap", {"spans", "outgoing", "incoming"});
+  const YAML::Node on = rd.need(ov, "spans", "overlap");
+  d.overlap_spans = fe_whole(rd, on, "spans", rd.number(on, "spans"));
+  for (const char* k : {"outgoing", "incoming"}) {
+    const YAML::Node h = rd.need(ov, k, "overlap");
+    if (!h.IsSequence())
+      rd.fail(h, k, "expected a list of contact-wire heights (m, up), one per overlap support (overlap.spans + 1), in line order");
+    std::vector<double>& v = std::string(k) == "outgoing" ? d.overlap_outgoing : d.overlap_incoming;
+    for (const auto& item : h) v.push_back(rd.number(item, k));
+  }
+  static const std::vector<std::string> own{"messenger", "contact_wire", "droppers", "supports", "registration"};
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const YAML::Node sn = list[k];
+    const std::string where = fmt::format("tension_sections[{}]", k);
+    if (!sn.IsMap()) rd.fail(sn, where, "expected a section: {spans, anchors, and optionally span, messenger, contact_wire, droppers, stitch, supports, registration}");
+    rd.keys(sn, where, {"spans", "span", "anchors", "messenger", "contact_wire", "droppers", "stitch", "supports", "registration"});
+    catenary::FeCatenaryData s = d;
+    s.tension_sections.clear();
+    s.overlap_outgoing.clear(), s.overlap_incoming.clear();
+    s.overlap_spans = 0;
+    const YAML::Node spans = rd.need(sn, "spans", where);
+    s.spans = fe_whole(rd, spans, "spans", rd.number(spans, "spans"));
+    if (const YAML::Node n = sn["span"]; n.IsDefined()) s.span = rd.number(n, "span");
+    const YAML::Node an = sn["anchors"];
+    if (!an.IsDefined() || an.IsNull())
+      rd.fail(sn, "anchors", fmt::format("missing in {}: each section ends at anchors; expected anchors: pinned, or "
+                                         "anchors: {{stiffness: N/m, mass: kg}} of a tensioning device", where));
+    if (an.IsScalar()) {
+      if (an.Scalar() != "pinned") rd.fail(an, "anchors", fmt::format("expected pinned or {{stiffness, mass}}, got '{}'", an.Scalar()));
+    } else {
+      rd.keys(an, where + ".anchors", {"stiffness", "mass"});
+      s.anchor.pinned = false;
+      s.anchor.stiffness = rd.number(rd.need(an, "stiffness", where + ".anchors"), "stiffness");
+      s.anchor.mass = rd.number_or(an, "mass", 0.0);
+    }
+    for (const std::string& sec : own) {  // the section's own values over the line's, key by key
+      const YAML::Node o = sn[sec];
+      if (!o.IsDefined() || o.IsNull()) continue;
+      std::vector<std::string> allowed;
+      for (const FeField& f : fe_fields())
+        if (sec == f.section) allowed.emplace_back(f.key);
+      if (sec == "droppers") allowed.insert(allowed.end(), {"x", "presag"});
+      rd.keys(o, where + "." + sec, allowed);
+      for (const FeField& f : fe_fields())
+        if (sec == f.section)
+          if (const YAML::Node n = o[f.key]; n.IsDefined()) {
+            const double v = rd.number(n, f.key);
+            f.set(s, f.integer ? fe_whole(rd, n, f.key, v) : v);
+          }
+      if (sec == "droppers")
+        for (const char* l : {"x", "presag"})
+          if (const YAML::Node n = o[l]; n.IsDefined()) *fe_list(s, l) = fe_numbers(rd, n, l);
+    }
+    if (const YAML::Node st = sn["stitch"]; st.IsDefined()) {
+      s.stitch = catenary::FeStitch{};
+      if (!st.IsNull()) read_fe_stitch(rd, st, s.stitch);
+    }
+    d.tension_sections.push_back(std::move(s));
+  }
+  try {
+    d.link_sections();
+  } catch (const InvalidArgument& e) {
+    // "tension_sections" + "[k].key", or "overlap" + "key[j]": at that node.
+    const std::string what = e.what(), key = e.parameter();
+    YAML::Node at = root;
+    if (what.find(": overlap:") != std::string::npos || what.rfind("finite-element catenary: overlap", 0) == 0) {
+      at.reset(ov);
+      const std::string base = key.substr(0, key.find('['));
+      if (const YAML::Node n = ov[base]; n.IsDefined()) {
+        at.reset(n);
+        if (const auto open = key.find('['); open != std::string::npos && n.IsSequence()) {
+          const std::size_t j = std::stoul(key.substr(open + 1));
+          if (j < n.size()) at.reset(n[j]);
+        }
+      }
+      rd.fail(at, "overlap." + key, e.problem());
+    }
+    at.reset(list);
+    if (key.size() > 1 && key[0] == '[') {
+      const std::size_t k = std::stoul(key.substr(1));
+      const std::string leaf = key.substr(key.find(']') + 2 <= key.size() ? key.find(']') + 2 : key.size());
+      if (k < list.size()) {
+        at.reset(list[k]);
+        if (const YAML::Node n = list[k][leaf]; !leaf.empty() && n.IsDefined()) at.reset(n);
+      }
+    }
+    rd.fail(at, "tension_sections" + (key == "tension_sections" ? std::string() : key), e.problem());
   }
 }
 
@@ -574,6 +688,16 @@ void apply_override(Parsed& c, const std::string& o) {
     if (!set_fe(c.fe, section, key, value, o))
       throw ModelError(fmt::format("--set '{}': unknown key; expected {}contact.type, contact.stiffness, contact.damping",
                                    o, fe_override_help()));
+    if (c.fe.sectioned() && section != "section") {  // a line of tension sections: every section
+      if (section == "line" && key == "spans")
+        throw ModelError(fmt::format("--set '{}': a line of tension sections takes its spans from its sections", o));
+      for (catenary::FeCatenaryData& s : c.fe.tension_sections) set_fe(s, section, key, value, o);
+      try {
+        c.fe.link_sections();
+      } catch (const InvalidArgument& e) {
+        throw ModelError(fmt::format("--set '{}': {}", o, e.what()));
+      }
+    }
     try {
       c.fe.validate();
     } catch (const InvalidArgument& e) {

@@ -133,4 +133,38 @@ TEST_F(CatenaryCli, BadStitchAndIrregularityInputIsAFileErrorNamingTheKey) {
   EXPECT_TRUE(contains(r.err, "stitch")) << r.err;
 }
 
+TEST_F(CatenaryCli, BadTensionSectionsAreAFileErrorNamingTheKey) {
+  // Issue 35 item 8 through the program: sections that do not share their overlap supports, an
+  // overlap longer than a section, an out-of-running wire below the running one, a section without
+  // anchor data: exit 2, the file and the key named.
+  const std::string src = read_file(std::string(INERTA_SOURCE_DIR) + "/models/catenary-fe-overlap.yaml");
+  struct Case {
+    const char* from;
+    const char* to;
+    const char* key;
+  };
+  const Case cases[] = {
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, span: 60, anchors: pinned}", "tension_sections[1].span"},
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 6, anchors: pinned}", "tension_sections[1].spans"},
+      {"  incoming: [0.5, 0.2, 0, 0]", "  incoming: [0.5, -0.1, 0, 0]", "overlap.incoming[1]"},
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 13}", "anchors"},
+  };
+  int n = 0;
+  for (const Case& c : cases) {
+    std::string t = src;
+    const auto at = t.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    t.replace(at, std::string(c.from).size(), c.to);
+    const std::string file = write(fmt::format("badsec{}.yaml", n++), t);
+    const auto r = run("check " + quote(file));
+    EXPECT_EQ(r.code, 2) << c.to << "\n" << r.err;
+    EXPECT_TRUE(contains(r.err, file + ":")) << r.err;
+    EXPECT_TRUE(contains(r.err, c.key)) << c.key << "\n" << r.err;
+  }
+  // An override that would break the line: every section takes it.
+  const auto r = run("check " + model("catenary-fe-overlap.yaml") + " --set line.spans=5");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "tension sections")) << r.err;
+}
+
 }  // namespace test_apps_catenary_cli

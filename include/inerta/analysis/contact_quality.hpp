@@ -57,6 +57,15 @@ struct ContactQuality {
 ContactQuality contact_quality(const std::vector<double>& t, const std::vector<double>& x_contact,
                                const std::vector<double>& F, double x_from, double x_to,
                                const ContactQualityOptions& options = {});
+/// The raw and low-passed statistics of the samples with x in one of `parts` and in [x_from, x_to]
+/// (the overlaps of a line of tension sections, issue 35): the same low-pass over the whole history,
+/// then the cut. Both empty (samples 0) when no sample lies there; the errors of contact_quality.
+struct PartStatistics {
+  ContactStatistics raw, filtered;
+};
+PartStatistics part_statistics(const std::vector<double>& t, const std::vector<double>& x_contact,
+                               const std::vector<double>& F, const catenary::Section& section,
+                               const std::vector<catenary::Section>& parts, const ContactQualityOptions& options = {});
 /// Over the catenary's analysis section (catenary::Catenary::section()).
 ContactQuality contact_quality(const std::vector<double>& t, const std::vector<double>& x_contact,
                                const std::vector<double>& F, const catenary::Section& section,

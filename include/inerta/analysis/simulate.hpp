@@ -104,6 +104,9 @@ struct CoupledSimulation {
   std::vector<double> support_x;
   TimeHistory supports;
   std::vector<ContactQuality> quality;  ///< per contact: EN 50317 statistics raw and filtered, PSD
+  /// A line with overlaps: the overlap spans in the section (m) and each contact's statistics there.
+  std::vector<catenary::Section> overlaps;
+  std::vector<PartStatistics> overlap_quality;
   std::vector<SupportUplift> uplift;    ///< the supports in the section: max uplift and when
   double uplift_limit = NAN;            ///< m: the line's registration uplift limit (Catenary::uplift_limit)
 };

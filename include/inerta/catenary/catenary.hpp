@@ -9,6 +9,7 @@
 //     element wire) and exchanges, at every coupling step, the contact force and the motion of the
 //     contact points with the pantographs' multibody models, which it integrates in between.
 // Contacts are addressed by typed handles (ContactId), one per pantograph, in the order given.
+#include <array>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -55,6 +56,12 @@ struct Sample {
   /// Height of the wire at the contact point above its static height without pantographs, m
   /// (NaN where the catenary has no such wire, e.g. a prescribed profile).
   double wire_uplift = std::numeric_limits<double>::quiet_NaN();
+  /// On a line with two contact wires (Coupled::wires() == 2: tension sections and overlaps): the
+  /// contact force of each wire (N; `force` is their sum) and each wire's uplift at the contact
+  /// point (m; NaN where that wire is not at the contact point). `wire_uplift` is the running
+  /// wire's (the lower one's).
+  std::array<double, 2> force_wire{0.0, 0.0};
+  std::array<double, 2> uplift_wire{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
 };
 using SampleObserver = std::function<void(const Sample&)>;
 
@@ -88,6 +95,13 @@ class Coupled {
   /// and their current uplift (m, up, from the static state without pantographs).
   virtual std::vector<double> support_x() const { return {}; }
   virtual std::vector<double> support_uplift() const { return {}; }
+  /// A name per support (its column in OUT.supports.csv): `uplift@X`, with the suffix _w1 or _w2 where
+  /// two registrations share a mast (an overlap).
+  virtual std::vector<std::string> support_names() const;
+  /// Contact wires a pantograph can touch: 1, or 2 on a line of tension sections (Sample::force_wire).
+  virtual int wires() const { return 1; }
+  /// The stretches of the line where two contact wires run side by side (statistics of their own).
+  virtual std::vector<Section> overlaps() const { return {}; }
   virtual solve::RunStats advance(double t_end, double dt, const solve::IntegratorOptions& options,
                                   const SampleObserver& observer, bool accelerations = false) = 0;
 };

@@ -140,6 +140,38 @@ struct FeCatenaryData {
   FeStitch stitch;            ///< none unless stitch.present
   FeIrregularity irregularity;
   bool has_stitch() const { return stitch.present && stitch.enabled; }
+
+  // A tension section of a longer line (docs/catenary-fe.md "Tension sections and overlaps").
+  /// m: the contact wire's height at each mast (spans + 1 values, the end masts its anchors; empty:
+  /// 0 at every mast). The messenger is `encumbrance` above it at every mast, the droppers' targets
+  /// are the heights interpolated linearly between the masts, less the pre-sag.
+  std::vector<double> mast_height;
+  /// The anchors at the section's two ends: pinned (w = 0), or a tensioning device's vertical
+  /// stiffness (N/m) and mass (kg) on both wires' ends.
+  struct Anchor {
+    bool pinned = true;
+    double stiffness = 0, mass = 0;
+  } anchor;
+  double line_start = 0;  ///< m: x of this section's first mast along the whole line
+  int first_span = 0;     ///< its first span among the line's (0-based)
+  int wire_label = 1;     ///< which contact wire it is along the line: 1 (odd sections) or 2 (even)
+
+  /// The line's tension sections, each a whole section (the fields above set); consecutive ones
+  /// overlap over `overlap_spans` spans (they share overlap_spans + 1 masts). Empty: the line is one
+  /// section, pinned at height 0 at both ends (every file before issue 35).
+  std::vector<FeCatenaryData> tension_sections;
+  int overlap_spans = 0;
+  /// m: the contact wire's heights at the overlap's supports (overlap_spans + 1 values, in line
+  /// order): the section that ends there (outgoing; its last value is at its anchor) and the one
+  /// that starts (incoming; its first value at its anchor).
+  std::vector<double> overlap_outgoing, overlap_incoming;
+  bool sectioned() const { return !tension_sections.empty(); }
+  /// The whole line's spans (the sections' less the overlaps), for a sectioned line.
+  int line_spans() const;
+  /// Sets each section's place along the line (line_start, first_span, wire_label), its mast
+  /// heights from the overlaps and the line's `spans`; InvalidArgument naming the key
+  /// (tension_sections[k].…, overlap.…) when the sections cannot form a line.
+  void link_sections();
   /// InvalidArgument naming the offending value.
   void validate() const;
 };
@@ -248,6 +280,7 @@ class FeLine {
   Eigen::SparseMatrix<double> K_wires_;  ///< wires and supports, no droppers (equilibrium_residual)
   Eigen::VectorXd f_gravity_;      ///< gravity on the wires, clamps, droppers and point masses
   Eigen::VectorXd w_static_;       ///< the heights of the reference state, per DOF (w from its reference)
+  Eigen::VectorXd g_dofs_;         ///< a section's straight line between its anchors' heights, per DOF (empty: none)
   Eigen::SparseMatrix<double> K_static_;
   BandLlt K_llt_;  ///< of K_static_
   friend class FeIntegrator;
@@ -378,6 +411,15 @@ double mesh_unknowns(const FeCatenaryData& d);
 FeCostEstimate estimate_cost(const FeCatenaryData& d, const std::vector<double>& x0, double speed, double t_end,
                              bool setup = true, bool modes = true);
 
+/// One tension section as a run sees it: its line (x local, from its first mast), its modes (null:
+/// the direct solve), where it lies along the whole line and which contact wire it is.
+struct FeSectionLine {
+  std::shared_ptr<const FeLine> line;
+  std::shared_ptr<const class FeModalLine> modal;
+  double start = 0, end = 0;  ///< m along the whole line: its first and last mast (its anchors)
+  int wire = 1;               ///< 1 or 2 (FeCatenaryData::wire_label)
+};
+
 /// The finite-element catenary as a catenary type (co-simulated: the line is stepped by
 /// FeIntegrator, each pantograph's multibody model by the multibody integrator; see fe_coupled).
 /// The line (mesh, form-finding, factorisation) is built when first needed, not by the constructor,
@@ -392,6 +434,8 @@ class FeCatenary final : public Catenary {
   double span() const override { return data_.span; }
   int max_pantographs() const override { return 64; }
   double line_length() const override;
+  /// The overlaps of a line of tension sections: from the incoming section's anchor to the outgoing one's.
+  std::vector<Section> overlaps() const;
   double wave_speed() const override { return data_.contact_wire.wave_speed(); }
   Section section() const override;
   double uplift_limit() const override { return line_->data().registration_uplift_limit; }
@@ -399,6 +443,8 @@ class FeCatenary final : public Catenary {
   /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep
   /// or a study decomposes a window once); nullptr with solver: direct.
   std::shared_ptr<const class FeModalLine> modal() const;
+  /// The line's tension sections (one for a file without tension_sections: line() and modal()).
+  const std::vector<FeSectionLine>& sections() const;
   void prepare(const std::vector<PantographOnLine>& pantographs) const override;
   double estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const override;
   double estimated_setup_seconds(const std::vector<PantographOnLine>& pantographs) const override;
@@ -415,6 +461,7 @@ class FeCatenary final : public Catenary {
   mutable std::atomic<bool> line_ready_{false};
   mutable std::shared_ptr<const FeLine> line_;
   mutable std::shared_ptr<const class FeModalLine> modal_;
+  mutable std::vector<FeSectionLine> sections_;
 };
 
 /// The direct solve of the whole line (FeIntegrator) as a run's solver.

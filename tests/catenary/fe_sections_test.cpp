@@ -1,0 +1,229 @@
+// Lines of tension sections with overlaps (issue 35, docs/catenary-fe.md "Tension sections and
+// overlaps"): a section away from its overlap is the single-section line; every section's static
+// state is an equilibrium; with the other wire out of reach a pantograph sees only its own; the load
+// passes from one wire to the other over the overlap's middle span, their sum the contact force;
+// modal = direct; bad input names the file and key.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/simulate.hpp"
+#include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/error.hpp"
+#include "inerta/io/catenary_file.hpp"
+#include "inerta/io/model_file.hpp"
+
+// One namespace a file: a unity build compiles several test files as one unit.
+namespace test_catenary_fe_sections {
+
+using namespace inerta;
+using catenary::FeCatenaryData;
+using catenary::FeLine;
+
+const std::string kOverlap = INERTA_SOURCE_DIR "/models/catenary-fe-overlap.yaml";
+
+// The bundled line's design on two sections of `spans` spans each (a 3-span overlap), direct solve.
+FeCatenaryData two_sections(int spans, const std::vector<std::string>& sets = {}) {
+  FeCatenaryData d = io::read_fe_catenary_data(kOverlap, sets);
+  d.tension_sections.resize(2);
+  for (FeCatenaryData& s : d.tension_sections) s.spans = spans;
+  d.link_sections();
+  return d;
+}
+
+TEST(FeSections, AwayFromItsOverlapASectionIsTheSingleSectionLine) {
+  // Section 1 of the bundled line (12 spans, its last 3 in the overlap, raised towards its anchor)
+  // against the stitched line of 12 spans with no overlap: in spans 1–5 the form-finding gives the
+  // same heights, dropper tensions and lengths to round-off. (Nearer the overlap the stitch wires,
+  // which carry load across each mast, pass the raised spans' influence on, ≈ 100 × weaker a span:
+  // 5e-9 m in span 7, 6e-3 m in span 10.)
+  const FeCatenaryData line = io::read_fe_catenary_data(kOverlap, {});
+  const FeCatenaryData& sec = line.tension_sections.front();
+  ASSERT_EQ(sec.spans, 12);
+  ASSERT_EQ(sec.mast_height.back(), 0.5);
+  FeCatenaryData plain = io::read_fe_catenary_data(INERTA_SOURCE_DIR "/models/catenary-fe-stitched.yaml", {"line.spans=12"});
+  const FeLine a(sec), b(plain);
+  ASSERT_EQ(a.n_dofs(), b.n_dofs());
+  ASSERT_EQ(a.droppers().size(), b.droppers().size());
+  const double far = 5 * sec.span;
+  for (double x = 0; x <= far; x += 1.3) EXPECT_NEAR(a.static_height(x), b.static_height(x), 1e-9) << x;
+  int compared = 0;
+  for (std::size_t k = 0; k < a.droppers().size(); ++k) {
+    if (a.droppers()[k].x > far) break;
+    EXPECT_NEAR(a.droppers()[k].tension, b.droppers()[k].tension, 1e-8 * b.droppers()[k].tension) << k;
+    EXPECT_NEAR(a.droppers()[k].length, b.droppers()[k].length, 1e-11) << k;
+    ++compared;
+  }
+  EXPECT_GT(compared, 50);
+  // And the overlap's masts are where the file puts them: the contact wire at its mast heights.
+  for (int m = 9; m <= 12; ++m) EXPECT_NEAR(a.static_height(m * sec.span), sec.mast_height[static_cast<std::size_t>(m)], 1e-9) << m;
+}
+
+TEST(FeSections, EverySectionsStaticStateIsAnEquilibrium) {
+  const FeCatenaryData line = io::read_fe_catenary_data(kOverlap, {});
+  ASSERT_EQ(line.tension_sections.size(), 3u);
+  for (const FeCatenaryData& s : line.tension_sections) {
+    const FeLine L(s);
+    const FeLine::Residual r = L.equilibrium_residual();
+    EXPECT_LT(r.force, 1e-8 * r.load_scale) << s.first_span;
+    EXPECT_LT(r.dropper, 1e-6) << s.first_span;
+    // Pre-sag 0: the contact wire at the straight line between its masts' heights at every dropper.
+    for (const FeLine::Dropper& dr : L.droppers()) {
+      const int i = std::min(s.spans - 1, static_cast<int>(dr.x / s.span));
+      const double t = dr.x / s.span - i;
+      const double want = s.mast_height[static_cast<std::size_t>(i)] * (1 - t) + s.mast_height[static_cast<std::size_t>(i) + 1] * t;
+      EXPECT_NEAR(L.static_height(dr.x), want, 1e-9) << dr.x;
+    }
+  }
+  // A tensioning device at the anchors instead of pins: still an equilibrium, the ends at their heights.
+  FeCatenaryData s = line.tension_sections[1];
+  s.anchor = {false, 2e5, 30};
+  const FeLine L(s);
+  const FeLine::Residual r = L.equilibrium_residual();
+  EXPECT_LT(r.force, 1e-8 * r.load_scale);
+  EXPECT_NEAR(L.static_height(0), s.mast_height.front(), 1e-9);
+  EXPECT_NEAR(L.static_height(L.length()), s.mast_height.back(), 1e-9);
+}
+
+// The 3-mass on a line at 250 km/h to t_end (direct solve), histories kept.
+analysis::CoupledSimulation run(const FeCatenaryData& d, double t_end) {
+  const catenary::FeCatenary cat(d);
+  const auto panto = io::load_pantograph(INERTA_SOURCE_DIR "/models/pantograph-3mass.yaml");
+  analysis::CoupledOptions o;
+  o.t_end = t_end;
+  o.sample = 1e-3;
+  return analysis::simulate_coupled({{panto, 0.0, {catenary::Contact::Kind::Penalty, 50e3, 0.0}}}, cat, 250 / 3.6, o);
+}
+
+std::vector<double> column(const analysis::CoupledSimulation& r, const std::string& name) {
+  const auto& h = r.histories.front();
+  const auto it = std::find(h.names.begin(), h.names.end(), name);
+  if (it == h.names.end()) throw InvalidArgument("no column " + name);
+  return h.columns[static_cast<std::size_t>(it - h.names.begin())];
+}
+
+TEST(FeSections, WithTheOtherWireOutOfReachThePantographSeesOnlyItsOwn) {
+  // Two sections of 6 spans, the incoming wire raised 0.5 m and 0.2 m over the overlap's first span:
+  // a run that ends before the middle span equals a run on section 1 alone (the same section as a
+  // line of its own) to round-off, and the incoming wire carries nothing.
+  const FeCatenaryData d = two_sections(6);
+  const double span = d.span, t_end = (4 * span - 1) / (250 / 3.6);  // the contact point short of mast 4 (o1)
+  FeCatenaryData alone = d.tension_sections.front();
+  alone.tension_sections.clear();
+  const auto both = run(d, t_end), one = run(alone, t_end);
+  const auto F2 = column(both, "F_contact"), F1 = column(one, "F_contact"), w2 = column(both, "F_contact_w2");
+  ASSERT_EQ(F1.size(), F2.size());
+  for (std::size_t i = 0; i < F1.size(); ++i) {
+    EXPECT_NEAR(F2[i], F1[i], 1e-9 * std::max(1.0, std::abs(F1[i]))) << i;
+    EXPECT_EQ(w2[i], 0.0) << i;
+  }
+}
+
+TEST(FeSections, TheLoadPassesFromOneWireToTheOtherOverTheMiddleSpan) {
+  // Through the whole overlap of two 6-span sections: before its middle span only wire 1 carries the
+  // pantograph, after it only wire 2; in the middle span both, over a stretch, their sum the contact
+  // force, the share of wire 2 growing from 0 to 1.
+  const FeCatenaryData d = two_sections(6);
+  const double span = d.span;
+  const auto r = run(d, (8 * span) / (250 / 3.6));
+  const auto F = column(r, "F_contact"), f1 = column(r, "F_contact_w1"), f2 = column(r, "F_contact_w2"), x = column(r, "x_contact");
+  const double o1 = 4 * span, o2 = 5 * span;  // the middle span of the overlap (masts 3…6)
+  int both = 0;
+  double first_both = INFINITY, last_both = -INFINITY, max_jump = 0;
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    EXPECT_NEAR(f1[i] + f2[i], F[i], 1e-9 * std::max(1.0, std::abs(F[i]))) << x[i];
+    if (x[i] < o1) EXPECT_EQ(f2[i], 0.0) << x[i];
+    if (x[i] > o2) EXPECT_EQ(f1[i], 0.0) << x[i];
+    if (f1[i] > 0 && f2[i] > 0) ++both, first_both = std::min(first_both, x[i]), last_both = std::max(last_both, x[i]);
+    if (i > 0) max_jump = std::max(max_jump, std::abs(F[i] - F[i - 1]));
+  }
+  std::fprintf(stderr, "both wires loaded over %.2f … %.2f m (%d samples); largest change of F in a sample %.2f N\n",
+               first_both, last_both, both, max_jump);
+  EXPECT_GT(both, 20);
+  EXPECT_GT(first_both, o1);
+  EXPECT_LT(last_both, o2);
+  // Continuous: no sample-to-sample change of the total beyond what the plain spans show.
+  double plain_jump = 0;
+  for (std::size_t i = 1; i < F.size(); ++i)
+    if (x[i] < 3 * span && x[i] > span) plain_jump = std::max(plain_jump, std::abs(F[i] - F[i - 1]));
+  EXPECT_LT(max_jump, 3 * plain_jump + 5);
+}
+
+TEST(FeSections, ModalIsTheDirectSolveWithinTwoPercentInTheOverlapsToo) {
+  // Two sections of 7 spans (11 spans, one overlap), the 3-mass and the HSX at 250 and 300 km/h:
+  // σ raw and after the 20 Hz low-pass, over the section and over the overlap spans alone.
+  FeCatenaryData modal = two_sections(7), direct = modal;
+  direct.solver = FeCatenaryData::Solver::Direct;
+  for (FeCatenaryData& s : direct.tension_sections) s.solver = FeCatenaryData::Solver::Direct;
+  ASSERT_EQ(modal.solver, FeCatenaryData::Solver::Modal);
+  const catenary::FeCatenary dc(direct), mc(modal);
+  for (const char* model : {"pantograph-3mass.yaml", "hsx.yaml"}) {
+    const auto panto = io::load_pantograph(std::string(INERTA_SOURCE_DIR "/models/") + model);
+    const auto rows = analysis::compare({{panto, 0.0, {catenary::Contact::Kind::Penalty, 50e3, 0.0}}}, dc, mc,
+                                        {250 / 3.6, 300 / 3.6}, {});
+    for (const auto& r : rows) {
+      const auto& a = r.reference;
+      const auto& b = r.candidate;
+      ASSERT_EQ(a.overlap.size(), 1u);
+      std::fprintf(stderr, "%s %.0f km/h: sigma %.3f / %.3f, 20 Hz %.3f / %.3f, overlap %.3f / %.3f, 20 Hz %.3f / %.3f N\n",
+                   model, r.speed * 3.6, a.stats.std, b.stats.std, a.filtered[0].std, b.filtered[0].std, a.overlap[0].std,
+                   b.overlap[0].std, a.overlap_filtered[0].std, b.overlap_filtered[0].std);
+      EXPECT_NEAR(b.stats.std, a.stats.std, 0.02 * a.stats.std) << model << r.speed;
+      EXPECT_NEAR(b.filtered[0].std, a.filtered[0].std, 0.02 * a.filtered[0].std) << model << r.speed;
+      EXPECT_NEAR(b.overlap[0].std, a.overlap[0].std, 0.02 * a.overlap[0].std) << model << r.speed;
+      EXPECT_NEAR(b.overlap_filtered[0].std, a.overlap_filtered[0].std, 0.02 * a.overlap_filtered[0].std) << model << r.speed;
+    }
+  }
+}
+
+TEST(FeSectionsErrors, NameTheFileAndKey) {
+  // Each case edits one line of the bundled file's text.
+  struct Case {
+    const char* name;
+    const char* from;
+    const char* to;
+    const char* key;
+  };
+  const Case cases[] = {
+      {"shared", "  - {spans: 13, anchors: pinned}", "  - {spans: 13, span: 60, anchors: pinned}", "tension_sections[1].span"},
+      {"longer", "  - {spans: 13, anchors: pinned}", "  - {spans: 6, anchors: pinned}", "tension_sections[1].spans"},
+      {"endlonger", "  - {spans: 12, anchors: pinned}   # [assumed]\n  - {spans: 13", "  - {spans: 3, anchors: pinned}\n  - {spans: 13", "tension_sections[0].spans"},
+      {"below", "  incoming: [0.5, 0.2, 0, 0]", "  incoming: [0.5, -0.1, 0, 0]", "overlap.incoming[1]"},
+      {"outbelow", "  outgoing: [0, 0, 0.2, 0.5]", "  outgoing: [0, 0, 0.2, -0.1]", "overlap.outgoing[3]"},
+      {"count", "  outgoing: [0, 0, 0.2, 0.5]", "  outgoing: [0, 0.2, 0.5]", "overlap.outgoing"},
+      {"anchor", "  - {spans: 13, anchors: pinned}", "  - {spans: 13}", "anchors"},
+      {"anchorkind", "  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: welded}", "anchors"},
+      {"nooverlap", "overlap:", "overlapx:", "overlap"},
+  };
+  std::ifstream in(kOverlap);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    std::string t = text;
+    t.replace(at, std::string(c.from).size(), c.to);
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / fmt::format("inerta-badsec-{}-{}", c.name, ::getpid());
+    std::filesystem::create_directories(dir);
+    const std::string path = (dir / "bad.yaml").string();
+    std::ofstream(path) << t;
+    try {
+      (void)io::read_fe_catenary_data(path, {});
+      ADD_FAILURE() << "no error";
+    } catch (const ModelError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path + ":"), std::string::npos) << what;
+      EXPECT_NE(what.find(c.key), std::string::npos) << what;
+    }
+    std::filesystem::remove_all(dir);
+  }
+}
+
+}  // namespace test_catenary_fe_sections
