@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "inerta/analysis/contact_statistics.hpp"
+#include "inerta/analysis/simulate.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
@@ -163,3 +164,33 @@ static void BM_FeIrregular3Mass250kmhCold(benchmark::State& state) {
   run_cold(state, "pantograph-3mass.yaml", 250, {"irregularity.dropper_length_std=0.005", "irregularity.seed=7"});
 }
 BENCHMARK(BM_FeIrregular3Mass250kmhCold)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Issue 35: a line of tension sections (models/catenary-fe-overlap.yaml, 2015 m, two 3-span
+// overlaps) against one section of the same design (the stitched line, 650 m), the 3-mass at
+// 300 km/h, one pantograph and two 200 m apart, the modes decomposed before the timing (as with the
+// mode store). Cost per km: divide by the distance run (the CLI's t_end · v).
+namespace {
+const char* kFeOverlap = INERTA_SOURCE_DIR "/models/catenary-fe-overlap.yaml";
+void run_train(benchmark::State& state, const char* line, std::vector<double> positions) {
+  const pantograph::Pantograph p = io::load_pantograph(std::string(INERTA_SOURCE_DIR) + "/models/pantograph-3mass.yaml");
+  io::CatenaryFile c = io::load_catenary(line, {});
+  std::vector<catenary::PantographOnLine> train;
+  for (double x : positions) train.push_back({p, x, c.contact});
+  c.catenary->prepare(train);
+  double distance = 0;
+  for (auto _ : state) {
+    const analysis::CoupledSimulation r = analysis::simulate_coupled(train, *c.catenary, 300 / 3.6, analysis::CoupledOptions{});
+    distance = r.t_end * r.speed;
+    benchmark::DoNotOptimize(r.contacts.front().stats.std);
+  }
+  state.counters["km"] = distance / 1000;
+}
+}  // namespace
+static void BM_FeOverlap3Mass300kmhWarm(benchmark::State& state) { run_train(state, kFeOverlap, {0}); }
+BENCHMARK(BM_FeOverlap3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(1);
+static void BM_FeOverlapTwo3Mass300kmhWarm(benchmark::State& state) { run_train(state, kFeOverlap, {0, 200}); }
+BENCHMARK(BM_FeOverlapTwo3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(1);
+static void BM_FeSectionOne3Mass300kmhWarm(benchmark::State& state) { run_train(state, kFeStitched, {0}); }
+BENCHMARK(BM_FeSectionOne3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(1);
+static void BM_FeSectionTwo3Mass300kmhWarm(benchmark::State& state) { run_train(state, kFeStitched, {0, 200}); }
+BENCHMARK(BM_FeSectionTwo3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -111,8 +111,8 @@ class TrackContact : public mbs::ForceElement {
 // section stepped with the penalty contacts of the pantographs on its wire (and, to place a modal
 // window, a zero force at the nearest point of its line for the others). A section no pantograph
 // has reached yet is at rest in its static state (nothing has acted on it): it starts when the
-// first one reaches its anchor. One the last pantograph has left by more than window_behind + 1
-// spans can no longer act on any contact: it is no longer stepped (its supports' uplift held).
+// first one reaches its anchor. Once the last pantograph has left it by more than window_behind + 1
+// spans, it can no longer act on any contact: it is no longer stepped (its supports' uplift held).
 class FeCoupled final : public Coupled {
  public:
   FeCoupled(const std::vector<FeSectionLine>& sections, const std::vector<PantographOnLine>& ps, double speed,

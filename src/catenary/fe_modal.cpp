@@ -62,9 +62,11 @@ class ModalSolver final : public FeLineSolver {
     last_x_ = x;
     last_F_ = F;
     last_res_.assign(x.size(), 0.0);
+    res_ready_.assign(x.size(), 1);
     load_p_.resize(x.size()), load_px_.resize(x.size());
     for (std::size_t k = 0; k < x.size(); ++k) {
-      for (const Mod& m : mods_) last_res_[k] += residual(mods_[k], m) * m.coeff;
+      for (const Mod& m : mods_)
+        if (m.coeff != 0) last_res_[k] += residual(mods_[k], m) * m.coeff;
       load_p_[k] = mods_[k].p;
       load_px_[k] = shape_slope(L_.contact_shape(x[k]));
     }
@@ -156,6 +158,7 @@ class ModalSolver final : public FeLineSolver {
     for (std::size_t j = 0; j < nd; ++j) wx0_[static_cast<Eigen::Index>(nc + j)] = d0_[static_cast<Eigen::Index>(j)];
     for (std::size_t e = 0; e < win_->ends.size(); ++e) wx0_[static_cast<Eigen::Index>(nc + nd + e)] = smods_[nd + e].p.dot(x0_);
     for (const auto& [f, F] : prescribed_) {
+      if (F == 0) continue;  // a window's placeholder for a pantograph on another section (fe_coupled.cpp)
       for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] += residual(mods_[c], f) * F;
       for (std::size_t s2 = 0; s2 < ns; ++s2) wx0_[static_cast<Eigen::Index>(nc + s2)] += residual(smods_[s2], f) * F;
       d0_ += residual_droppers(f) * F;
@@ -255,21 +258,17 @@ class ModalSolver final : public FeLineSolver {
     last_F_ = forces;
     last_res_.assign(loads.size(), 0.0);
     for (std::size_t c = 0; c < nc; ++c) last_res_[static_cast<std::size_t>(contacts_[c].load)] = contact_w_[c] - mods_[c].p.dot(q_);
-    {  // prescribed forces: their residual displacement (from every force of the step)
-      std::size_t i = 0;
-      for (std::size_t k = 0; k < loads.size(); ++k) {
-        if (loads[k].penalty) continue;
-        const Mod& f = prescribed_[i++].first;
-        double w = 0;
-        for (const auto& [g, F] : prescribed_) w += residual(f, g) * F;
-        for (std::size_t j = 0; j < set_.size(); ++j) {
-          const int sj = set_[j];
-          const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
-          w += residual(f, m) * coef_[static_cast<Eigen::Index>(j)] / ap;
-        }
-        last_res_[k] = w;
+    // Prescribed forces: their residual displacement (from every force of the step); at a zero
+    // force (a placeholder: it adds nothing to the energy) only when its uplift is asked for.
+    prescribed_load_.assign(loads.size(), -1);
+    res_ready_.assign(loads.size(), 1);
+    for (std::size_t k = 0, i = 0; k < loads.size(); ++k)
+      if (!loads[k].penalty) {
+        prescribed_load_[k] = static_cast<int>(i);
+        if (prescribed_[i].second != 0) last_res_[k] = prescribed_residual(i);
+        else res_ready_[k] = 0;
+        ++i;
       }
-    }
     if (alpha_ != 0) {  // q = C v + K₀ u − f at t_{n+1}, in modal coordinates (f: the set's forces)
       qi_ = damp_.cwiseProduct(qd_) + md.omega2.cwiseProduct(q_);
       for (std::size_t j = 0; j < set_.size(); ++j) {
@@ -288,8 +287,12 @@ class ModalSolver final : public FeLineSolver {
     return -1;
   }
   double uplift(double x) const override {
-    if (const int k = load_at(x); k >= 0)  // with the quasi-static part of the modes left out
-      return load_p_[static_cast<std::size_t>(k)].dot(q_) + last_res_[static_cast<std::size_t>(k)];
+    if (const int k = load_at(x); k >= 0) {  // with the quasi-static part of the modes left out
+      const std::size_t kk = static_cast<std::size_t>(k);
+      if (kk < res_ready_.size() && !res_ready_[kk])
+        last_res_[kk] = prescribed_residual(static_cast<std::size_t>(prescribed_load_[kk])), res_ready_[kk] = 1;
+      return load_p_[kk].dot(q_) + last_res_[kk];
+    }
     const FeLine::Shape sh = L_.contact_shape(x);
     double w = 0;
     for (int a = 0; a < 4; ++a)
@@ -357,18 +360,53 @@ class ModalSolver final : public FeLineSolver {
     return std::clamp(s - behind, 0, d.spans - W_);
   }
 
-  // K₀⁻¹(i, j): within the band from the band inverse, else from a column (cached per shape).
-  double kinv(int i, int j) {
+  // K₀⁻¹(i, j): within the band from the band inverse, else from the column of the lower DOF (K₀⁻¹
+  // is symmetric: one column per pair of contacts), kept per window shape up to kColumnBytes (the
+  // oldest dropped first; made again, the same numbers) in recycled buffers (no fresh pages a step).
+  double kinv(int i, int j) const {
     const auto& md = *win_->modes;
     if (std::abs(i - j) <= md.kd) return md.band(i, j);
-    auto it = columns_.find(j);
-    if (it == columns_.end()) {
-      Eigen::VectorXd c = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(win_->dofs.size()));
-      c[j] = 1;
-      md.solve_K(c);
-      it = columns_.emplace(j, std::move(c)).first;
+    if (i < j) std::swap(i, j);
+    if (auto it = columns_.find(j); it != columns_.end()) return it->second[i];
+    const std::size_t n = win_->dofs.size();
+    const std::size_t cap = std::max<std::size_t>(8, kColumnBytes / (8 * n));
+    Eigen::VectorXd c;
+    if (columns_.size() >= cap) {  // drop the oldest
+      auto old = columns_.find(column_order_.front());
+      c = std::move(old->second);
+      columns_.erase(old);
+      column_order_.pop_front();
+    } else if (!spare_columns_.empty()) {
+      c = std::move(spare_columns_.back());
+      spare_columns_.pop_back();
     }
-    return it->second[i];
+    c.setZero(static_cast<Eigen::Index>(n));
+    c[j] = 1;
+    md.solve_K(c, j);
+    column_order_.push_back(j);
+    const double v = c[i];
+    columns_.emplace(j, std::move(c));
+    return v;
+  }
+  void clear_columns() {
+    for (auto& [l, c] : columns_) spare_columns_.push_back(std::move(c));
+    columns_.clear();
+    column_order_.clear();
+  }
+  // The residual displacement at prescribed force i after the step: from every prescribed force
+  // and the set's terms.
+  double prescribed_residual(std::size_t i) const {
+    const Mod& f = prescribed_[i].first;
+    const double ap = 1 + alpha_;
+    const std::size_t nc = mods_.size();
+    double w = 0;
+    for (const auto& [g, F] : prescribed_) w += residual(f, g) * F;
+    for (std::size_t j = 0; j < set_.size(); ++j) {
+      const int sj = set_[j];
+      const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
+      w += residual(f, m) * coef_[static_cast<Eigen::Index>(j)] / ap;
+    }
+    return w;
   }
   // With `px`: Φᵀ N'(x) too (shape_slope), from the same rows in the same pass.
   Mod contact_mod(const FeLine::Shape& sh, double d, double coeff, Eigen::VectorXd* px = nullptr) const {
@@ -448,7 +486,7 @@ class ModalSolver final : public FeLineSolver {
     return m;
   }
   // w_aᵀ (K₀⁻¹ − Φ Ω⁻² Φᵀ) w_b.
-  double residual(const Mod& a, const Mod& b) {
+  double residual(const Mod& a, const Mod& b) const {
     double k = 0;
     if (a.s[0] >= 0) {
       for (int i = 0; i < 2; ++i)
@@ -475,7 +513,7 @@ class ModalSolver final : public FeLineSolver {
   void enter(int first) {
     const std::shared_ptr<const FeWindowModes> before = win_ ? win_->modes : nullptr;
     win_ = ml_->window(first, W_);
-    if (win_->modes != before) columns_.clear(), dropper_columns_.clear();
+    if (win_->modes != before) clear_columns(), dropper_columns_.clear();
     const auto& md = *win_->modes;
     const FeCatenaryData& d = L_.data();
     const double ap = 1 + alpha_;
@@ -583,9 +621,15 @@ class ModalSolver final : public FeLineSolver {
   std::vector<int> support_of_;  // their indices in the line's supports
   std::vector<char> slack_;    // per dropper of the line
   std::vector<char> active_;   // per penalty load
-  std::vector<double> last_x_, last_res_, last_F_;
+  std::vector<double> last_x_, last_F_;
+  mutable std::vector<double> last_res_;  // a placeholder's computed when asked (res_ready_)
+  mutable std::vector<char> res_ready_;
+  std::vector<int> prescribed_load_;  // per load: its index in prescribed_ (−1: a contact)
   std::vector<Eigen::VectorXd> load_p_, load_px_;  // per load of the last step: Φᵀ N(x) and Φᵀ N'(x)
-  std::map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
+  static constexpr std::size_t kColumnBytes = std::size_t{256} << 20;
+  mutable std::unordered_map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
+  mutable std::deque<int> column_order_;                      // their l, oldest first
+  mutable std::vector<Eigen::VectorXd> spare_columns_;        // buffers of a previous shape
   std::unordered_map<int, Eigen::VectorXd> dropper_columns_;  // dropper_column(l) of the window shape
   // Step scratch.
   std::vector<double> xs_;

@@ -19,8 +19,8 @@ namespace inerta::catenary {
 
 using Sparse = Eigen::SparseMatrix<double>;
 
-void FeWindowModes::solve_K(Eigen::VectorXd& b) const {
-  numerics::band_cholesky_solve(cholesky.data(), static_cast<int>(b.size()), kd, b.data());
+void FeWindowModes::solve_K(Eigen::VectorXd& b, int first) const {
+  numerics::band_cholesky_solve(cholesky.data(), static_cast<int>(b.size()), kd, b.data(), first);
 }
 
 void FeWindowModes::set_phi(std::shared_ptr<const void> owner, const double* data, Eigen::Index n, Eigen::Index m) {

@@ -81,9 +81,9 @@ int band_cholesky(std::vector<double>& ab, int n, int kd) {
   return info;
 }
 
-void band_cholesky_solve(const double* ab, int n, int kd, double* x) {
+void band_cholesky_solve(const double* ab, int n, int kd, double* x, int first) {
   const int ld = kd + 1;
-  for (int j = 0; j < n; ++j) {
+  for (int j = std::max(first, 0); j < n; ++j) {
     const double* c = ab + static_cast<std::ptrdiff_t>(j) * ld;
     const double xj = x[j] / c[0];
     x[j] = xj;

@@ -139,8 +139,12 @@ TEST(FeSections, TheLoadPassesFromOneWireToTheOtherOverTheMiddleSpan) {
   double first_both = INFINITY, last_both = -INFINITY, max_jump = 0;
   for (std::size_t i = 0; i < F.size(); ++i) {
     EXPECT_NEAR(f1[i] + f2[i], F[i], 1e-9 * std::max(1.0, std::abs(F[i]))) << x[i];
-    if (x[i] < o1) EXPECT_EQ(f2[i], 0.0) << x[i];
-    if (x[i] > o2) EXPECT_EQ(f1[i], 0.0) << x[i];
+    if (x[i] < o1) {
+      EXPECT_EQ(f2[i], 0.0) << x[i];
+    }
+    if (x[i] > o2) {
+      EXPECT_EQ(f1[i], 0.0) << x[i];
+    }
     if (f1[i] > 0 && f2[i] > 0) ++both, first_both = std::min(first_both, x[i]), last_both = std::max(last_both, x[i]);
     if (i > 0) max_jump = std::max(max_jump, std::abs(F[i] - F[i - 1]));
   }

@@ -10,6 +10,7 @@
 
 #include "inerta/io/study_file.hpp"
 #include "inerta/network/layouts.hpp"
+#include "support/run.hpp"
 #include "support/temp.hpp"
 
 // One namespace a file: a unity build compiles several test files as one unit.

@@ -62,7 +62,7 @@ struct FeWindowModes {
   BandInverse band;              ///< K⁻¹ within the band
   std::vector<int> special;      ///< local DOFs
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> kinv_special;  ///< n_w × special: K⁻¹ columns
-  void solve_K(Eigen::VectorXd& b) const;  ///< b ← K⁻¹ b
+  void solve_K(Eigen::VectorXd& b, int first = 0) const;  ///< b ← K⁻¹ b (b zero before `first`)
 };
 
 /// A window of the line: spans [first_span, first_span + spans), its free DOFs (global, ascending)

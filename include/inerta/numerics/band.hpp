@@ -35,8 +35,9 @@ class BandLdlt {
 /// Returns LAPACK dpbtrf's info (0: done; > 0: not positive definite).
 int band_cholesky(std::vector<double>& ab, int n, int kd);
 
-/// x ← A⁻¹ x from A's band Cholesky factor (forward then back substitution; n values).
-void band_cholesky_solve(const double* ab, int n, int kd, double* x);
+/// x ← A⁻¹ x from A's band Cholesky factor (forward then back substitution; n values). `first`:
+/// x is zero before it (the forward substitution starts there; the same numbers).
+void band_cholesky_solve(const double* ab, int n, int kd, double* x, int first = 0);
 
 /// X ← A⁻¹ X for ns right-hand sides side by side: X is n × ns row-major (a DOF a row).
 void band_cholesky_solve_rows(const double* ab, int n, int kd, double* X, int ns);
