@@ -47,7 +47,7 @@ class ModalSolver final : public FeLineSolver {
     const auto& md = *win_->modes;
     std::fill(slack_.begin(), slack_.end(), 0);
     mods_.clear();
-    for (std::size_t k = 0; k < x.size(); ++k) mods_.push_back(contact_mod(L_.contact_shape(x[k]), 0, F[k]));
+    for (std::size_t k = 0; k < x.size(); ++k) mods_.push_back(contact_mod(L_.contact_shape(x[k]), 0, F[k], x[k]));
     const auto& drs = L_.droppers();
     for (int k : droppers_)
       if (slack[static_cast<std::size_t>(k)]) {
@@ -103,7 +103,7 @@ class ModalSolver final : public FeLineSolver {
     for (std::size_t k = 0; k < loads.size(); ++k) {
       const FeLoad& ld = loads[k];
       const FeLine::Shape sh = L_.contact_shape(ld.x);
-      Mod m = contact_mod(sh, 0, 0, &load_px_[k]);
+      Mod m = contact_mod(sh, 0, 0, ld.x, &load_px_[k]);
       load_p_[k] = m.p;  // kept for height, height_rate and uplift at this point after the step
       if (!ld.penalty) {
         r_ += (ap * ld.force) * m.p;
@@ -345,6 +345,7 @@ class ModalSolver final : public FeLineSolver {
     std::array<int, 2> s{-1, -1};
     std::array<double, 2> sw{};
     double d = 0, coeff = 0;
+    double x = NAN;  // m: a contact point's place (NaN: a special DOF)
   };
   struct Contact {
     int load;
@@ -409,8 +410,9 @@ class ModalSolver final : public FeLineSolver {
     return w;
   }
   // With `px`: Φᵀ N'(x) too (shape_slope), from the same rows in the same pass.
-  Mod contact_mod(const FeLine::Shape& sh, double d, double coeff, Eigen::VectorXd* px = nullptr) const {
+  Mod contact_mod(const FeLine::Shape& sh, double d, double coeff, double x, Eigen::VectorXd* px = nullptr) const {
     Mod m;
+    m.x = x;
     const auto& md = *win_->modes;
     const Eigen::Index nm = md.omega2.size();
     m.p = Eigen::VectorXd::Zero(nm);
@@ -485,8 +487,10 @@ class ModalSolver final : public FeLineSolver {
     m.d = d, m.coeff = coeff;
     return m;
   }
-  // w_aᵀ (K₀⁻¹ − Φ Ω⁻² Φᵀ) w_b.
+  // w_aᵀ (K₀⁻¹ − Φ Ω⁻² Φᵀ) w_b; left out (0) between contact points more than kFarSpans spans apart,
+  // where it is below ≈ 2·10⁻³ of a point's own (FeModal.TheResidualFlexibility…).
   double residual(const Mod& a, const Mod& b) const {
+    if (std::abs(a.x - b.x) > kFarSpans * L_.data().span) return 0;
     double k = 0;
     if (a.s[0] >= 0) {
       for (int i = 0; i < 2; ++i)
@@ -627,6 +631,7 @@ class ModalSolver final : public FeLineSolver {
   std::vector<int> prescribed_load_;  // per load: its index in prescribed_ (−1: a contact)
   std::vector<Eigen::VectorXd> load_p_, load_px_;  // per load of the last step: Φᵀ N(x) and Φᵀ N'(x)
   static constexpr std::size_t kColumnBytes = std::size_t{256} << 20;
+  static constexpr double kFarSpans = 3;
   mutable std::unordered_map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
   mutable std::deque<int> column_order_;                      // their l, oldest first
   mutable std::vector<Eigen::VectorXd> spare_columns_;        // buffers of a previous shape
