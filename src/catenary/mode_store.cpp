@@ -194,6 +194,9 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
     done += w;
   }
   if (sum.value() != hd.checksum) return std::nullopt;
+  // Used now: the directory's size limit removes the least recently used files first (save), so a
+  // file that every run reads is not the first to go (best effort: a read-only file keeps its time).
+  (void)::futimens(fd, nullptr);
   StoredModes out;
   out.omega2 = Eigen::Map<const Eigen::VectorXd>(omega2, hd.m);
   out.phi = omega2 + m;
@@ -245,7 +248,8 @@ bool ModeStore::save(std::uint64_t key, double cutoff_hz, const Eigen::VectorXd&
       fs::remove(tmp, ec);
       return false;
     }
-    // Keep the directory under max_bytes: the oldest files go first (never the one just written).
+    // Keep the directory under max_bytes: the least recently used files go first (load touches a
+    // file it reads; never the one just written).
     struct F {
       fs::path p;
       fs::file_time_type t;

@@ -444,6 +444,28 @@ TEST(FeModalStore, AFileCutShortAfterLoadingDoesNotTouchTheRun) {
   EXPECT_FALSE(store.load(s.K, s.M, 50.0));  // gone: solved again
 }
 
+TEST(FeModalStore, TheSizeLimitRemovesTheLeastRecentlyUsedFile) {
+  // Three files of one size, the limit holding two: the file written first but read since stays,
+  // the one written second and never read goes when the third is written.
+  namespace fs = std::filesystem;
+  SmallStore s("lru");
+  const std::uintmax_t one = 8 * (400 * 300 + 300) + 4096;
+  const catenary::ModeStore store(s.dir, 2 * one + one / 2);
+  Eigen::SparseMatrix<double> K2 = s.K, K3 = s.K;
+  K2.coeffRef(0, 0) += 1, K3.coeffRef(0, 0) += 2;
+  ASSERT_TRUE(store.save(s.K, s.M, 50.0, s.modes));
+  ASSERT_TRUE(store.save(K2, s.M, 50.0, s.modes));
+  const fs::path a = store.file(catenary::ModeStore::key(s.K, s.M, 50.0)), b = store.file(catenary::ModeStore::key(K2, s.M, 50.0));
+  const auto past = fs::file_time_type::clock::now() - std::chrono::hours(2);
+  fs::last_write_time(a, past - std::chrono::minutes(1));  // a older than b
+  fs::last_write_time(b, past);
+  ASSERT_TRUE(store.load(s.K, s.M, 50.0));  // a used now
+  ASSERT_TRUE(store.save(K3, s.M, 50.0, s.modes));
+  EXPECT_TRUE(fs::exists(a)) << "read since: kept";
+  EXPECT_FALSE(fs::exists(b)) << "the least recently used: removed";
+  EXPECT_TRUE(store.load(K3, s.M, 50.0));
+}
+
 TEST(FeModalStore, AFifoNamedLikeAModeFileIsIgnored) {
   // open() of a FIFO without a writer blocks for ever; the store never waits on one (nor reads a
   // folder of that name): no modes, so they are solved, and saving replaces it by a regular file.
