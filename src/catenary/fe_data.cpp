@@ -126,9 +126,13 @@ void FeCatenaryData::validate() const {
     for (std::size_t k = 0; k < tension_sections.size(); ++k) {
       try {
         tension_sections[k].validate();
-      } catch (const InvalidArgument& e) {
+      } catch (const InvalidArgument& e) {  // key [k].<its section>.<its key>, e.g. [1].anchors.stiffness
+        const std::string what = e.what(), prefix = "finite-element catenary: ";
+        std::string inner;
+        if (what.rfind(prefix, 0) == 0) inner = what.substr(prefix.size(), what.find(": ", prefix.size()) - prefix.size());
         throw InvalidArgument("finite-element catenary: tension_sections",
-                              fmt::format("[{}].{}", k, e.parameter()), fmt::format("section {}: {}", k + 1, e.what()));
+                              fmt::format("[{}].{}{}", k, inner.empty() ? "" : inner + ".", e.parameter()),
+                              fmt::format("section {}: {}", k + 1, e.problem()));
       }
       if (tension_sections[k].spans + tension_sections[k].first_span > spans || tension_sections[k].line_start < 0)
         throw InvalidArgument("finite-element catenary: tension_sections", fmt::format("[{}]", k),
@@ -151,6 +155,11 @@ void FeCatenaryData::validate() const {
   if (!anchor.pinned) {
     positive("anchors", "stiffness", anchor.stiffness, "N/m");
     non_negative("anchors", "mass", anchor.mass, "kg");
+    if (anchor.stiffness > 1e12)  // beyond it the stiffness only spoils K's conditioning
+      throw InvalidArgument("finite-element catenary: anchors", "stiffness",
+                            fmt::format("must be at most 1e12 (N/m), got {}; a stiffer anchor is a pinned one (anchors: pinned)", anchor.stiffness));
+    if (anchor.mass > 1e5)
+      throw InvalidArgument("finite-element catenary: anchors", "mass", fmt::format("must be at most 1e5 (kg), got {}", anchor.mass));
   }
   positive("line", "span", span, "m");
   if (spans < 1 || spans > 1000)

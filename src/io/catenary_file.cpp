@@ -246,6 +246,25 @@ std::string fe_section_help(const std::string& section) {
   std::string section;
   if (what.rfind(prefix, 0) == 0) section = what.substr(prefix.size(), what.find(": ", prefix.size()) - prefix.size());
   std::string key = e.parameter();
+  if (section == "tension_sections" && key.size() > 1 && key[0] == '[') {  // [k].<section>.<key>
+    // At the section's own value where it gives one, else at the file's value every section takes.
+    const std::size_t k = std::stoul(key.substr(1)), close = key.find(']');
+    const std::string rest = close + 2 <= key.size() ? key.substr(close + 2) : std::string();
+    const std::string inner = rest.substr(0, rest.find('.')), leaf = rest.find('.') == std::string::npos ? "" : rest.substr(rest.find('.') + 1);
+    YAML::Node at = root["tension_sections"];
+    if (at.IsSequence() && k < at.size()) {
+      const YAML::Node sec = at[k];
+      at.reset(sec);
+      if (const YAML::Node own = sec.IsMap() ? sec[inner] : YAML::Node(); !inner.empty() && own.IsDefined()) {
+        at.reset(own);
+        if (const YAML::Node n = own.IsMap() && !leaf.empty() ? own[leaf] : YAML::Node(); n.IsDefined()) at.reset(n);
+      } else if (const YAML::Node top = inner.empty() ? YAML::Node() : root[inner]; top.IsDefined() && top.IsMap()) {
+        at.reset(top);
+        if (const YAML::Node n = leaf.empty() ? YAML::Node() : top[leaf]; n.IsDefined()) at.reset(n);
+      }
+    }
+    rd.fail(at, "tension_sections" + key, e.problem());
+  }
   if (section == "damping" && (key == "mass" || key == "stiffness")) key = "rayleigh_" + key;
   long index = -1;
   std::string shown = key;

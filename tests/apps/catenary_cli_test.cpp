@@ -2,6 +2,7 @@
 // pantographs, and what a catenary type cannot do.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -148,6 +149,12 @@ TEST_F(CatenaryCli, BadTensionSectionsAreAFileErrorNamingTheKey) {
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 6, anchors: pinned}", "tension_sections[1].spans"},
       {"  incoming: [0.5, 0.2, 0, 0]", "  incoming: [0.5, -0.1, 0, 0]", "overlap.incoming[1]"},
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13}", "anchors"},
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: {stiffness: .nan}}", "tension_sections[1].anchors.stiffness"},
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: {stiffness: 1e300}}", "tension_sections[1].anchors.stiffness"},
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: {stiffness: 1e5, mass: .inf}}", "tension_sections[1].anchors.mass"},
+      {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: pinned, messenger: {tension: -5}}", "tension_sections[1].messenger.tension"},
+      {"  spans: 3", "  spans: 0", "overlap.spans"},
+      {"  outgoing: [0, 0, 0.2, 0.5]", "  outgoing: [0, 0, .inf, 0.5]", "overlap.outgoing[2]"},
   };
   int n = 0;
   for (const Case& c : cases) {
@@ -158,7 +165,9 @@ TEST_F(CatenaryCli, BadTensionSectionsAreAFileErrorNamingTheKey) {
     const std::string file = write(fmt::format("badsec{}.yaml", n++), t);
     const auto r = run("check " + quote(file));
     EXPECT_EQ(r.code, 2) << c.to << "\n" << r.err;
-    EXPECT_TRUE(contains(r.err, file + ":")) << r.err;
+    const auto at_file = r.err.find(file + ":");
+    ASSERT_NE(at_file, std::string::npos) << r.err;
+    EXPECT_TRUE(std::isdigit(static_cast<unsigned char>(r.err[at_file + file.size() + 1]))) << "file:line, " << r.err;
     EXPECT_TRUE(contains(r.err, c.key)) << c.key << "\n" << r.err;
   }
   // An override that would break the line: every section takes it.
