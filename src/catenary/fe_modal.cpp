@@ -58,6 +58,7 @@ class ModalSolver final : public FeLineSolver {
       }
     q_.setZero(md.omega2.size());
     for (const Mod& m : mods_) q_ += m.coeff * m.pw;  // coeff: the force here
+    md.check_intact(t);
     qd_.setZero(q_.size()), qdd_.setZero(q_.size()), qi_.setZero(q_.size());
     last_x_ = x;
     last_F_ = F;
@@ -252,6 +253,7 @@ class ModalSolver final : public FeLineSolver {
         qdd[i] = a1, q[i] = u;
       }
     }
+    md.check_intact(t1);  // a mapped mode file cut short: no result from its zeros (catenary/mode_store.hpp)
     t_ = t1;
     // The residual (quasi-static) displacement at each load point, for height() and uplift().
     last_x_ = xs_;
@@ -583,6 +585,7 @@ class ModalSolver final : public FeLineSolver {
     if (r1 > r0)
       kernels::rows_dot(mo.phi.data() + r0 * mm, mm, static_cast<int>(r1 - r0), static_cast<int>(mm), qs, C, uva.data() + r0 * C);
     const auto u = uva.col(0), v = uva.col(1), a = uva.col(2);
+    mo.check_intact(t_);
     Eigen::VectorXd fi;
     if (alpha_ != 0) fi = mo.M * uva.col(3);
     enter(first);

@@ -28,6 +28,14 @@ void FeWindowModes::set_phi(std::shared_ptr<const void> owner, const double* dat
   new (&phi) Eigen::Map<const RowMatrix>(data, n, m);
 }
 
+void FeWindowModes::throw_damaged(double t) const {
+  throw NumericalError(fmt::format(
+      "finite-element catenary (modal): t = {:.6g} s: the mode file {} was cut short while this run read it (by "
+      "another program?); its modes are gone, so the run stops rather than give results from them. Run again: the "
+      "file no longer matches and the modes are solved anew",
+      t, phi_file.string()));
+}
+
 int FeWindow::local(int global) const {
   const auto it = std::lower_bound(dofs.begin(), dofs.end(), global);
   return it != dofs.end() && *it == global ? static_cast<int>(it - dofs.begin()) : -1;
@@ -158,6 +166,7 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
     ++loaded_;
     md->omega2 = std::move(stored->omega2);
     md->set_phi(std::move(stored->owner), stored->phi, stored->n, stored->m);
+    md->phi_damaged = stored->damaged, md->phi_file = std::move(stored->file);
   } else {
     if (!make) ++solved_;
     Modes modes;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -112,6 +113,78 @@ bool read_fully(int fd, void* buffer, std::size_t bytes, std::size_t offset) {
   return true;
 }
 
+// The SIGBUS guard of mapped mode files: a slot per mapping ([begin, end), its damage flag). A bus
+// error inside a slot's range (the file was cut short under the mapping) maps anonymous zero pages
+// over the rest of that mapping, marks it damaged and returns, so the access completes; any other
+// SIGBUS goes to the handler installed before (or kills the process as by default).
+struct Guard {
+  std::atomic<std::uintptr_t> begin{0}, end{0};
+  std::atomic<int> damaged{0};
+  std::atomic<bool> taken{false};
+};
+Guard g_guards[ModeStore::kGuards];
+struct sigaction g_previous {};
+std::uintptr_t g_page = 4096;
+
+extern "C" void on_bus_error(int sig, siginfo_t* info, void* context) {
+  if (info && info->si_code == BUS_ADRERR) {
+    const auto a = reinterpret_cast<std::uintptr_t>(info->si_addr);
+    for (Guard& g : g_guards) {
+      const std::uintptr_t b = g.begin.load(), e = g.end.load();
+      if (a < b || a >= e) continue;
+      const std::uintptr_t page = a & ~(g_page - 1);
+      if (::mmap(reinterpret_cast<void*>(page), e - page, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) !=
+          MAP_FAILED) {
+        g.damaged.store(1);
+        return;
+      }
+      break;
+    }
+  }
+  if (g_previous.sa_flags & SA_SIGINFO) {
+    if (g_previous.sa_sigaction) g_previous.sa_sigaction(sig, info, context);
+    return;
+  }
+  if (g_previous.sa_handler != SIG_DFL && g_previous.sa_handler != SIG_IGN) {
+    g_previous.sa_handler(sig);
+    return;
+  }
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  ::sigaction(sig, &dfl, nullptr);
+  ::raise(sig);  // delivered on return (a fault: the access repeats and ends the process)
+}
+
+Guard* take_guard() {
+  static const bool installed = [] {
+    g_page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    struct sigaction sa {};
+    sa.sa_sigaction = on_bus_error;
+    sa.sa_flags = SA_SIGINFO | SA_RESTART;
+    sigemptyset(&sa.sa_mask);
+    return ::sigaction(SIGBUS, &sa, &g_previous) == 0;
+  }();
+  if (!installed) return nullptr;
+  for (Guard& g : g_guards) {
+    bool free = false;
+    if (g.taken.compare_exchange_strong(free, true)) return &g;
+  }
+  return nullptr;
+}
+
+// A mapping of a mode file under its guard; unmapped (and the guard freed) with the last owner.
+struct Mapping {
+  void* base = nullptr;
+  std::size_t length = 0;
+  Guard* guard = nullptr;
+  ~Mapping() {
+    guard->begin.store(0), guard->end.store(0);
+    ::munmap(base, length);
+    guard->damaged.store(0);
+    guard->taken.store(false);
+  }
+};
+
 }  // namespace
 
 ModeStore::ModeStore(std::filesystem::path directory, std::uintmax_t max_bytes)
@@ -152,9 +225,8 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
                                            double cutoff_hz) const {
   const numerics::PhaseTimer timer("mode store: read and verify");
   const std::uint64_t k = key(K, M, cutoff_hz);
-  // Never blocks and never maps: O_NONBLOCK so that a FIFO (or any special file) named like a mode
-  // file does not hang open(), then only a regular file is read, with read() into memory of our
-  // own — a file cut short or rewritten while a run uses the modes cannot kill it (no SIGBUS).
+  // Never blocks: O_NONBLOCK so that a FIFO (or any special file) named like a mode file does not
+  // hang open(), then only a regular file is read.
   const int fd = ::open(file(k).c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return std::nullopt;
   struct Close {
@@ -171,7 +243,35 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
   const std::size_t m = static_cast<std::size_t>(hd.m), count = static_cast<std::size_t>(hd.n) * m;
   const std::size_t bytes = static_cast<std::size_t>(st.st_size);
   if (bytes != sizeof hd + sizeof(double) * (m + count)) return std::nullopt;  // cut short, or extra data
-  // Transparent huge pages where the kernel offers them (madvise): the copy then faults once per 2 MB
+  StoredModes out;
+  out.n = hd.n, out.m = hd.m;
+  out.file = file(k);
+  // Mapped under a guard (above), checked where it lies; a file cut short meanwhile fails the check.
+  if (Guard* g = take_guard()) {
+    void* base = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (base == MAP_FAILED) {
+      g->taken.store(false);
+    } else {
+      auto map = std::make_shared<Mapping>();
+      map->base = base, map->length = bytes, map->guard = g;
+      const auto b = reinterpret_cast<std::uintptr_t>(base);
+      g->end.store(b + (bytes + g_page - 1) / g_page * g_page);
+      g->begin.store(b);
+      const double* data = reinterpret_cast<const double*>(static_cast<const char*>(base) + sizeof hd);
+      Checksum sum;  // fed as written (the lanes restart at Φ)
+      sum.add(data, m);
+      sum.add(data + m, count);
+      if (sum.value() != hd.checksum || g->damaged.load()) return std::nullopt;
+      (void)::futimens(fd, nullptr);  // used now (see below)
+      out.omega2 = Eigen::Map<const Eigen::VectorXd>(data, hd.m);
+      out.phi = data + m;
+      out.damaged = &g->damaged;
+      out.owner = std::move(map);
+      return out;
+    }
+  }
+  // Every guard taken: read into memory of the run's own. Transparent huge pages where the kernel
+  // offers them (madvise): the copy then faults once per 2 MB
   // instead of once per 4 kB page, which on a virtual machine cost more than the copy itself.
   constexpr std::size_t kHuge = std::size_t{2} << 20;
   const std::size_t words = m + count, alloc = (sizeof(double) * words + kHuge - 1) / kHuge * kHuge;
@@ -197,10 +297,8 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
   // Used now: the directory's size limit removes the least recently used files first (save), so a
   // file that every run reads is not the first to go (best effort: a read-only file keeps its time).
   (void)::futimens(fd, nullptr);
-  StoredModes out;
   out.omega2 = Eigen::Map<const Eigen::VectorXd>(omega2, hd.m);
   out.phi = omega2 + m;
-  out.n = hd.n, out.m = hd.m;
   out.owner = std::move(data);
   return out;
 }

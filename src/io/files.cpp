@@ -207,8 +207,9 @@ void prepare_output_folder(const std::string& dir, const std::vector<std::string
 }
 
 void remove_partial_outputs_on_signal() {
-  // SIGBUS too: a file the process maps that is cut short underneath (no mode file is mapped any more,
-  // catenary/mode_store.hpp; a library's mapping might be) still leaves no partial output.
+  // SIGBUS too: a file the process maps that is cut short underneath still leaves no partial output
+  // (a mode file's mapping has a guard of its own that stops the run cleanly: catenary/mode_store.hpp;
+  // it passes every other SIGBUS on to this handler).
   for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGBUS}) std::signal(sig, remove_partial_and_die);
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "inerta/error.hpp"
 
@@ -57,21 +58,83 @@ BandLdlt::BandLdlt(const Sparse& A) : n_(static_cast<int>(A.rows())) {
 
 int BandLdlt::negative() const { return static_cast<int>(std::count_if(d_.begin(), d_.end(), [](double v) { return v < 0; })); }
 
-void BandLdlt::solve(double* x) const {
-  for (int j = 0; j < n_; ++j) {
-    const double* c = l_.data() + static_cast<std::ptrdiff_t>(j) * ld_;
+namespace {
+// x ← (L D Lᵀ)⁻¹ x for a unit lower band L of half-bandwidth KD (column j at l + j (KD + 1)). The
+// band's pending values are kept in registers, and the back substitution adds the older unknowns
+// first, so that one unknown waits on the one before by a single multiply-add (the solve is the
+// shift-invert Lanczos operator's: ≈ a third of an eigenproblem).
+template <int KD>
+void ldlt_solve_kd(const double* l, const double* d, int n, double* x) {
+  constexpr int ld = KD + 1;
+  int j = 0;
+  if (n > KD + 1) {
+    double w[KD];  // x[j + 1 … j + KD], updated
+    for (int i = 0; i < KD; ++i) w[i] = x[1 + i];
+    double y = x[0];
+    for (; j + KD + 1 < n; ++j) {
+      const double* c = l + static_cast<std::ptrdiff_t>(j) * ld;
+      x[j] = y;
+      for (int i = 0; i < KD; ++i) w[i] -= c[i + 1] * y;
+      y = w[0];
+      for (int i = 0; i + 1 < KD; ++i) w[i] = w[i + 1];
+      w[KD - 1] = x[j + KD + 1];
+    }
+    x[j] = y;
+    for (int i = 0; i < KD; ++i) x[j + 1 + i] = w[i];
+  }
+  for (; j < n; ++j) {
+    const double* c = l + static_cast<std::ptrdiff_t>(j) * ld;
     const double xj = x[j];
-    const int m = std::min(kd_, n_ - 1 - j);
+    const int m = std::min(KD, n - 1 - j);
     for (int i = 1; i <= m; ++i) x[j + i] -= c[i] * xj;
   }
-  for (int j = 0; j < n_; ++j) x[j] /= d_[static_cast<std::size_t>(j)];
-  for (int j = n_ - 1; j >= 0; --j) {
-    const double* c = l_.data() + static_cast<std::ptrdiff_t>(j) * ld_;
+  for (int k = 0; k < n; ++k) x[k] /= d[k];
+  int k = n - 1;
+  for (; k >= 0 && k + KD >= n; --k) {  // the last KD unknowns: a shorter band
+    const double* c = l + static_cast<std::ptrdiff_t>(k) * ld;
+    double s = x[k];
+    for (int i = n - 1 - k; i >= 1; --i) s -= c[i] * x[k + i];
+    x[k] = s;
+  }
+  if (k < 0) return;
+  double v[KD];  // x[k + 1 … k + KD], final
+  for (int i = 0; i < KD; ++i) v[i] = x[k + 1 + i];
+  for (; k >= 0; --k) {
+    const double* c = l + static_cast<std::ptrdiff_t>(k) * ld;
+    double s = x[k];
+    for (int i = KD; i >= 2; --i) s -= c[i] * v[i - 1];
+    s -= c[1] * v[0];
+    for (int i = KD - 1; i >= 1; --i) v[i] = v[i - 1];
+    v[0] = s;
+    x[k] = s;
+  }
+}
+
+void ldlt_solve_any(const double* l, const double* d, int n, int kd, double* x) {
+  const int ld = kd + 1;
+  for (int j = 0; j < n; ++j) {
+    const double* c = l + static_cast<std::ptrdiff_t>(j) * ld;
+    const double xj = x[j];
+    const int m = std::min(kd, n - 1 - j);
+    for (int i = 1; i <= m; ++i) x[j + i] -= c[i] * xj;
+  }
+  for (int j = 0; j < n; ++j) x[j] /= d[j];
+  for (int j = n - 1; j >= 0; --j) {
+    const double* c = l + static_cast<std::ptrdiff_t>(j) * ld;
     double s = x[j];
-    const int m = std::min(kd_, n_ - 1 - j);
-    for (int i = 1; i <= m; ++i) s -= c[i] * x[j + i];
+    for (int i = std::min(kd, n - 1 - j); i >= 1; --i) s -= c[i] * x[j + i];
     x[j] = s;
   }
+}
+
+template <int... K>
+void ldlt_solve(const double* l, const double* d, int n, int kd, double* x, std::integer_sequence<int, K...>) {
+  if (!((kd == K + 1 ? (ldlt_solve_kd<K + 1>(l, d, n, x), true) : false) || ...)) ldlt_solve_any(l, d, n, kd, x);
+}
+}  // namespace
+
+void BandLdlt::solve(double* x) const {
+  ldlt_solve(l_.data(), d_.data(), n_, kd_, x, std::make_integer_sequence<int, 16>{});
 }
 
 int band_cholesky(std::vector<double>& ab, int n, int kd) {

@@ -46,7 +46,11 @@ class ShiftInvert {
   mutable Eigen::VectorXd t_;
 };
 
-constexpr int kSliceModes = 24;  // eigenvalues a slice: Lanczos work grows with the square of it
+// Eigenvalues a slice, and Lanczos vectors beyond them: reorthogonalisation grows with the square of
+// the basis, and smaller slices converge more slowly; 18 and nev + 20 were the fastest measured on
+// the bundled line's windows (12…32, docs/benchmarks.md "The FE line's first and stored runs").
+constexpr int kSliceModes = 18;
+constexpr int kExtraVectors = 20;
 
 }  // namespace
 
@@ -96,7 +100,7 @@ Modes lowest_modes(const Sparse& K, const Sparse& M, double cutoff_hz) {
       ShiftInvert op(K, M, Lm);
       // The `want` eigenvalues nearest σ are those of [lo, hi); ask for a few more, keep those inside.
       const int nev = std::min(n - 2, want + 2);
-      const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+      const int ncv = std::min(n, nev + kExtraVectors);
       Spectra::SymEigsShiftSolver<ShiftInvert> es(op, nev, ncv, sigma);
       es.init();
       es.compute(Spectra::SortRule::LargestMagn, 1000, 1e-10, Spectra::SortRule::SmallestAlge);

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/fe_modal.hpp"
@@ -424,24 +426,86 @@ struct SmallStore {
 };
 }  // namespace
 
-TEST(FeModalStore, AFileCutShortAfterLoadingDoesNotTouchTheRun) {
-  // The modes read are the run's own memory: cutting the file to nothing (and removing it) after
-  // loading leaves every value readable and unchanged (a mapped file would kill the process with
-  // SIGBUS here).
+TEST(FeModalStore, AFileCutShortUnderItsMappingDoesNotKillTheProcess) {
+  // The modes are mapped (catenary/mode_store.hpp): cutting the file to nothing (and removing it)
+  // after loading would end the process with SIGBUS at the next read; under the store's guard the
+  // pages gone read as zeros and the mapping is marked damaged (a run then stops: next test).
   SmallStore s("cut");
   const catenary::ModeStore store(s.dir);
   ASSERT_TRUE(store.save(s.K, s.M, 50.0, s.modes));
   const std::filesystem::path f = store.file(catenary::ModeStore::key(s.K, s.M, 50.0));
   auto loaded = store.load(s.K, s.M, 50.0);
   ASSERT_TRUE(loaded);
+  ASSERT_NE(loaded->damaged, nullptr);
+  EXPECT_EQ(loaded->damaged->load(), 0);
+  EXPECT_EQ(loaded->phi[5], s.modes.phi(0, 5));
+  EXPECT_EQ(loaded->file, f);
   std::filesystem::resize_file(f, 0);
   std::filesystem::remove(f);
-  ASSERT_EQ(loaded->n, s.modes.phi.rows());
-  ASSERT_EQ(loaded->m, s.modes.phi.cols());
-  for (Eigen::Index i = 0; i < loaded->n; ++i)
-    for (Eigen::Index j = 0; j < loaded->m; ++j) ASSERT_EQ(loaded->phi[i * loaded->m + j], s.modes.phi(i, j));
-  EXPECT_EQ(loaded->omega2, s.modes.omega2);
-  EXPECT_FALSE(store.load(s.K, s.M, 50.0));  // gone: solved again
+  double sum = 0;
+  for (Eigen::Index i = 0; i < loaded->n * loaded->m; ++i) sum += std::abs(loaded->phi[i]);
+  EXPECT_EQ(sum, 0.0);
+  EXPECT_EQ(loaded->damaged->load(), 1);
+  EXPECT_EQ(loaded->omega2, s.modes.omega2);  // a copy of the run's own
+  EXPECT_FALSE(store.load(s.K, s.M, 50.0));   // gone: solved again
+}
+
+TEST(FeModalStore, ARunWhoseModeFileIsCutShortStopsNamingTheFile) {
+  // A line reading its windows' modes from the store; its files cut short before it runs: the
+  // modal solve stops at once with an error naming a file, rather than step with zero modes.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("inerta-mode-cut-{}", ::getpid());
+  fs::remove_all(dir);
+  FeCatenaryData d = line_data(10, 1.0);
+  d.modal_cutoff = 20;
+  d.solver = FeCatenaryData::Solver::Modal;
+  const auto line = std::make_shared<const FeLine>(d);
+  catenary::FeModalLine(line, catenary::ModeStore(dir)).prepare(6);  // its destructor waits for the writes
+  const auto reader = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
+  reader->prepare(6);
+  ASSERT_EQ(reader->loaded(), 3);
+  for (const auto& e : fs::directory_iterator(dir)) fs::resize_file(e.path(), 0);
+  auto s = catenary::make_modal_solver(reader, 0.0);
+  try {
+    s->start({2.5 * d.span}, {120.0}, 0.0);
+    std::vector<double> forces;
+    for (int i = 0; i < 10; ++i) s->step({catenary::FeLoad{2.5 * d.span + 0.1 * i, false, 120.0}}, forces);
+    ADD_FAILURE() << "no error";
+  } catch (const inerta::NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("was cut short while this run read it"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+TEST(FeModalStore, BeyondItsGuardsAFileIsReadIntoTheRunsOwnMemory) {
+  // Every guard in use (kGuards mappings held): the next load reads the file into memory of the
+  // run's own, which a file cut short afterwards does not touch.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / fmt::format("inerta-mode-guards-{}", ::getpid());
+  fs::remove_all(dir);
+  Eigen::SparseMatrix<double> K(4, 4), M(4, 4);
+  for (int i = 0; i < 4; ++i) K.insert(i, i) = 1.0 + i, M.insert(i, i) = 1.0;
+  catenary::Modes modes;
+  modes.omega2 = Eigen::Vector2d(1.0, 2.0);
+  modes.phi = Eigen::MatrixXd::Constant(4, 2, 0.25);
+  const catenary::ModeStore store(dir);
+  ASSERT_TRUE(store.save(K, M, 5.0, modes));
+  std::vector<catenary::StoredModes> held;
+  std::optional<catenary::StoredModes> copy;
+  for (int i = 0; i <= catenary::ModeStore::kGuards && !copy; ++i) {
+    auto l = store.load(K, M, 5.0);
+    ASSERT_TRUE(l);
+    if (l->damaged) held.push_back(std::move(*l));
+    else copy = std::move(l);
+  }
+  ASSERT_TRUE(copy) << "every load mapped";
+  EXPECT_LE(held.size(), static_cast<std::size_t>(catenary::ModeStore::kGuards));
+  fs::resize_file(store.file(catenary::ModeStore::key(K, M, 5.0)), 0);
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(copy->phi[i], 0.25);
+  EXPECT_EQ(copy->omega2, modes.omega2);
+  held.clear();
+  fs::remove_all(dir);
 }
 
 TEST(FeModalStore, TheSizeLimitRemovesTheLeastRecentlyUsedFile) {

@@ -67,4 +67,26 @@ TEST(Band, ASolveFromTheFirstNonzeroGivesTheSameNumbers) {
   }
 }
 
+TEST(Band, LdltSolvesAnIndefiniteBandMatrixAndCountsItsNegativeEigenvalues) {
+  // A − σI with σ inside the spectrum (the shift-invert operator of the eigensolver): the solve
+  // against a dense one, the count of negative pivots against the dense eigenvalues; half-bandwidths
+  // with a solve of their own (1…16), beyond them (20), and matrices smaller than the band's reach.
+  for (const int kd : {1, 3, 7, 11, 16, 20})
+    for (const int n : {1, 2, kd, kd + 2, 2 * kd + 3, 97}) {
+      const Eigen::SparseMatrix<double> A0 = spd_band(n, kd, static_cast<unsigned>(7 * kd + n));
+      const Eigen::MatrixXd dense(A0);
+      const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(dense).eigenvalues();
+      const double sigma = n > 1 ? 0.5 * (ev[n / 2] + ev[n / 2 - 1]) : ev[0] - 1;
+      Eigen::SparseMatrix<double> I(n, n);
+      I.setIdentity();
+      const Eigen::SparseMatrix<double> A = A0 - sigma * I;
+      const BandLdlt f(A);
+      EXPECT_EQ(f.negative(), n / 2) << kd << " " << n;
+      Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1, 2), x = b;
+      f.solve(x.data());
+      const Eigen::VectorXd ref = Eigen::MatrixXd(A).fullPivLu().solve(b);
+      EXPECT_LT((x - ref).lpNorm<Eigen::Infinity>(), 1e-9 * std::max(1.0, ref.lpNorm<Eigen::Infinity>())) << kd << " " << n;
+    }
+}
+
 }  // namespace test_numerics_band

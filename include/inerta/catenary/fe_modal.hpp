@@ -57,6 +57,14 @@ struct FeWindowModes {
   Eigen::Map<const RowMatrix> phi{nullptr, 0, 0};
   std::shared_ptr<const void> phi_owner;
   void set_phi(std::shared_ptr<const void> owner, const double* data, Eigen::Index n, Eigen::Index m);
+  /// A mapped Φ's damage flag and file (catenary/mode_store.hpp): check_intact() throws a
+  /// NumericalError naming the file (and the simulated time t) once the file was cut short under it.
+  const std::atomic<int>* phi_damaged = nullptr;
+  std::filesystem::path phi_file;
+  void check_intact(double t) const {
+    if (phi_damaged && phi_damaged->load(std::memory_order_relaxed)) throw_damaged(t);
+  }
+  [[noreturn]] void throw_damaged(double t) const;
   int kd = 0;                    ///< half bandwidth of K
   std::vector<double> cholesky;  ///< K = L Lᵀ, LAPACK lower band storage
   BandInverse band;              ///< K⁻¹ within the band

@@ -8,11 +8,15 @@
 // data, so a file that does not match (another line, a truncated or damaged file) is ignored and the
 // modes are computed. Files are written under a temporary name and renamed (processes sharing the
 // directory never read a partial file). The loaded modes are the computed ones bit for bit, so
-// results do not depend on whether the store was used. A file is read with read() into memory of the
-// run's own (not mapped): a file cut short, rewritten or removed while a run uses its modes cannot
-// stop the run; only a regular file is read, opened without blocking (a FIFO named like a mode file
-// is ignored, never waited on).
+// results do not depend on whether the store was used. A file is mapped, not copied (a run reads the
+// page cache's pages: no zeroing or copying of 40 MB a window), under a SIGBUS guard: a file cut short
+// while a run maps it cannot kill the process — the pages gone read as zeros, the mapping is marked
+// damaged (`StoredModes::damaged`) and the modal solve stops with an error naming the file at its
+// next step, so no result is computed from them. Beyond kGuards mappings at once a file is read
+// into memory of the run's own. Only a regular file is read, opened without blocking (a FIFO named
+// like a mode file is ignored, never waited on).
 #include <Eigen/Sparse>
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -26,16 +30,20 @@ namespace inerta::catenary {
 
 using numerics::Modes;
 
-/// Modes read from the store: ω² and Φ (n × m, row-major) in a buffer kept alive by `owner`.
+/// Modes read from the store: ω² and Φ (n × m, row-major) in a mapping or buffer kept alive by
+/// `owner`; `damaged` (a mapping's) becomes non-zero once the file under it was cut short.
 struct StoredModes {
   Eigen::VectorXd omega2;
   std::shared_ptr<const void> owner;
   const double* phi = nullptr;
   Eigen::Index n = 0, m = 0;
+  const std::atomic<int>* damaged = nullptr;
+  std::filesystem::path file;
 };
 
 class ModeStore {
  public:
+  static constexpr int kGuards = 4096;  ///< mode files mapped at once in a process (then read into memory)
   explicit ModeStore(std::filesystem::path directory, std::uintmax_t max_bytes = std::uintmax_t{4} << 30);
   /// From the environment: INERTA_CACHE=off, 0, no or empty → none; INERTA_CACHE=DIR (absolute;
   /// a relative one, or "~/x", is a ModelError) → DIR; unset → $XDG_CACHE_HOME/inerta/modes, else
