@@ -463,6 +463,7 @@ EXCLUDED = {
     "catenary::ModeStore": "the on-disk store of decompositions, chosen by the environment (INERTA_CACHE), "
                            "used by every FeCatenary the module makes",
     "numerics::lowest_modes": "numerical kernel of the modal solve (Lanczos spectrum slicing), tested in C++",
+    "numerics::lowest_modes_mirrored": "numerical kernel of the modal solve (a mirror-symmetric window in two halves), tested in C++",
     "catenary::FeState": "state of FeIntegrator (see there)",
     "io::json_rows": "nlohmann-json plumbing of the C++ writers; the JSON documents are bound as dicts "
                      "(linear_model_json, study_results_json, ModalAnalysis.to_json)",

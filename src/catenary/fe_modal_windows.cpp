@@ -130,6 +130,21 @@ bool same(const Sparse& a, const Sparse& b) {
 // mass; the stitch wires carry the end spans' influence further in), share their modes — the dynamics of
 // a window are then those of its twin, as an irregular line's are those of the designed droppers
 // (docs/catenary-fe.md "Modal solver"; measured by check-reduction).
+// P A Pᵀ for the signed permutation of a mirror (row i of the result is row map[i] of A).
+Sparse mirrored(const Sparse& A, const std::vector<std::pair<int, double>>& map) {
+  std::vector<int> inv(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) inv[static_cast<std::size_t>(map[i].first)] = static_cast<int>(i);
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Sparse::InnerIterator it(A, j); it; ++it) {
+      const int r = inv[static_cast<std::size_t>(it.row())], c = inv[static_cast<std::size_t>(j)];
+      t.emplace_back(r, c, map[static_cast<std::size_t>(r)].second * map[static_cast<std::size_t>(c)].second * it.value());
+    }
+  Sparse B(A.rows(), A.cols());
+  B.setFromTriplets(t.begin(), t.end());
+  return B;
+}
+
 constexpr double kShare = 3e-3;
 bool near_equal(const Sparse& a, const Sparse& b) {
   if (same(a, b)) return true;
@@ -170,9 +185,17 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
   } else {
     if (!make) ++solved_;
     Modes modes;
-    {
-      const numerics::PhaseTimer t(make ? "window modes: mirrored from another" : "window modes: eigenproblem");
-      modes = make ? make() : lowest_modes(K, M, cutoff);
+    if (make) {
+      const numerics::PhaseTimer t("window modes: mirrored from another");
+      modes = make();
+    } else if (auto map = mirror(w, w); !map.empty() && same(mirrored(K, map), K) && same(mirrored(M, map), M)) {
+      // A window of identical spans is its own mirror image: its symmetric and antisymmetric modes
+      // apart, half the work (numerics/generalised_eigen.hpp).
+      const numerics::PhaseTimer t("window modes: eigenproblem (mirror-symmetric, two halves)");
+      modes = numerics::lowest_modes_mirrored(K, M, cutoff, map);
+    } else {
+      const numerics::PhaseTimer t("window modes: eigenproblem");
+      modes = lowest_modes(K, M, cutoff);
     }
     md->omega2 = std::move(modes.omega2);
     auto phi = std::make_shared<const FeWindowModes::RowMatrix>(std::move(modes.phi));
@@ -255,22 +278,6 @@ std::vector<std::pair<int, double>> FeModalLine::mirror(const FeWindow& a, const
   return map;
 }
 
-namespace {
-// P A Pᵀ for the signed permutation of a mirror (row i of the result is row map[i] of A).
-Sparse mirrored(const Sparse& A, const std::vector<std::pair<int, double>>& map) {
-  std::vector<int> inv(map.size());
-  for (std::size_t i = 0; i < map.size(); ++i) inv[static_cast<std::size_t>(map[i].first)] = static_cast<int>(i);
-  std::vector<Eigen::Triplet<double>> t;
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (Sparse::InnerIterator it(A, j); it; ++it) {
-      const int r = inv[static_cast<std::size_t>(it.row())], c = inv[static_cast<std::size_t>(j)];
-      t.emplace_back(r, c, map[static_cast<std::size_t>(r)].second * map[static_cast<std::size_t>(c)].second * it.value());
-    }
-  Sparse B(A.rows(), A.cols());
-  B.setFromTriplets(t.begin(), t.end());
-  return B;
-}
-}  // namespace
 
 void FeModalLine::prepare(int spans) const {
   const numerics::PhaseTimer timer("windows: prepare every window's modes");

@@ -138,4 +138,58 @@ Modes lowest_modes(const Sparse& K, const Sparse& M, double cutoff_hz) {
   return out;
 }
 
+Modes lowest_modes_mirrored(const Sparse& K, const Sparse& M, double cutoff_hz, const SignedPermutation& P) {
+  const int n = static_cast<int>(K.rows());
+  if (static_cast<int>(P.size()) != n)
+    throw InvalidArgument("lowest_modes_mirrored", "P", fmt::format("{} entries for {} unknowns", P.size(), n));
+  for (int i = 0; i < n; ++i) {
+    const auto [j, s] = P[static_cast<std::size_t>(i)];
+    if (j < 0 || j >= n || P[static_cast<std::size_t>(j)].first != i || std::abs(s) != 1 || s * P[static_cast<std::size_t>(j)].second != 1)
+      throw InvalidArgument("lowest_modes_mirrored", "P", fmt::format("not a signed involution at {}", i));
+  }
+  // Orthonormal bases of the two subspaces, a column per orbit {i, j = map_i} (i <= j) in the order
+  // of i, so that the projected matrices keep the band: (e_j ± s_i e_i)/√2, or e_i if i = j.
+  std::vector<Eigen::Triplet<double>> tp, tm;
+  int np = 0, nm = 0;
+  const double h = std::sqrt(0.5);
+  for (int i = 0; i < n; ++i) {
+    const auto [j, s] = P[static_cast<std::size_t>(i)];
+    if (j < i) continue;
+    if (j == i) {
+      if (s > 0) tp.emplace_back(i, np++, 1.0);
+      else tm.emplace_back(i, nm++, 1.0);
+      continue;
+    }
+    tp.emplace_back(j, np, h), tp.emplace_back(i, np++, s * h);
+    tm.emplace_back(j, nm, h), tm.emplace_back(i, nm++, -s * h);
+  }
+  Sparse Bp(n, np), Bm(n, nm);
+  Bp.setFromTriplets(tp.begin(), tp.end());
+  Bm.setFromTriplets(tm.begin(), tm.end());
+  Modes halves[2];
+  const Sparse* B[2] = {&Bp, &Bm};
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(0, 2, [&](int k) {
+      const Sparse& b = *B[k];
+      if (b.cols() == 0) return;
+      const Sparse Kk = Sparse(b.transpose() * K * b).pruned(), Mk = Sparse(b.transpose() * M * b).pruned();
+      halves[k] = lowest_modes(Kk, Mk, cutoff_hz);
+    });
+  });
+  // Merged in ascending order (a tie: the symmetric mode first), φ = B y.
+  const Eigen::Index m0 = halves[0].omega2.size(), m1 = halves[1].omega2.size();
+  Modes out;
+  out.omega2.resize(m0 + m1);
+  out.phi.resize(n, m0 + m1);
+  Eigen::MatrixXd full[2];
+  for (int k = 0; k < 2; ++k)
+    if (halves[k].omega2.size() > 0) full[k] = *B[k] * Eigen::MatrixXd(halves[k].phi);
+  for (Eigen::Index a = 0, b = 0, c = 0; c < m0 + m1; ++c) {
+    const bool first = b >= m1 || (a < m0 && halves[0].omega2[a] <= halves[1].omega2[b]);
+    out.omega2[c] = first ? halves[0].omega2[a] : halves[1].omega2[b];
+    out.phi.col(c) = first ? full[0].col(a++) : full[1].col(b++);
+  }
+  return out;
+}
+
 }  // namespace inerta::numerics

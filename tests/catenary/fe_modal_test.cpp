@@ -78,6 +78,45 @@ TEST(FeModes, SlicedLanczosAgreesWithADenseSolverAndIsMassOrthonormal) {
   EXPECT_LT((W - Eigen::MatrixXd(m.omega2.asDiagonal())).cwiseAbs().maxCoeff(), 1e-7 * lmax);
 }
 
+TEST(FeModes, AMirrorSymmetricProblemSolvedInItsTwoHalvesHasTheSameModes) {
+  // A line of three identical spans (pinned at both ends) is its own mirror image: x → L − x, w → w,
+  // θ → −θ. Its modes below 60 Hz from the symmetric and antisymmetric halves are the whole
+  // problem's: the same eigenvalues, each pair an eigenpair of (K, M) to 1e-8, M-orthonormal, and
+  // each mode symmetric or antisymmetric.
+  const FeLine line(line_data(3, 0.5));
+  const int n = line.n_dofs();
+  numerics::SignedPermutation P(static_cast<std::size_t>(n), {-1, 0.0});
+  for (int node = 0; node < line.n_nodes(); ++node)
+    for (int wire = 0; wire < FeLine::kWires; ++wire)
+      for (int c = 0; c < 2; ++c)
+        if (const int g = line.dof(wire, node, c); g >= 0)
+          P[static_cast<std::size_t>(g)] = {line.dof(wire, line.n_nodes() - 1 - node, c), c == 1 ? -1.0 : 1.0};
+  const catenary::Modes whole = catenary::lowest_modes(line.K(), line.M(), 60.0);
+  const catenary::Modes halves = numerics::lowest_modes_mirrored(line.K(), line.M(), 60.0, P);
+  ASSERT_EQ(halves.omega2.size(), whole.omega2.size());
+  ASSERT_GT(whole.omega2.size(), 50);
+  const Eigen::MatrixXd K(line.K()), M(line.M());
+  int symmetric = 0;
+  for (Eigen::Index i = 0; i < whole.omega2.size(); ++i) {
+    EXPECT_NEAR(halves.omega2[i], whole.omega2[i], 1e-9 * whole.omega2[i]) << i;
+    const Eigen::VectorXd phi = halves.phi.col(i), r = K * phi - halves.omega2[i] * (M * phi);
+    EXPECT_LT(r.norm(), 1e-8 * halves.omega2[i] * (M * phi).norm()) << i;
+    Eigen::VectorXd mirrored(n);
+    for (int g = 0; g < n; ++g) mirrored[g] = P[static_cast<std::size_t>(g)].second * phi[P[static_cast<std::size_t>(g)].first];
+    const double s = mirrored.dot(phi) > 0 ? 1.0 : -1.0;
+    EXPECT_LT((mirrored - s * phi).cwiseAbs().maxCoeff(), 1e-12 * phi.cwiseAbs().maxCoeff()) << i;
+    symmetric += s > 0;
+  }
+  EXPECT_GT(symmetric, 10);
+  EXPECT_LT(symmetric, whole.omega2.size() - 10);
+  const Eigen::MatrixXd I = halves.phi.transpose() * M * halves.phi;
+  EXPECT_LT((I - Eigen::MatrixXd::Identity(I.rows(), I.cols())).cwiseAbs().maxCoeff(), 1e-8);
+  // Not an involution (two entries mapped to one): refused.
+  numerics::SignedPermutation bad = P;
+  bad[0] = bad[1];
+  EXPECT_THROW(numerics::lowest_modes_mirrored(line.K(), line.M(), 60.0, bad), inerta::InvalidArgument);
+}
+
 TEST(FeModes, TensionedStringFrequenciesAreNcOver2L) {
   // A string pinned at both ends (EI = 0, 160 elements, 320 unknowns: the sliced path): the modes
   // below 60 Hz are n c / 2ℓ within 0.1 %.

@@ -7,6 +7,8 @@
 // A = L⁻¹ K L⁻ᵀ, (A − σI)⁻¹ = Lᵀ (K − σM)⁻¹ L, φ = L⁻ᵀ y (M-orthonormal). Small problems (n <= 200): dense.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
+#include <utility>
+#include <vector>
 
 namespace inerta::numerics {
 
@@ -18,6 +20,17 @@ struct Modes {
 };
 /// NumericalError if the slices do not account for every eigenvalue the inertia counts.
 Modes lowest_modes(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz);
+
+/// A signed permutation P, (P x)_i = sign_i · x_{map_i}: the entry i is {map_i, sign_i}.
+using SignedPermutation = std::vector<std::pair<int, double>>;
+
+/// The same modes for a problem with a mirror symmetry: P K Pᵀ = K, P M Pᵀ = M, P² = I (a window of
+/// identical spans reversed). The modes are those of the symmetric (Pφ = φ) and antisymmetric
+/// (Pφ = −φ) subspaces, each about half the unknowns and half the modes — together half the work
+/// of one problem. The problem solved is the symmetric part of (K, M), (A + P A Pᵀ)/2.
+/// InvalidArgument if P is not an involution of K's size.
+Modes lowest_modes_mirrored(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double cutoff_hz,
+                            const SignedPermutation& P);
 
 /// Eigenvalues of (K, M) below λ (Sylvester's law of inertia: negative pivots of K − λM = LDLᵀ).
 int eigenvalues_below(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double lambda);
