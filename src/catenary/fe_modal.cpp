@@ -299,6 +299,7 @@ class ModalSolver final : public FeLineSolver {
     double w = 0;
     for (int a = 0; a < 4; ++a)
       if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) w += sh.N[a] * win_->modes->phi.row(l).dot(q_);
+    win_->modes->check_intact(t_);
     return w;
   }
   double height(double x) const override { return L_.static_height(x) + uplift(x); }
@@ -312,6 +313,7 @@ class ModalSolver final : public FeLineSolver {
         w_dot += sh.N[a] * win_->modes->phi.row(l).dot(qd_);
         w_x += sh.dN[a] * win_->modes->phi.row(l).dot(q_);
       }
+    win_->modes->check_intact(t_);
     return w_dot + speed * (L_.static_slope(x) + w_x);
   }
   // ½ q̇ᵀq̇ + ½ qᵀΩ²q, the residual springs ½ Σ F_k ρ_k of the loads, minus the slack droppers'.

@@ -30,10 +30,10 @@ void FeWindowModes::set_phi(std::shared_ptr<const void> owner, const double* dat
 
 void FeWindowModes::throw_damaged(double t) const {
   throw NumericalError(fmt::format(
-      "finite-element catenary (modal): t = {:.6g} s: the mode file {} was cut short while this run read it (by "
+      "finite-element catenary (modal): {}the mode file {} was cut short while this run read it (by "
       "another program?); its modes are gone, so the run stops rather than give results from them. Run again: the "
       "file no longer matches and the modes are solved anew",
-      t, phi_file.string()));
+      std::isfinite(t) ? fmt::format("t = {:.6g} s: ", t) : std::string(), phi_file.string()));
 }
 
 int FeWindow::local(int global) const {
@@ -246,8 +246,15 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
   return md;
 }
 
+void FeModalLine::drop_damaged() const {
+  auto damaged = [](const std::shared_ptr<const FeWindowModes>& m) { return m->phi_damaged && m->phi_damaged->load(); };
+  std::erase_if(shapes_, damaged);
+  std::erase_if(windows_, [&](const auto& w) { return damaged(w.second->modes); });
+}
+
 std::shared_ptr<const FeWindow> FeModalLine::window(int first_span, int spans) const {
   std::lock_guard<std::mutex> lock(mutex_);
+  drop_damaged();
   if (auto it = windows_.find({first_span, spans}); it != windows_.end()) return it->second;
   Sparse K, M;
   std::shared_ptr<FeWindow> w = structure(first_span, spans, K, M);
@@ -282,6 +289,7 @@ std::vector<std::pair<int, double>> FeModalLine::mirror(const FeWindow& a, const
 void FeModalLine::prepare(int spans) const {
   const numerics::PhaseTimer timer("windows: prepare every window's modes");
   std::lock_guard<std::mutex> lock(mutex_);
+  drop_damaged();
   struct New {
     std::shared_ptr<FeWindow> w;
     Sparse K, M;
@@ -327,6 +335,7 @@ void FeModalLine::prepare(int spans) const {
         m.phi.resize(src.phi.rows(), src.phi.cols());
         for (std::size_t i = 0; i < maps[t].size(); ++i)
           m.phi.row(static_cast<Eigen::Index>(i)) = maps[t][i].second * src.phi.row(maps[t][i].first);
+        src.check_intact(std::nan(""));  // zeros from a file cut short are never stored as another shape's modes
         return m;
       });
     });

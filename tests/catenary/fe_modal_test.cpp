@@ -514,6 +514,22 @@ TEST(FeModalStore, ARunWhoseModeFileIsCutShortStopsNamingTheFile) {
     EXPECT_NE(std::string(e.what()).find("was cut short while this run read it"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
   }
+  // The same line (as a Python session keeps it) runs again: the damaged shapes are dropped and
+  // solved anew, and the run gives the numbers of a line that never used the store.
+  auto history = [&](const std::shared_ptr<const catenary::FeModalLine>& ml) {
+    auto r = catenary::make_modal_solver(ml, 0.0);
+    r->start({2.5 * d.span}, {120.0}, 0.0);
+    std::vector<double> forces, out;
+    for (int i = 0; i < 200; ++i) {
+      r->step({catenary::FeLoad{2.5 * d.span + 0.1 * i, false, 120.0}}, forces);
+      out.push_back(r->uplift(2.5 * d.span + 0.1 * i));
+    }
+    return out;
+  };
+  const auto fresh = std::make_shared<catenary::FeModalLine>(line);
+  EXPECT_EQ(history(reader), history(fresh));
+  EXPECT_GT(reader->decompositions(), 0) << "solved anew";
+  EXPECT_EQ(reader->loaded(), 3) << "the files cut short are not read again";
   fs::remove_all(dir);
 }
 

@@ -58,7 +58,7 @@ struct FeWindowModes {
   std::shared_ptr<const void> phi_owner;
   void set_phi(std::shared_ptr<const void> owner, const double* data, Eigen::Index n, Eigen::Index m);
   /// A mapped Φ's damage flag and file (catenary/mode_store.hpp): check_intact() throws a
-  /// NumericalError naming the file (and the simulated time t) once the file was cut short under it.
+  /// NumericalError naming the file (and the simulated time t, if finite) once the file was cut short under it.
   const std::atomic<int>* phi_damaged = nullptr;
   std::filesystem::path phi_file;
   void check_intact(double t) const {
@@ -134,6 +134,9 @@ class FeModalLine {
                                                  Eigen::SparseMatrix<double> M,
                                                  const std::function<Modes()>& make = {}) const;
   std::vector<std::pair<int, double>> mirror(const FeWindow& a, const FeWindow& b) const;
+  /// Forgets the windows and shapes whose mapped mode file was cut short (their runs stopped), so
+  /// that the next run solves them anew (mutex_ held).
+  void drop_damaged() const;
   std::shared_ptr<const FeWindowModes> find_shape(const Eigen::SparseMatrix<double>& K,
                                                   const Eigen::SparseMatrix<double>& M) const;
 };
