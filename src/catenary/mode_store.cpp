@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -174,6 +175,29 @@ Guard* take_guard() {
   return nullptr;
 }
 
+// A file on a network filesystem is not mapped: another machine sharing the store (Dask workers)
+// can remove it, and pages the kernel drops could then not be read again; it is read into memory.
+bool local_filesystem(int fd) {
+  struct statfs fs {};
+  if (::fstatfs(fd, &fs) != 0) return false;
+  switch (static_cast<unsigned long>(fs.f_type)) {
+    case 0x6969:      // NFS
+    case 0x517B:      // SMB
+    case 0xFF534D42:  // CIFS
+    case 0xFE534D42:  // SMB2
+    case 0x65735546:  // FUSE (sshfs, …)
+    case 0x00C36400:  // Ceph
+    case 0x0BD00BD0:  // Lustre
+    case 0x47504653:  // GPFS
+    case 0x01021997:  // 9P
+    case 0x5346414F:  // AFS
+    case 0x73757245:  // Coda
+      return false;
+    default:
+      return true;
+  }
+}
+
 // A mapping of a mode file under its guard; unmapped (and the guard freed) with the last owner.
 struct Mapping {
   void* base = nullptr;
@@ -249,7 +273,7 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
   out.n = hd.n, out.m = hd.m;
   out.file = file(k);
   // Mapped under a guard (above), checked where it lies; a file cut short meanwhile fails the check.
-  if (Guard* g = take_guard()) {
+  if (Guard* g = local_filesystem(fd) ? take_guard() : nullptr) {
     void* base = ::mmap(nullptr, bytes, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
     if (base == MAP_FAILED) {
       g->taken.store(false);

@@ -12,8 +12,9 @@
 // page cache's pages: no zeroing or copying of 40 MB a window), under a SIGBUS guard: a file cut short
 // while a run maps it cannot kill the process — the pages gone read as zeros, the mapping is marked
 // damaged (`StoredModes::damaged`) and the modal solve stops with an error naming the file at its
-// next step, so no result is computed from them. Beyond kGuards mappings at once a file is read
-// into memory of the run's own. Only a regular file is read, opened without blocking (a FIFO named
+// next step, so no result is computed from them. Beyond kGuards mappings at once, or on a network
+// filesystem (NFS, SMB, FUSE, …: another machine may remove the file), a file is read into memory of
+// the run's own. Only a regular file is read, opened without blocking (a FIFO named
 // like a mode file is ignored, never waited on).
 #include <Eigen/Sparse>
 #include <atomic>
