@@ -44,6 +44,11 @@ def main():
     ap.add_argument("--split", action="store_true", help="print the phases of a first and a stored run")
     a = ap.parse_args()
     clis = [os.path.abspath(c) for c in (a.cli or [os.path.join(ROOT, "build", "inerta")])]
+    if a.repeat < 1:
+        ap.error(f"--repeat {a.repeat}: expected a whole number of runs >= 1")
+    for c in clis:
+        if not (os.path.isfile(c) and os.access(c, os.X_OK)):
+            ap.error(f"--cli {c}: not an executable file (build it with `make build`)")
     work = tempfile.mkdtemp(prefix="inerta-fe-runs-")
     outdir = os.path.join(work, "out")
     os.makedirs(outdir)

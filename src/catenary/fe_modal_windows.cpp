@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <sys/stat.h>
 
 #include "inerta/catenary/fe_modal.hpp"
 #include "inerta/error.hpp"
@@ -34,6 +35,14 @@ void FeWindowModes::throw_damaged(double t) const {
       "another program?); its modes are gone, so the run stops rather than give results from them. Run again: the "
       "file no longer matches and the modes are solved anew",
       std::isfinite(t) ? fmt::format("t = {:.6g} s: ", t) : std::string(), phi_file.string()));
+}
+
+bool FeWindowModes::cut_short() const {
+  if (!phi_damaged) return false;
+  if (phi_damaged->load()) return true;
+  struct stat st {};
+  return ::stat(phi_file.c_str(), &st) == 0 && static_cast<std::uint64_t>(st.st_dev) == phi_device &&
+         static_cast<std::uint64_t>(st.st_ino) == phi_inode && static_cast<std::uint64_t>(st.st_size) < phi_bytes;
 }
 
 int FeWindow::local(int global) const {
@@ -182,6 +191,7 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
     md->omega2 = std::move(stored->omega2);
     md->set_phi(std::move(stored->owner), stored->phi, stored->n, stored->m);
     md->phi_damaged = stored->damaged, md->phi_file = std::move(stored->file);
+    md->phi_device = stored->file_device, md->phi_inode = stored->file_inode, md->phi_bytes = stored->file_bytes;
   } else {
     if (!make) ++solved_;
     Modes modes;
@@ -247,7 +257,7 @@ std::shared_ptr<const FeWindowModes> FeModalLine::decompose(const FeWindow& w, S
 }
 
 void FeModalLine::drop_damaged() const {
-  auto damaged = [](const std::shared_ptr<const FeWindowModes>& m) { return m->phi_damaged && m->phi_damaged->load(); };
+  auto damaged = [](const std::shared_ptr<const FeWindowModes>& m) { return m->cut_short(); };
   std::erase_if(shapes_, damaged);
   std::erase_if(windows_, [&](const auto& w) { return damaged(w.second->modes); });
 }

@@ -292,6 +292,8 @@ std::optional<StoredModes> ModeStore::load(const Eigen::SparseMatrix<double>& K,
       out.omega2 = Eigen::Map<const Eigen::VectorXd>(data, hd.m);
       out.phi = data + m;
       out.damaged = &g->damaged;
+      out.file_device = static_cast<std::uint64_t>(st.st_dev), out.file_inode = static_cast<std::uint64_t>(st.st_ino);
+      out.file_bytes = bytes;
       out.owner = std::move(map);
       return out;
     }

@@ -371,19 +371,50 @@ TEST(FeModal, AMovingWindowStaysWithinTheMeasuredErrorOfTheDirectSolve) {
     EXPECT_NEAR(b.support_uplift[k], a.support_uplift[k], 0.05 * a.support_uplift[k]) << "support " << k;
 }
 
+namespace {
+// A 10-span line solved by modes below 20 Hz, with a mode store in a fresh directory (removed at the end).
+struct StoredLine {
+  std::filesystem::path dir;
+  FeCatenaryData d;
+  std::shared_ptr<const FeLine> line;
+  explicit StoredLine(const char* name)
+      : dir(std::filesystem::temp_directory_path() / fmt::format("inerta-mode-{}-{}", name, ::getpid())),
+        d(line_data(10, 1.0)) {
+    std::filesystem::remove_all(dir);
+    d.modal_cutoff = 20;
+    d.solver = FeCatenaryData::Solver::Modal;
+    line = std::make_shared<const FeLine>(d);
+  }
+  ~StoredLine() { std::filesystem::remove_all(dir); }
+  std::shared_ptr<catenary::FeModalLine> modal() const { return std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir)); }
+};
+
+// A run's history on a modal line: the uplift under a force of 120 N ± 30 N moving at 70 m/s, 400 steps.
+std::vector<double> uplift_history(const std::shared_ptr<const catenary::FeModalLine>& ml, double span) {
+  auto s = catenary::make_modal_solver(ml, 0.0);
+  const double x0 = 2.5 * span;
+  s->start({x0}, {120.0}, 0.0);
+  std::vector<double> out, forces;
+  for (int i = 0; i < 400; ++i) {
+    const double x = x0 + 70.0 * s->time();
+    s->step({catenary::FeLoad{x, false, 120.0 + 30 * std::sin(40 * s->time())}}, forces);
+    out.push_back(s->uplift(x));
+  }
+  return out;
+}
+}  // namespace
+
 TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   // A store in a fresh directory: the first line solves its two eigenproblems and writes them with
   // the mirrored last shape, a second line of the same data reads all three and solves none, and a run on it gives the same history
   // to the last bit. A damaged file (one byte changed, or cut short) and a file of another cut-off
   // are not read: the modes are solved again.
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / fmt::format("inerta-mode-store-{}", ::getpid());
-  fs::remove_all(dir);
-  FeCatenaryData d = line_data(10, 1.0);
-  d.modal_cutoff = 20;
-  d.solver = FeCatenaryData::Solver::Modal;
-  const auto line = std::make_shared<const FeLine>(d);
-  const auto first = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
+  const StoredLine sl("store");
+  const fs::path& dir = sl.dir;
+  const FeCatenaryData& d = sl.d;
+  const auto& line = sl.line;
+  const auto first = sl.modal();
   first->prepare(6);
   EXPECT_EQ(first->decompositions(), 2);
   EXPECT_EQ(first->loaded(), 0);
@@ -395,18 +426,7 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   second->prepare(6);
   EXPECT_EQ(second->decompositions(), 0);
   EXPECT_EQ(second->loaded(), 3);
-  auto history = [&](const std::shared_ptr<const catenary::FeModalLine>& ml) {
-    auto s = catenary::make_modal_solver(ml, 0.0);
-    const double x0 = 2.5 * d.span;
-    s->start({x0}, {120.0}, 0.0);
-    std::vector<double> out, forces;
-    for (int i = 0; i < 400; ++i) {
-      const double x = x0 + 70.0 * s->time();
-      s->step({catenary::FeLoad{x, false, 120.0 + 30 * std::sin(40 * s->time())}}, forces);
-      out.push_back(s->uplift(x));
-    }
-    return out;
-  };
+  auto history = [&](const std::shared_ptr<const catenary::FeModalLine>& ml) { return uplift_history(ml, d.span); };
   EXPECT_EQ(history(first), history(second));
   // Damage each file in turn: it is ignored and solved again (and written anew).
   {
@@ -442,7 +462,6 @@ TEST(FeModalStore, ASecondLineReadsTheModesAndRunsBitForBitTheSame) {
   EXPECT_EQ(fifth.decompositions(), 2);
   fifth.flush_store();
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
-  fs::remove_all(dir);
 }
 
 namespace {
@@ -490,47 +509,33 @@ TEST(FeModalStore, AFileCutShortUnderItsMappingDoesNotKillTheProcess) {
 }
 
 TEST(FeModalStore, ARunWhoseModeFileIsCutShortStopsNamingTheFile) {
-  // A line reading its windows' modes from the store; its files cut short before it runs: the
-  // modal solve stops at once with an error naming a file, rather than step with zero modes.
+  // A line reading its windows' modes from the store, its files cut short while a run goes on: the
+  // run stops at its next step with an error naming a file, rather than step with zero modes.
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / fmt::format("inerta-mode-cut-{}", ::getpid());
-  fs::remove_all(dir);
-  FeCatenaryData d = line_data(10, 1.0);
-  d.modal_cutoff = 20;
-  d.solver = FeCatenaryData::Solver::Modal;
-  const auto line = std::make_shared<const FeLine>(d);
-  catenary::FeModalLine(line, catenary::ModeStore(dir)).prepare(6);  // its destructor waits for the writes
-  const auto reader = std::make_shared<catenary::FeModalLine>(line, catenary::ModeStore(dir));
+  const StoredLine sl("cut");
+  const FeCatenaryData& d = sl.d;
+  sl.modal()->prepare(6);  // its destructor waits for the writes
+  const auto reader = sl.modal();
   reader->prepare(6);
   ASSERT_EQ(reader->loaded(), 3);
-  for (const auto& e : fs::directory_iterator(dir)) fs::resize_file(e.path(), 0);
   auto s = catenary::make_modal_solver(reader, 0.0);
+  s->start({2.5 * d.span}, {120.0}, 0.0);
+  for (const auto& e : fs::directory_iterator(sl.dir)) fs::resize_file(e.path(), 0);  // while the run goes on
   try {
-    s->start({2.5 * d.span}, {120.0}, 0.0);
     std::vector<double> forces;
     for (int i = 0; i < 10; ++i) s->step({catenary::FeLoad{2.5 * d.span + 0.1 * i, false, 120.0}}, forces);
     ADD_FAILURE() << "no error";
   } catch (const inerta::NumericalError& e) {
     EXPECT_NE(std::string(e.what()).find("was cut short while this run read it"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(sl.dir.string()), std::string::npos) << e.what();
   }
-  // The same line (as a Python session keeps it) runs again: the damaged shapes are dropped and
-  // solved anew, and the run gives the numbers of a line that never used the store.
-  auto history = [&](const std::shared_ptr<const catenary::FeModalLine>& ml) {
-    auto r = catenary::make_modal_solver(ml, 0.0);
-    r->start({2.5 * d.span}, {120.0}, 0.0);
-    std::vector<double> forces, out;
-    for (int i = 0; i < 200; ++i) {
-      r->step({catenary::FeLoad{2.5 * d.span + 0.1 * i, false, 120.0}}, forces);
-      out.push_back(r->uplift(2.5 * d.span + 0.1 * i));
-    }
-    return out;
-  };
-  const auto fresh = std::make_shared<catenary::FeModalLine>(line);
-  EXPECT_EQ(history(reader), history(fresh));
+  // The same line (as a Python session keeps it) runs again: every shape whose file was cut short
+  // (read since or not) is dropped and solved anew, and the run gives the numbers of a line that
+  // never used the store.
+  const auto fresh = std::make_shared<catenary::FeModalLine>(sl.line);
+  EXPECT_EQ(uplift_history(reader, d.span), uplift_history(fresh, d.span));
   EXPECT_GT(reader->decompositions(), 0) << "solved anew";
   EXPECT_EQ(reader->loaded(), 3) << "the files cut short are not read again";
-  fs::remove_all(dir);
 }
 
 TEST(FeModalStore, BeyondItsGuardsAFileIsReadIntoTheRunsOwnMemory) {

@@ -65,6 +65,9 @@ struct FeWindowModes {
     if (phi_damaged && phi_damaged->load(std::memory_order_relaxed)) throw_damaged(t);
   }
   [[noreturn]] void throw_damaged(double t) const;
+  std::uint64_t phi_device = 0, phi_inode = 0, phi_bytes = 0;
+  /// Damaged, or its file (the same one) now shorter than mapped: pages not yet read are gone too.
+  bool cut_short() const;
   int kd = 0;                    ///< half bandwidth of K
   std::vector<double> cholesky;  ///< K = L Lᵀ, LAPACK lower band storage
   BandInverse band;              ///< K⁻¹ within the band
@@ -134,8 +137,8 @@ class FeModalLine {
                                                  Eigen::SparseMatrix<double> M,
                                                  const std::function<Modes()>& make = {}) const;
   std::vector<std::pair<int, double>> mirror(const FeWindow& a, const FeWindow& b) const;
-  /// Forgets the windows and shapes whose mapped mode file was cut short (their runs stopped), so
-  /// that the next run solves them anew (mutex_ held).
+  /// Forgets the windows and shapes whose mapped mode file was cut short (a run stopped on one, or
+  /// the file is now shorter than mapped), so that the next run solves them anew (mutex_ held).
   void drop_damaged() const;
   std::shared_ptr<const FeWindowModes> find_shape(const Eigen::SparseMatrix<double>& K,
                                                   const Eigen::SparseMatrix<double>& M) const;

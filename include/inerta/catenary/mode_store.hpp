@@ -40,6 +40,7 @@ struct StoredModes {
   Eigen::Index n = 0, m = 0;
   const std::atomic<int>* damaged = nullptr;
   std::filesystem::path file;
+  std::uint64_t file_device = 0, file_inode = 0, file_bytes = 0;  ///< of a mapped file, as mapped
 };
 
 class ModeStore {
