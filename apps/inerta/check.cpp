@@ -151,9 +151,16 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
                  s.wire_label, s.contact_wire.tension, s.messenger.tension,
                  s.anchor.pinned ? "pinned" : fmt::format("on a tensioning device ({:g} N/m, {:g} kg)", s.anchor.stiffness, s.anchor.mass));
     }
-    if (d.sectioned())
-      fmt::print("overlaps: {} spans each; contact-wire heights at their supports: outgoing [{}] m, incoming [{}] m\n",
-                 d.overlap_spans, fmt::join(d.overlap_outgoing, ", "), fmt::join(d.overlap_incoming, ", "));
+    if (d.sectioned()) {
+      auto heights = [](const std::vector<double>& z, const std::vector<double>& x) {
+        if (x.empty()) return fmt::format("[{}] m at its supports", fmt::join(z, ", "));
+        std::vector<std::string> p;
+        for (std::size_t i = 0; i < x.size() && i < z.size(); ++i) p.push_back(fmt::format("{:g}: {:g}", x[i], z[i]));
+        return fmt::format("{{{}}} (m from the overlap's first support: m)", fmt::join(p, ", "));
+      };
+      fmt::print("overlaps: {} spans each; contact-wire heights: outgoing {}, incoming {}\n", d.overlap_spans,
+                 heights(d.overlap_outgoing, d.overlap_outgoing_x), heights(d.overlap_incoming, d.overlap_incoming_x));
+    }
     for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
       fmt::print("{:<13} T = {:g} N, rho A = {:g} kg/m, EI = {:g} N·m², wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n",
                  std::string(which) + ":", w.tension, w.mass_per_length, w.EI, w.wave_speed(), 3.6 * w.wave_speed());

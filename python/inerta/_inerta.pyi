@@ -635,7 +635,12 @@ class FeCatenaryData:
     overlap_spans: int
     overlap_outgoing: list[float]
     overlap_incoming: list[float]
+    overlap_outgoing_x: list[float]
+    overlap_incoming_x: list[float]
     mast_height: list[float]
+    height_x: list[float]
+    height_z: list[float]
+    def height_at(self, x: float) -> float: ...
     line_start: float
     first_span: int
     wire_label: int

@@ -93,7 +93,13 @@ void bind_fe(py::module_& m) {
       .def_readwrite("overlap_spans", &FeCatenaryData::overlap_spans, "spans consecutive sections share")
       .def_readwrite("overlap_outgoing", &FeCatenaryData::overlap_outgoing, "m, the ending section's contact wire at the overlap's supports")
       .def_readwrite("overlap_incoming", &FeCatenaryData::overlap_incoming, "m, the starting section's")
+      .def_readwrite("overlap_outgoing_x", &FeCatenaryData::overlap_outgoing_x,
+                     "m from the overlap's first support: the outgoing profile's points (empty: the supports)")
+      .def_readwrite("overlap_incoming_x", &FeCatenaryData::overlap_incoming_x, "m, the incoming profile's points")
       .def_readwrite("mast_height", &FeCatenaryData::mast_height, "m, a section's contact wire at each of its masts (empty: 0)")
+      .def_readwrite("height_x", &FeCatenaryData::height_x, "m from a section's first mast: its height profile's points (empty: mast_height)")
+      .def_readwrite("height_z", &FeCatenaryData::height_z, "m, up: the profile's heights")
+      .def("height_at", &FeCatenaryData::height_at, py::arg("x"), "m: a section's contact-wire height at x (its profile, linear)")
       .def_readonly("line_start", &FeCatenaryData::line_start, "m, a section's first mast along the line")
       .def_readonly("first_span", &FeCatenaryData::first_span, "a section's first span along the line (0-based)")
       .def_readonly("wire_label", &FeCatenaryData::wire_label, "a section's contact wire: 1 or 2")

@@ -123,17 +123,13 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
     if (mark_item[i]->kind == Mark::Mast && i > 0) mast_nodes.push_back(mark_node[i]);
   std::vector<int> end_nodes;  // anchors on a tensioning device (not pinned): their w is free
   if (!d_.anchor.pinned) end_nodes = {0, N - 1};
-  // A tension section's mast heights (FeCatenaryData::mast_height): w is taken from the straight
+  // A tension section's heights (FeCatenaryData::height_at): w is taken from the straight
   // line g between the two anchors' heights (a linear g loads no interior DOF of a tensioned beam),
   // the masts' and droppers' targets relative to it.
-  const bool heights = !d_.mast_height.empty();
-  const double g_a = heights ? d_.mast_height.front() : 0.0, g_slope = heights ? (d_.mast_height.back() - g_a) / length() : 0.0;
+  const bool heights = !d_.height_x.empty() || !d_.mast_height.empty();
+  const double g_a = d_.height_at(0), g_slope = (d_.height_at(length()) - g_a) / length();
   auto g_of = [&](double x) { return g_a + g_slope * x; };
-  auto height_at = [&](double x) {  // the mast heights interpolated linearly
-    const int i = std::clamp(static_cast<int>(std::floor(x / d_.span)), 0, d_.spans - 1);
-    const double t = (x - i * d_.span) / d_.span;
-    return d_.mast_height[static_cast<std::size_t>(i)] * (1 - t) + d_.mast_height[static_cast<std::size_t>(i) + 1] * t;
-  };
+  auto height_at = [&](double x) { return d_.height_at(x); };
   // The stitch wire's stations: from its clamp behind a mast to its clamp ahead (0: none, 1: inside,
   // 2: a clamp — its w is the messenger's).
   std::vector<char> on_stitch(static_cast<std::size_t>(N), 0);
@@ -343,6 +339,23 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
         if (const int k = dof(w, i, 1); k >= 0) g_dofs_[k] = g_slope;
       }
     for (int w = 0; w < 2; ++w) kg[w] = sparse(tk[w]) * g_dofs_;
+    // A pinned anchor's w is no unknown, but g there (its height) acts on its element's free DOFs
+    // too: without it K g is not zero next to an anchor above 0, and the wire's first element is
+    // pulled towards 0 (the incoming section of an overlap, its anchor raised).
+    if (d_.anchor.pinned) {
+      g_anchor_force_ = Eigen::VectorXd::Zero(n_dofs_);
+      for (int w = 0; w < 2; ++w)
+        for (const int e : {0, N - 2}) {
+          const Eigen::Matrix4d ke = beam_stiffness(wires[w]->EI, wires[w]->tension, x_[e + 1] - x_[e]);
+          const std::array<int, 4> dd{dof(w, e, 0), dof(w, e, 1), dof(w, e + 1, 0), dof(w, e + 1, 1)};
+          for (int b : {0, 2}) {
+            if (dd[b] >= 0 || (e == 0) != (b == 0)) continue;  // the anchor's own w: node 0 or N − 1
+            const double gb = g_of(x_[static_cast<std::size_t>(e + b / 2)]);
+            for (int a = 0; a < 4; ++a)
+              if (dd[a] >= 0) kg[w][dd[a]] += ke(a, b) * gb, g_anchor_force_[dd[a]] += ke(a, b) * gb;
+          }
+        }
+    }
   }
   auto form_find = [&](const Eigen::VectorXd& tgt, std::vector<double>& len, Eigen::VectorXd& wc, Eigen::VectorXd& wm,
                        Eigen::VectorXd& T) {
@@ -609,6 +622,7 @@ FeLine::Residual FeLine::equilibrium_residual() const {
   const Eigen::VectorXd u0 = static_displacement({}, {}, &slack);
   const Eigen::VectorXd w = w_static_ + u0;
   Eigen::VectorXd r = K_wires_ * (g_dofs_.size() ? Eigen::VectorXd(w + g_dofs_) : w) - f_gravity_;
+  if (g_anchor_force_.size()) r += g_anchor_force_;
   Residual out;
   for (std::size_t k = 0; k < droppers_.size(); ++k) {
     const Dropper& dr = droppers_[k];

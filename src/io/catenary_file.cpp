@@ -485,9 +485,25 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
   d.overlap_spans = fe_whole(rd, on, "spans", rd.number(on, "spans"));
   for (const char* k : {"outgoing", "incoming"}) {
     const YAML::Node h = rd.need(ov, k, "overlap");
+    const bool out = std::string(k) == "outgoing";
+    std::vector<double>& v = out ? d.overlap_outgoing : d.overlap_incoming;
+    if (h.IsMap()) {  // a profile: {x: [m from the overlap's first support], z: [heights, m]}
+      const std::string where = fmt::format("overlap.{}", k);
+      rd.keys(h, where, {"x", "z"});
+      std::vector<double>& xs = out ? d.overlap_outgoing_x : d.overlap_incoming_x;
+      for (const char* c : {"x", "z"}) {
+        const YAML::Node l = rd.need(h, c, where);
+        if (!l.IsSequence())
+          rd.fail(l, fmt::format("{}.{}", k, c),
+                  std::string(c) == "x" ? "expected a list of positions (m) from the overlap's first support, 0 … overlap.spans spans"
+                                        : "expected a list of contact-wire heights (m, up), one per position in x");
+        for (const auto& item : l) (std::string(c) == "x" ? xs : v).push_back(rd.number(item, fmt::format("{}.{}", k, c)));
+      }
+      continue;
+    }
     if (!h.IsSequence())
-      rd.fail(h, k, "expected a list of contact-wire heights (m, up), one per overlap support (overlap.spans + 1), in line order");
-    std::vector<double>& v = std::string(k) == "outgoing" ? d.overlap_outgoing : d.overlap_incoming;
+      rd.fail(h, k, "expected a list of contact-wire heights (m, up), one per overlap support (overlap.spans + 1), in line "
+                    "order, or a profile {x: [m from the overlap's first support], z: [m]}");
     for (const auto& item : h) v.push_back(rd.number(item, k));
   }
   static const std::vector<std::string> own{"messenger", "contact_wire", "droppers", "supports", "registration"};
@@ -498,7 +514,7 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
     rd.keys(sn, where, {"spans", "span", "anchors", "messenger", "contact_wire", "droppers", "stitch", "supports", "registration"});
     catenary::FeCatenaryData s = d;
     s.tension_sections.clear();
-    s.overlap_outgoing.clear(), s.overlap_incoming.clear();
+    s.overlap_outgoing.clear(), s.overlap_incoming.clear(), s.overlap_outgoing_x.clear(), s.overlap_incoming_x.clear();
     s.overlap_spans = 0;
     const YAML::Node spans = rd.need(sn, "spans", where);
     s.spans = fe_whole(rd, spans, "spans", rd.number(spans, "spans"));
@@ -547,8 +563,12 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
     YAML::Node at = root;
     if (what.find(": overlap:") != std::string::npos || what.rfind("finite-element catenary: overlap", 0) == 0) {
       at.reset(ov);
-      const std::string base = key.substr(0, key.find('['));
-      if (const YAML::Node n = ov[base]; n.IsDefined()) {
+      std::string base = key.substr(0, key.find('['));
+      if (const auto dot = base.find('.'); dot != std::string::npos) {  // a profile's list: outgoing.x, incoming.z
+        if (const YAML::Node w = ov[base.substr(0, dot)]; w.IsMap()) at.reset(w);
+        base = base.substr(dot + 1);
+      }
+      if (const YAML::Node n = at.IsMap() ? at[base] : YAML::Node(); n.IsDefined()) {
         at.reset(n);
         if (const auto open = key.find('['); open != std::string::npos && n.IsSequence()) {
           const std::size_t j = std::stoul(key.substr(open + 1));

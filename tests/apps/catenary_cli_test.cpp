@@ -102,8 +102,8 @@ TEST_F(CatenaryCli, BadStitchAndIrregularityInputIsAFileErrorNamingTheKey) {
   };
   const Case cases[] = {
       {"  length: 18 ", "  length: 70 ", "'length'"},                        // longer than the span
-      {"    x: [-7, -2, 2, 7]", "    x: [-7, -2, 2, 9.5]", "x[3]"},          // a stitch dropper outside the stitch
-      {"  x:      [13.5,", "  x:      [8.5,", "x[0]"},                        // a span dropper inside it
+      {"    x: [-5, 5]", "    x: [-5, 9.5]", "x[1]"},                          // a stitch dropper outside the stitch
+      {"  x:      [17.5,", "  x:      [8.5,", "x[0]"},                        // a span dropper inside it
       {"  tension: 3500 ", "  tension: -3500 ", "'tension'"},
       {"  tension: 3500 ", "  tension: .nan ", "'tension'"},
       {"  mass_per_length: 0.31 ", "  mass_per_length: -0.31 ", "'mass_per_length'"},
@@ -147,14 +147,15 @@ TEST_F(CatenaryCli, BadTensionSectionsAreAFileErrorNamingTheKey) {
   const Case cases[] = {
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, span: 60, anchors: pinned}", "tension_sections[1].span"},
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 6, anchors: pinned}", "tension_sections[1].spans"},
-      {"  incoming: [0.5, 0.2, 0, 0]", "  incoming: [0.5, -0.1, 0, 0]", "overlap.incoming[1]"},
+      {"0.0342, 0.02, 0.00959, 0, 0, 0]", "0.0342, -0.1, 0.00959, 0, 0, 0]", "overlap.incoming.z"},  // below the running wire at a support
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13}", "anchors"},
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: {stiffness: .nan}}", "tension_sections[1].anchors.stiffness"},
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: {stiffness: 1e300}}", "tension_sections[1].anchors.stiffness"},
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: {stiffness: 1e5, mass: .inf}}", "tension_sections[1].anchors.mass"},
       {"  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: pinned, messenger: {tension: -5}}", "tension_sections[1].messenger.tension"},
       {"  spans: 3", "  spans: 0", "overlap.spans"},
-      {"  outgoing: [0, 0, 0.2, 0.5]", "  outgoing: [0, 0, .inf, 0.5]", "overlap.outgoing[2]"},
+      {"0.00959, 0.02, 0.0342, 0.08627", "0.00959, .inf, 0.0342, 0.08627", "overlap.outgoing.z[4]"},
+      {"    x: [0, 65, 113.75,", "    x: [0, 65, 65,", "overlap.outgoing.x[2]"},  // a profile's points out of order
   };
   int n = 0;
   for (const Case& c : cases) {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <span>
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/simulate.hpp"
@@ -29,11 +30,18 @@ using catenary::FeLine;
 
 const std::string kOverlap = INERTA_SOURCE_DIR "/models/catenary-fe-overlap.yaml";
 
-// The bundled line's design on two sections of `spans` spans each (a 3-span overlap), direct solve.
-FeCatenaryData two_sections(int spans, const std::vector<std::string>& sets = {}) {
+// The bundled line's design on two sections of `spans` spans each (a 3-span overlap). With
+// `at_supports`, the overlap of issue 35 instead of the bundled profile: heights at the supports
+// alone, the out-of-running wire 0.2 m up at the support on its anchor side and 0.5 m at its anchor
+// (linear between the masts: the wires cross 0.1 m up in the middle span).
+FeCatenaryData two_sections(int spans, const std::vector<std::string>& sets = {}, bool at_supports = false) {
   FeCatenaryData d = io::read_fe_catenary_data(kOverlap, sets);
   d.tension_sections.resize(2);
   for (FeCatenaryData& s : d.tension_sections) s.spans = spans;
+  if (at_supports) {
+    d.overlap_outgoing = {0, 0, 0.2, 0.5}, d.overlap_incoming = {0.5, 0.2, 0, 0};
+    d.overlap_outgoing_x.clear(), d.overlap_incoming_x.clear();
+  }
   d.link_sections();
   return d;
 }
@@ -61,7 +69,7 @@ TEST(FeSections, AwayFromItsOverlapASectionIsTheSingleSectionLine) {
     EXPECT_NEAR(a.droppers()[k].length, b.droppers()[k].length, 1e-11) << k;
     ++compared;
   }
-  EXPECT_GT(compared, 50);
+  EXPECT_GE(compared, 5 * static_cast<int>(sec.dropper_x.size() + sec.stitch.dropper_x.size()));
   // And the overlap's masts are where the file puts them: the contact wire at its mast heights.
   for (int m = 9; m <= 12; ++m) EXPECT_NEAR(a.static_height(m * sec.span), sec.mast_height[static_cast<std::size_t>(m)], 1e-9) << m;
 }
@@ -74,13 +82,10 @@ TEST(FeSections, EverySectionsStaticStateIsAnEquilibrium) {
     const FeLine::Residual r = L.equilibrium_residual();
     EXPECT_LT(r.force, 1e-8 * r.load_scale) << s.first_span;
     EXPECT_LT(r.dropper, 1e-6) << s.first_span;
-    // Pre-sag 0: the contact wire at the straight line between its masts' heights at every dropper.
-    for (const FeLine::Dropper& dr : L.droppers()) {
-      const int i = std::min(s.spans - 1, static_cast<int>(dr.x / s.span));
-      const double t = dr.x / s.span - i;
-      const double want = s.mast_height[static_cast<std::size_t>(i)] * (1 - t) + s.mast_height[static_cast<std::size_t>(i) + 1] * t;
-      EXPECT_NEAR(L.static_height(dr.x), want, 1e-9) << dr.x;
-    }
+    // Pre-sag 0: the contact wire at its height profile at every dropper and mast.
+    for (const FeLine::Dropper& dr : L.droppers()) EXPECT_NEAR(L.static_height(dr.x), s.height_at(dr.x), 1e-9) << dr.x;
+    for (int m = 0; m <= s.spans; ++m)
+      EXPECT_NEAR(L.static_height(m * s.span), s.mast_height[static_cast<std::size_t>(m)], 1e-9) << m;
   }
   // A tensioning device at the anchors instead of pins: still an equilibrium, the ends at their heights.
   FeCatenaryData s = line.tension_sections[1];
@@ -113,7 +118,7 @@ TEST(FeSections, WithTheOtherWireOutOfReachThePantographSeesOnlyItsOwn) {
   // Two sections of 6 spans, the incoming wire raised 0.5 m and 0.2 m over the overlap's first span:
   // a run that ends before the middle span equals a run on section 1 alone (the same section as a
   // line of its own) to round-off, and the incoming wire carries nothing.
-  const FeCatenaryData d = two_sections(6);
+  const FeCatenaryData d = two_sections(6, {}, true);
   const double span = d.span, t_end = (4 * span - 1) / (250 / 3.6);  // the contact point short of mast 4 (o1)
   FeCatenaryData alone = d.tension_sections.front();
   alone.tension_sections.clear();
@@ -127,10 +132,10 @@ TEST(FeSections, WithTheOtherWireOutOfReachThePantographSeesOnlyItsOwn) {
 }
 
 TEST(FeSections, TheLoadPassesFromOneWireToTheOtherOverTheMiddleSpan) {
-  // Through the whole overlap of two 6-span sections: before its middle span only wire 1 carries the
-  // pantograph, after it only wire 2; in the middle span both, over a stretch, their sum the contact
-  // force, the share of wire 2 growing from 0 to 1.
-  const FeCatenaryData d = two_sections(6);
+  // Through the whole overlap of two 6-span sections (issue 35's heights at the supports): before its
+  // middle span only wire 1 carries the pantograph, after it only wire 2; in the middle span both,
+  // over a stretch, their sum the contact force, the share of wire 2 growing from 0 to 1.
+  const FeCatenaryData d = two_sections(6, {}, true);
   const double span = d.span;
   const auto r = run(d, (8 * span) / (250 / 3.6));
   const auto F = column(r, "F_contact"), f1 = column(r, "F_contact_w1"), f2 = column(r, "F_contact_w2"), x = column(r, "x_contact");
@@ -158,6 +163,68 @@ TEST(FeSections, TheLoadPassesFromOneWireToTheOtherOverTheMiddleSpan) {
   for (std::size_t i = 1; i < F.size(); ++i)
     if (x[i] < 3 * span && x[i] > span) plain_jump = std::max(plain_jump, std::abs(F[i] - F[i - 1]));
   EXPECT_LT(max_jump, 3 * plain_jump + 5);
+}
+
+TEST(FeSections, TheBundledOverlapLineIsTheStitchedLine) {
+  // Issue 48: every section of the bundled overlap line is the calibrated stitched line: the two
+  // files' text from `line:` on is the same, but for the stitched file's number of spans.
+  auto text = [](const std::string& path) {
+    std::ifstream in(path);
+    std::string t((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return t.substr(t.find("\nline:"));
+  };
+  std::string stitched = text(INERTA_SOURCE_DIR "/models/catenary-fe-stitched.yaml");
+  const std::string spans = "  spans: 10               # [assumed]\n";
+  const auto at = stitched.find(spans);
+  ASSERT_NE(at, std::string::npos);
+  stitched.erase(at, spans.size());
+  EXPECT_EQ(text(kOverlap), stitched);
+}
+
+TEST(FeSections, TheBundledOverlapHasBothWiresAtTheRunningHeightOverHalfItsMiddleSpan) {
+  // Issue 48: the bundled profile (Adif NAE 116's rule: both wires at the running height over 50 … 100 %
+  // of the middle span): at every dropper of the middle 50 % both wires are at 0; the out-of-running
+  // wire above the running one elsewhere in the overlap, and every dropper in tension (the rise
+  // within what gravity lets a wire that droppers only pull take).
+  const FeCatenaryData line = io::read_fe_catenary_data(kOverlap, {});
+  const FeCatenaryData &out = line.tension_sections[0], &in = line.tension_sections[1];
+  const double span = line.span, o0 = (out.spans - 3) * span;  // the overlap's first support, along the line
+  const FeLine a(out), b(in);
+  int common = 0;
+  for (const FeLine* l : {&a, &b}) {
+    const double shift = l == &a ? 0.0 : o0;  // section 2 starts at the overlap's first support
+    for (const FeLine::Dropper& dr : l->droppers()) {
+      const double s = dr.x + shift - o0;  // from the overlap's first support
+      if (s < 0 || s > 3 * span) continue;
+      EXPECT_GT(dr.tension, 10.0) << s;
+      if (s >= 1.25 * span && s <= 1.75 * span) {
+        EXPECT_NEAR(l->static_height(dr.x), 0.0, 1e-9) << s;
+        ++common;
+      }
+    }
+  }
+  EXPECT_EQ(common, 2 * 5);  // the five span droppers of the middle span, on each wire
+  for (double s = 0; s <= 3 * span; s += 2.5) {
+    const double za = a.static_height(o0 + s), zb = b.static_height(s);
+    if (s < 1.25 * span) EXPECT_GT(zb, za - 1e-9) << s;  // the incoming wire out of running before
+    if (s > 1.75 * span) EXPECT_GT(za, zb - 1e-9) << s;  // the outgoing one after
+  }
+  // Through the overlap (two 6-span sections, the 3-mass at 250 km/h, direct solve): the force passes
+  // from wire 1 to wire 2 with both loaded over the whole common stretch, their sum the force.
+  const FeCatenaryData d = two_sections(6);
+  const auto r = run(d, 8 * span / (250 / 3.6));
+  const auto F = column(r, "F_contact"), f1 = column(r, "F_contact_w1"), f2 = column(r, "F_contact_w2"), x = column(r, "x_contact");
+  double first_both = INFINITY, last_both = -INFINITY;
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    EXPECT_NEAR(f1[i] + f2[i], F[i], 1e-9 * std::max(1.0, std::abs(F[i]))) << x[i];
+    if (x[i] < 3 * span) EXPECT_EQ(f2[i], 0.0) << x[i];
+    if (x[i] > 6 * span) EXPECT_EQ(f1[i], 0.0) << x[i];
+    if (f1[i] > 0 && f2[i] > 0) first_both = std::min(first_both, x[i]), last_both = std::max(last_both, x[i]);
+  }
+  std::fprintf(stderr, "bundled overlap: both wires loaded over %.2f … %.2f m (common stretch %.2f … %.2f m)\n", first_both,
+               last_both, 4.25 * span, 4.75 * span);
+  EXPECT_LE(first_both, 4.25 * span);
+  EXPECT_GE(last_both, 4.75 * span);
 }
 
 TEST(FeSections, ModalIsTheDirectSolveWithinTwoPercentInTheOverlapsToo) {
@@ -206,27 +273,46 @@ TEST(FeSectionsErrors, NameTheFileAndKey) {
       {"anchorkind", "  - {spans: 13, anchors: pinned}", "  - {spans: 13, anchors: welded}", "anchors"},
       {"nooverlap", "overlap:", "overlapx:", "overlap"},
   };
+  // The bundled file with issue 35's overlap heights at the supports (a list each), and as it is (a
+  // profile each: {x, z}).
   std::ifstream in(kOverlap);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const Case& c : cases) {
-    SCOPED_TRACE(c.name);
-    const auto at = text.find(c.from);
-    ASSERT_NE(at, std::string::npos) << c.from;
-    std::string t = text;
-    t.replace(at, std::string(c.from).size(), c.to);
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / fmt::format("inerta-badsec-{}-{}", c.name, ::getpid());
-    std::filesystem::create_directories(dir);
-    const std::string path = (dir / "bad.yaml").string();
-    std::ofstream(path) << t;
-    try {
-      (void)io::read_fe_catenary_data(path, {});
-      ADD_FAILURE() << "no error";
-    } catch (const ModelError& e) {
-      const std::string what = e.what();
-      EXPECT_NE(what.find(path + ":"), std::string::npos) << what;
-      EXPECT_NE(what.find(c.key), std::string::npos) << what;
+  const std::string bundled((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto o = bundled.find("  outgoing:"), l = bundled.find("\nline:");
+  ASSERT_NE(o, std::string::npos);
+  ASSERT_NE(l, std::string::npos);
+  const std::string lists = bundled.substr(0, o) + "  outgoing: [0, 0, 0.2, 0.5]\n  incoming: [0.5, 0.2, 0, 0]" + bundled.substr(l);
+  const Case profile_cases[] = {
+      {"pbelow", "0.0342, 0.02, 0.00959, 0, 0, 0]", "0.0342, -0.02, 0.00959, 0, 0, 0]", "overlap.incoming.z"},
+      {"porder", "113.75, 125,", "125, 113.75,", "overlap.outgoing.x[3]"},
+      {"pend", "177.5, 190, 195]", "177.5, 190, 200]", "overlap.outgoing.x"},
+      {"pcount", "0.44036, 0.5]", "0.44036]", "overlap.outgoing.z"},
+      {"pkey", "    x: [0, 65, 113.75", "    xs: [0, 65, 113.75", "overlap.outgoing"},
+  };
+  for (const auto& [text, list] : {std::pair{lists, std::span<const Case>(cases)}, std::pair{bundled, std::span<const Case>(profile_cases)}}) {
+    for (const Case& c : list) {
+      SCOPED_TRACE(c.name);
+      const auto at = text.find(c.from);
+      ASSERT_NE(at, std::string::npos) << c.from;
+      std::string t = text;
+      t.replace(at, std::string(c.from).size(), c.to);
+      const std::filesystem::path dir = std::filesystem::temp_directory_path() / fmt::format("inerta-badsec-{}-{}", c.name, ::getpid());
+      std::filesystem::create_directories(dir);
+      const std::string path = (dir / "bad.yaml").string();
+      std::ofstream(path) << t;
+      try {
+        (void)io::read_fe_catenary_data(path, {});
+        ADD_FAILURE() << "no error";
+      } catch (const ModelError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find(path + ":"), std::string::npos) << what;
+        EXPECT_NE(what.find(c.key), std::string::npos) << what;
+        if (list.data() == profile_cases)  // at the line edited
+          EXPECT_NE(what.find(fmt::format("{}:{}:", path, 1 + std::count(t.begin(), t.begin() + static_cast<long>(at), '\n'))),
+                    std::string::npos)
+              << what;
+      }
+      std::filesystem::remove_all(dir);
     }
-    std::filesystem::remove_all(dir);
   }
 }
 

@@ -146,6 +146,13 @@ struct FeCatenaryData {
   /// 0 at every mast). The messenger is `encumbrance` above it at every mast, the droppers' targets
   /// are the heights interpolated linearly between the masts, less the pre-sag.
   std::vector<double> mast_height;
+  /// m: the contact wire's height profile, piecewise linear through the points (height_x from the
+  /// section's first mast, strictly increasing from 0 to its length; height_z up): the droppers'
+  /// targets between masts, e.g. an overlap's middle span with both wires at the running height over
+  /// part of it. Empty: mast_height, linear between the masts. link_sections sets both.
+  std::vector<double> height_x, height_z;
+  /// The height at x (m from the section's first mast): height_x/z, else mast_height, else 0.
+  double height_at(double x) const;
   /// The anchors at the section's two ends: pinned (w = 0), or a tensioning device's vertical
   /// stiffness (N/m) and mass (kg) on both wires' ends.
   struct Anchor {
@@ -161,10 +168,13 @@ struct FeCatenaryData {
   /// section, pinned at height 0 at both ends (every file before issue 35).
   std::vector<FeCatenaryData> tension_sections;
   int overlap_spans = 0;
-  /// m: the contact wire's heights at the overlap's supports (overlap_spans + 1 values, in line
-  /// order): the section that ends there (outgoing; its last value is at its anchor) and the one
-  /// that starts (incoming; its first value at its anchor).
+  /// m: the contact wire's heights over an overlap, in line order: the section that ends there
+  /// (outgoing; its last value is at its anchor) and the one that starts (incoming; its first value
+  /// at its anchor). Without overlap_*_x, one height per overlap support (overlap_spans + 1 values);
+  /// with them, a piecewise-linear profile through (x, height), x in m from the overlap's first
+  /// support, strictly increasing from 0 to overlap_spans spans.
   std::vector<double> overlap_outgoing, overlap_incoming;
+  std::vector<double> overlap_outgoing_x, overlap_incoming_x;
   bool sectioned() const { return !tension_sections.empty(); }
   /// The whole line's spans (the sections' less the overlaps), for a sectioned line.
   int line_spans() const;
@@ -281,6 +291,7 @@ class FeLine {
   Eigen::VectorXd f_gravity_;      ///< gravity on the wires, clamps, droppers and point masses
   Eigen::VectorXd w_static_;       ///< the heights of the reference state, per DOF (w from its reference)
   Eigen::VectorXd g_dofs_;         ///< a section's straight line between its anchors' heights, per DOF (empty: none)
+  Eigen::VectorXd g_anchor_force_; ///< K's columns of pinned anchors' w times g there (empty: none)
   Eigen::SparseMatrix<double> K_static_;
   BandLlt K_llt_;  ///< of K_static_
   friend class FeIntegrator;
