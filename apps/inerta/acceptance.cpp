@@ -84,9 +84,9 @@ int report_acceptance(std::FILE* info, const analysis::AcceptanceCriteria& c, co
 namespace {
 
 struct AeroFitArgs {
-  std::string model, catenary, criteria, unit = "ms", speeds;
+  std::string model, catenary, criteria, unit = "ms", speeds, suspension, working_range = "0.1:0.1";
   double speed = 0, max_seconds = analysis::default_max_seconds;
-  std::vector<std::string> sets;
+  std::vector<std::string> sets, params;
 };
 AeroFitArgs aero_args;
 CLI::App* aero_cmd = nullptr;
@@ -121,7 +121,48 @@ int aero_fit() {
                            "fewer spans with --set line.spans=N, fewer --speeds");
     if (const std::string note = analysis::cost_note(seconds, "this fit"); !note.empty()) fmt::print(stderr, "{}\n", note);
   }
-  const analysis::AeroFit fit = analysis::fit_aerodynamic(p, *cat.catenary, cat.contact, v, target, stats, o);
+  // Commissioning (analysis/commission.hpp): the --suspension relaxed at standstill on this line, the
+  // trim, the static contact force over the working range (a model with a rig).
+  std::optional<network::Network> net;
+  if (!a.suspension.empty()) try {
+      net = network::resolve(a.suspension, parse_params(a.params));
+    } catch (const network::NetworkError& e) {
+      throw ModelError(fmt::format("--suspension '{}': {}", a.suspension, e.what()));
+    }
+  else if (!a.params.empty())
+    throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
+  analysis::WorkingRange range;
+  {
+    const auto colon = a.working_range.find(':');
+    if (colon == std::string::npos || !CLI::detail::lexical_cast(a.working_range.substr(0, colon), range.below) ||
+        !CLI::detail::lexical_cast(a.working_range.substr(colon + 1), range.above) || !(range.below >= 0 && range.below <= 2) ||
+        !(range.above >= 0 && range.above <= 2) || range.below + range.above <= 0)
+      throw CLI::ValidationError("--working-range", fmt::format("'{}': expected BELOW:ABOVE in m, each 0 … 2, not both 0", a.working_range));
+  }
+  analysis::Trim trim;
+  trim.speed = v, trim.target = target, trim.statistics = stats, trim.options = o;
+  const analysis::Commissioned com = analysis::commission(p, net ? &*net : nullptr, *cat.catenary, cat.contact, trim,
+                                                          p.rig_joint >= 0 ? &range : nullptr);
+  const analysis::Commissioning& rec = com.record;
+  analysis::AeroFit fit;
+  fit.reached = rec.reached, fit.a = rec.a, fit.mean = rec.mean, fit.runs = rec.runs, fit.target = target;
+  fit.mean_without = rec.mean_without;
+  if (net)
+    fmt::print("suspension {}: relaxed at standstill on this line (actuator length {:.6g} m); static stiffness G(0) = lim s→0 "
+               "s·Y(s) = {:.6g} N/m\n",
+               network::to_string(*net, true), rec.operating_length, rec.static_stiffness);
+  if (!std::isnan(rec.static_force))
+    fmt::print("static contact force at standstill: {:.2f} N (the head {:+.1f} mm from its rig position)\n", rec.static_force,
+               1e3 * rec.head_offset);
+  if (!rec.range_force.empty()) {
+    fmt::print("over the working range (the wire {:+g} … {:+g} m around this line's height): {:.2f} … {:.2f} N ({:+.1f} … "
+               "{:+.1f} % of {:.2f} N): the stock static force held by the lifting device, plus what the suspension's "
+               "static stiffness adds\n",
+               -range.below, range.above, rec.range_min(), rec.range_max(), 100 * (rec.range_min() / rec.static_force - 1),
+               100 * (rec.range_max() / rec.static_force - 1), rec.static_force);
+    fmt::print("  height m {:>8.3f}\n  force N  {:>8.2f}\n  model N  {:>8.2f}  (the model alone, its frame springs included)\n",
+               fmt::join(rec.range_height, " "), fmt::join(rec.range_force, " "), fmt::join(rec.range_model, " "));
+  }
   fmt::print("mean contact force without aerodynamic uplift: {:.2f} N ({} statistics)\n", fit.mean_without,
              stats == analysis::Statistics::Raw ? "raw" : "20 Hz");
   if (!fit.reached) {
@@ -141,7 +182,7 @@ int aero_fit() {
   if (!a.speeds.empty()) {
     std::vector<double> vs;
     for (double s : speed_list(a.speeds)) vs.push_back(s * k);
-    const auto rs = analysis::sweep(analysis::with_aerodynamic(p, fit.a), *cat.catenary, cat.contact, vs, o);
+    const auto rs = analysis::sweep(com.pantograph, *cat.catenary, cat.contact, vs, o);
     fmt::print("  {:>8} {:>10} {:>10} {:>10}\n", "v km/h", "target N", "mean N", "diff N");
     for (const auto& r : rs) {
       const double m = stats == analysis::Statistics::Filtered && !r.filtered.empty() ? r.filtered.front().mean : r.stats.mean;
@@ -166,6 +207,14 @@ CLI::App* add_pantograph_command(CLI::App& app) {
   aero_cmd->add_option("--unit", a.unit, "Speed unit: ms (m/s) or kmh")->check(CLI::IsMember({"ms", "kmh"}))->capture_default_str();
   aero_cmd->add_option("--speeds", a.speeds, "Also print the mean force with the fitted a at V0:DV:V1 (in --unit)");
   aero_cmd->add_option("--set", a.sets, "Override a model or catenary value NAME.KEY=VALUE (repeatable)");
+  aero_cmd->add_option("--suspension", a.suspension,
+                       "Commission this layout or expression in place of the actuator's network: relaxed at standstill "
+                       "on this line (as a study with trim: does)");
+  aero_cmd->add_option("--param", a.params, "Suspension element value NAME=VALUE (repeatable)");
+  aero_cmd->add_option("--working-range", a.working_range,
+                       "Contact-wire heights BELOW:ABOVE (m) around this line's over which the static contact force is "
+                       "printed (the head held; a model with a rig)")
+      ->capture_default_str();
   aero_cmd->add_option("--max-seconds", a.max_seconds,
                        "Refuse (exit 2) a fit whose estimated wall time on a 2-core machine is above S seconds (default 600)")
       ->check(number_rule(analysis::max_seconds_rule));

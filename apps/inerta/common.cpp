@@ -8,6 +8,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "inerta/analysis/commission.hpp"
 #include "inerta/analysis/cost_guard.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/model_file.hpp"
@@ -58,8 +59,8 @@ std::pair<pantograph::Pantograph, io::CatenaryFile> pantograph_setup(const std::
       throw ModelError(fmt::format("--suspension '{}': {}", c.suspension, e.what()));
     }
     // --relaxed: at the actuator's length of the static equilibrium with the model's own suspension
-    // under this catenary, as a study's candidates (optim::operating_length); else the old network's.
-    p.model = pantograph::with_suspension(p.model, net, c.relaxed ? optim::operating_length(p, *cat.catenary, cat.contact) : -1);
+    // under this catenary, as a study's candidates (analysis::operating_length); else the old network's.
+    p.model = pantograph::with_suspension(p.model, net, c.relaxed ? analysis::operating_length(p, *cat.catenary, cat.contact) : -1);
   } else if (!c.params.empty()) {
     throw CLI::ValidationError("--param", "needs --suspension LAYOUT");
   } else if (c.relaxed) {

@@ -233,18 +233,52 @@ class Printer : public optim::StudyEvents {
 
   // Multi-fidelity layouts: all: the refined networks ranked by this study's J2 (the final table).
   void print_refined(const optim::StudyOutcome& o) const {
-    fmt::print("\nthe refined networks, ranked by this study's J2 (default {:.4f} N):\n", o.default_cost.J);
-    fmt::print("  {:>4} {:<44} {:>10} {:>6} {:>10} {:>10} {:>8}  {}\n", "rank", "network (refined values)", "coarse [N]",
-               "c.rank", "start [N]", "J2 [N]", "vs def.", "limits");
+    const char* J = optim::objective_name(study_);
+    const std::string unit = *optim::objective_unit(study_) ? fmt::format(" [{}]", optim::objective_unit(study_)) : "";
+    fmt::print("\nthe refined networks{}, ranked by this study's {} (default {:.4f}{}):\n",
+               study_.commissioned() ? " and the stock suspension, each commissioned on the reference line" : "", J,
+               o.default_cost.J, unit);
+    fmt::print("  {:>4} {:<44} {:>10} {:>6} {:>10} {:>10} {:>8}  {}\n", "rank", "network (refined values)", "coarse",
+               "c.rank", "start", J, "vs def.", "limits");
     for (std::size_t k = 0; k < o.results.size(); ++k) {
       const optim::LayoutResult& r = o.results[k];
-      const optim::StructureEntry& e = o.entries[o.refinements[k].entry];
+      const bool stock = o.refinements[k].entry == optim::Refinement::kStock;
       std::string limits = r.cost.feasible ? "kept" : "outside: " + r.cost.violation;
       if (!r.cost.binding.empty())
         limits += fmt::format("; binds: {} ({:+.1f} %)", r.cost.binding, 100 * r.cost.binding_margin);
-      fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10.4f} {:>10.4f} {:>+7.1f}%  {}\n", k + 1,
-                 network::to_string(optim::design_network(r.layout, r.values), true), e.J, o.refinements[k].coarse_rank,
-                 r.coarse_here.J, r.cost.J, 100 * (r.cost.J - o.default_cost.J) / o.default_cost.J, limits);
+      if (const auto& c = r.cost.commissioning)
+        limits += fmt::format("; a = {:.4g}, G(0) = {:.4g} N/m, static {:.1f} … {:.1f} N", c->a, c->static_stiffness, c->range_min(),
+                              c->range_max());
+      const std::string name = network::to_string(optim::design_network(r.layout, r.values), true);
+      if (stock)
+        fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10} {:>10.4f} {:>8}  {}\n", k + 1, "default " + name, o.coarse_default_cost.J,
+                   "-", "-", r.cost.J, "", limits);
+      else
+        fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10.4f} {:>10.4f} {:>+7.1f}%  {}\n", k + 1, name,
+                   o.entries[o.refinements[k].entry].J, o.refinements[k].coarse_rank, r.coarse_here.J, r.cost.J,
+                   100 * (r.cost.J - o.default_cost.J) / o.default_cost.J, limits);
+    }
+    if (!std::isnan(o.rank_agreement))
+      fmt::print("  rank agreement of the coarse stage and this study over the refined networks (Spearman): {:.3f}\n",
+                 o.rank_agreement);
+    if (o.stock_best) {
+      std::size_t next = o.results.size();
+      for (std::size_t k = 0; k < o.results.size(); ++k)
+        if (!o.results[k].stock) {
+          next = k;
+          break;
+        }
+      fmt::print("  no refined network beats the stock suspension{}: it stays the recommendation", study_.limits.acceptance
+                                                                                                    ? " within every criterion"
+                                                                                                    : "");
+      if (next < o.results.size()) {
+        const optim::LayoutResult& r = o.results[next];
+        fmt::print("; the closest is {} at {:.4f}{} ({:+.1f} %), {}", network::to_string(optim::design_network(r.layout, r.values), true),
+                   r.cost.J, unit, 100 * (r.cost.J - o.default_cost.J) / o.default_cost.J,
+                   r.cost.feasible ? fmt::format("binding {} ({:+.1f} %)", r.cost.binding, 100 * r.cost.binding_margin)
+                                   : "outside the limits: " + r.cost.violation);
+      }
+      fmt::print("\n");
     }
   }
 
@@ -329,9 +363,14 @@ int cmd_optimise(const OptimiseArgs& a) {
     }
   }
   const optim::LayoutResult& best = o.results[o.best.index];
-  if (study.method == optim::Study::Method::Time)
-    fmt::print("best: {} ({}) — J2 = {:.3f} N at {:.0f} km/h (time domain){}\n", best.layout, best.expression, best.cost.J,
-               best.cost.speed * 3.6, best.cost.feasible ? "" : "; no design keeps the limits: " + best.cost.violation);
+  if (study.method == optim::Study::Method::Time && study.objective == optim::Study::Objective::SigmaOverMean)
+    fmt::print("best: {}{} ({}) — sigma/F_m = {:.4f} (σ {:.3f} N, F_m {:.2f} N) at {:.0f} km/h (time domain){}\n",
+               o.stock_best ? "the stock suspension " : "", best.layout, best.expression, best.cost.J, best.cost.sigma,
+               best.cost.mean, best.cost.speed * 3.6, best.cost.feasible ? "" : "; no design keeps the limits: " + best.cost.violation);
+  else if (study.method == optim::Study::Method::Time)
+    fmt::print("best: {}{} ({}) — J2 = {:.3f} N at {:.0f} km/h (time domain){}\n", o.stock_best ? "the stock suspension " : "",
+               best.layout, best.expression, best.cost.J, best.cost.speed * 3.6,
+               best.cost.feasible ? "" : "; no design keeps the limits: " + best.cost.violation);
   else
     fmt::print("best: {} ({}) — time-domain re-check J2 = {:.3f} N at {:.0f} km/h (periodic {:.3f} N, {:+.2f} %)\n",
                best.layout, best.expression, o.time_check.J, o.time_check.speed * 3.6, best.cost.J,

@@ -1044,6 +1044,44 @@ class AeroFit:
 def fit_aerodynamic(model: Model, catenary: CatenaryLike, speed: float,
                     criteria: Union[str, os.PathLike[str], AcceptanceCriteria], *,
                     contact: ContactLike = None) -> AeroFit: ...
+
+class Trim:
+    def __init__(self) -> None: ...
+    speed: float
+    target: float
+    periodic: bool
+    harmonics: int
+    tolerance: float
+
+class WorkingRange:
+    def __init__(self, below: float = 0.1, above: float = 0.1, points: int = 5) -> None: ...
+    below: float
+    above: float
+    points: int
+
+class Commissioning:
+    operating_length: float
+    static_stiffness: float
+    static_force: float
+    head_offset: float
+    a: float
+    mean: float
+    mean_without: float
+    target: float
+    trimmed: bool
+    reached: bool
+    runs: int
+    range_height: list[float]
+    range_force: list[float]
+    range_model: list[float]
+    def range_min(self) -> float: ...
+    def range_max(self) -> float: ...
+
+def commission(model: Model, catenary: CatenaryLike, speed: Optional[float] = None,
+               criteria: Union[None, str, os.PathLike[str], AcceptanceCriteria] = None, *,
+               suspension: Union[None, str, Network] = None, params: Optional[dict[str, float]] = None,
+               contact: ContactLike = None, working_range: WorkingRange = ...) -> tuple[Model, Commissioning]: ...
+def static_force_at(model: Model, offset: float) -> float: ...
 def sweep_periodic(model: Model, catenary: CatenaryLike, speeds: ArrayLike, *, contact: ContactLike = None,
                    harmonics: int = 8) -> SweepResult: ...
 class RunComparison:
@@ -1194,6 +1232,12 @@ class Study:
     hi: float
     harmonics: int
     operating_length: list[float]
+    trim: Optional[Trim]
+    working_range: WorkingRange
+    @property
+    def objective(self) -> str: ...
+    @property
+    def reference(self) -> Catenary: ...
     @property
     def method(self) -> str: ...
     limits: ContactLimits
@@ -1233,6 +1277,8 @@ class StudyCost:
     uplift: float
     binding: str
     binding_margin: float
+    sigma: float
+    commissioning: Optional[Commissioning]
     def penalised(self) -> float: ...
 
 class LayoutResult:
@@ -1243,6 +1289,7 @@ class LayoutResult:
     evaluations: int
     unstable: int
     budget_exhausted: bool
+    stock: bool
     at_bounds: list[str]
     coarse_values: dict[str, float]
     coarse_cost: StudyCost
@@ -1746,6 +1793,8 @@ class StudyOutcome:
     time_check: StudyCost
     best: BestDesign
     seconds: float
+    rank_agreement: float
+    stock_best: bool
     def recheck_csv(self) -> str: ...
     def refined_csv(self) -> str: ...
 

@@ -361,8 +361,13 @@ def _main(argv=None):
                 if not (os.path.exists(script) and subprocess.run([script, args.out]).returncode == 0):
                     print(f"note: no plots (scripts/{name} not found or failed); the CSV files in {args.out} are complete")
     best = o.results[o.best.index]
-    if study.method == "time":
-        print(f"best: {best.layout} ({best.expression}) — J2 = {best.cost.J:.3f} N at {best.cost.speed * 3.6:.0f} km/h "
+    stock = "the stock suspension " if o.stock_best else ""
+    if study.method == "time" and study.objective == "sigma_over_mean":
+        c = best.cost
+        print(f"best: {stock}{best.layout} ({best.expression}) — sigma/F_m = {c.J:.4f} (σ {c.sigma:.3f} N, F_m {c.mean:.2f} N) "
+              f"at {c.speed * 3.6:.0f} km/h (time domain)" + ("" if c.feasible else f"; no design keeps the limits: {c.violation}"))
+    elif study.method == "time":
+        print(f"best: {stock}{best.layout} ({best.expression}) — J2 = {best.cost.J:.3f} N at {best.cost.speed * 3.6:.0f} km/h "
               "(time domain)" + ("" if best.cost.feasible else f"; no design keeps the limits: {best.cost.violation}"))
     else:
         t = o.time_check

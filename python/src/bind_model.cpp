@@ -213,6 +213,8 @@ void check_state(const mbs::Model& m, const mbs::State& x) {
         x.q.size(), x.qd.size(), x.z.size(), m.name, m.n_coords(), m.n_states()));
 }
 
+}  // namespace
+
 network::Network network_arg(const py::object& net, const py::object& params) {
   if (py::isinstance<network::Network>(net)) {
     if (!params.is_none()) return network::assign(net.cast<network::Network>(), params.cast<network::Params>());
@@ -221,8 +223,6 @@ network::Network network_arg(const py::object& net, const py::object& params) {
   return network::resolve(net.cast<std::string>(),
                           params.is_none() ? network::Params{} : params.cast<network::Params>());
 }
-
-}  // namespace
 
 void bind_model(py::module_& m) {
   using mbs::Body, mbs::Joint, mbs::Marker, mbs::Output, mbs::State;

@@ -26,13 +26,7 @@ std::vector<std::shared_ptr<catenary::Catenary>> catenaries_of(const Study& s) {
   return v;
 }
 
-network::Network net_arg(const py::object& net, const py::object& params) {
-  if (py::isinstance<network::Network>(net)) {
-    const auto& n = net.cast<const network::Network&>();
-    return params.is_none() ? n : network::assign(n, params.cast<network::Params>());
-  }
-  return network::resolve(net.cast<std::string>(), params.is_none() ? network::Params{} : params.cast<network::Params>());
-}
+network::Network net_arg(const py::object& net, const py::object& params) { return network_arg(net, params); }
 
 Study make_study(const Model& pantograph, const py::object& catenaries, const py::object& speeds,
                  const std::vector<std::string>& layouts, const py::object& contact, const py::object& labels,
@@ -134,6 +128,12 @@ void bind_optim(py::module_& m) {
                              "`layouts: all`: the layouts are every network the study's networks options allow")
       .def_readonly("operating_length", &Study::operating_length,
                     "m, per catenary: the actuator's length at the static equilibrium with the model's suspension")
+      .def_readonly("trim", &Study::trim, "`trim:`: each design commissioned once on the reference line (None: the thesis's relaxation under each catenary)")
+      .def_readonly("working_range", &Study::working_range, "`working_range:` (m around the reference line's height)")
+      .def_property_readonly("objective", [](const Study& s) { return s.objective == Study::Objective::J2 ? "j2" : "sigma_over_mean"; },
+                             "'j2' (max σ, N) or 'sigma_over_mean' (max σ/F_m)")
+      .def_property_readonly("reference", [](const Study& s) { return std::const_pointer_cast<catenary::Catenary>(s.reference); },
+                             "the study's catenary as written: the line designs are commissioned on")
       .def("replace", [](const Study& s, const py::object& speeds, const py::object& layouts, const py::object& search,
                          const py::object& lo, const py::object& hi, const py::object& harmonics, const py::object& name) {
         Study r = s;
@@ -182,6 +182,9 @@ void bind_optim(py::module_& m) {
       .def_readonly("binding", &optim::StudyCost::binding,
                     "with acceptance limits: the criterion with the least relative margin ('sigma at 300 km/h')")
       .def_readonly("binding_margin", &optim::StudyCost::binding_margin, "its margin relative to its limit (< 0: fails)")
+      .def_readonly("sigma", &optim::StudyCost::sigma, "N: σ at the worst J (with the objective sigma_over_mean, J = sigma / mean)")
+      .def_readonly("commissioning", &optim::StudyCost::commissioning,
+                    "a commissioned study (trim:): what commissioning set for this design (Commissioning), else None")
       .def("__repr__", [](const optim::StudyCost& c) {
         return fmt::format("StudyCost(J={:.4f} N at {:.4g} km/h, catenary {}{})", c.J, c.speed * 3.6, c.catenary,
                            c.feasible ? "" : "; outside the limits: " + c.violation);
@@ -190,7 +193,7 @@ void bind_optim(py::module_& m) {
           [](const optim::StudyCost& c) {
             return py::make_tuple(c.J, c.excess, c.feasible, c.violation, c.mean_min, c.mean_max, c.loss_pct,
                                   c.statistical_min, c.uplift, c.speed, c.mean, c.catenary, c.unstable_speed, c.floquet,
-                                  c.binding, c.binding_margin);
+                                  c.binding, c.binding_margin, c.sigma, c.commissioning);
           },
           [](const py::tuple& t) {
             optim::StudyCost c;
@@ -200,6 +203,7 @@ void bind_optim(py::module_& m) {
             c.speed = t[9].cast<double>(), c.mean = t[10].cast<double>(), c.catenary = t[11].cast<int>();
             c.unstable_speed = t[12].cast<double>(), c.floquet = t[13].cast<double>();
             c.binding = t[14].cast<std::string>(), c.binding_margin = t[15].cast<double>();
+            c.sigma = t[16].cast<double>(), c.commissioning = t[17].cast<std::optional<analysis::Commissioning>>();
             return c;
           }));
   py::class_<optim::LayoutResult>(m, "LayoutResult", "The optimum of one layout.")
@@ -210,6 +214,7 @@ void bind_optim(py::module_& m) {
       .def_readonly("evaluations", &optim::LayoutResult::evaluations)
       .def_readonly("unstable", &optim::LayoutResult::unstable, "designs the search refused as unstable")
       .def_readonly("budget_exhausted", &optim::LayoutResult::budget_exhausted, "the search stopped at max_evaluations")
+      .def_readonly("stock", &optim::LayoutResult::stock, "the pantograph's own suspension, ranked with the others")
       .def_readonly("at_bounds", &optim::LayoutResult::at_bounds, "free values that ended on the search's limits")
       .def_readonly("coarse_values", &optim::LayoutResult::coarse_values, "multi-fidelity: the coarse study's optimum")
       .def_readonly("coarse_cost", &optim::LayoutResult::coarse_cost, "multi-fidelity: its cost on the coarse study")
@@ -257,7 +262,7 @@ void bind_optim(py::module_& m) {
         "J2 by the time-domain reference (analysis::sweep per catenary; all cores).");
   m.def("estimated_evaluation_seconds", &optim::estimated_evaluation_seconds, py::arg("study"),
         "A rough wall time (s) of one evaluation of a time-domain study (0 with the periodic fast path).");
-  m.def("cost_of", &optim::cost_of, py::arg("study"), py::arg("sweeps"),
+  m.def("cost_of", &optim::cost_of, py::arg("study"), py::arg("sweeps"), py::arg("commissioning") = py::none(),
         "The study's cost of one SpeedResult list per catenary (its limits applied): J2, penalised, feasible, "
         "violation and the limited quantities.");
   m.def("search_variables", &optim::search_variables, py::arg("study"), py::arg("layout"),

@@ -183,6 +183,10 @@ void bind_study_run(py::module_& m) {
       .def_readonly("time_check", &optim::StudyOutcome::time_check, "the best design's J2 in the time domain")
       .def_readonly("best", &optim::StudyOutcome::best)
       .def_readonly("seconds", &optim::StudyOutcome::seconds, "wall time of the default and the searches, s")
+      .def_readonly("rank_agreement", &optim::StudyOutcome::rank_agreement,
+                    "multi-fidelity layouts: all: Spearman's ρ of the coarse and this study's ranking of the refined networks")
+      .def_readonly("stock_best", &optim::StudyOutcome::stock_best,
+                    "the recommendation is the stock suspension (a commissioned study: nothing ranked ahead of it)")
       .def("recheck_csv", &optim::StudyOutcome::recheck_csv)
       .def("refined_csv", &optim::StudyOutcome::refined_csv);
   m.def("run_study", [](const py::object& study, const py::object& options, const py::object& progress,

@@ -249,7 +249,11 @@ double rule_arg(const py::object& v, const char* name, const Rule& rule, double 
   return fallback;
 }
 
+/// A Network, or a layout/expression with `params` (NAME → value).
+network::Network network_arg(const py::object& net, const py::object& params);
+
 // ---- Registration of the parts of the module (one file each) -------------------------------------
+void bind_commission(py::module_& m);
 void bind_errors(py::module_& m);
 void bind_model(py::module_& m);
 void bind_network(py::module_& m);

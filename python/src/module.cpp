@@ -83,6 +83,7 @@ PYBIND11_MODULE(_inerta, m) {
   bind_signal(m);
   bind_linear(m);
   bind_analysis(m);
+  bind_commission(m);
   bind_optim(m);
   bind_structure(m);
   bind_study_run(m);

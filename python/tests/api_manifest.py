@@ -341,6 +341,11 @@ BOUND = {
     "io::acceptance_presets": "acceptance_presets",
     "analysis::AeroFit": "AeroFit",
     "analysis::fit_aerodynamic": "fit_aerodynamic",
+    "analysis::commission": "commission",
+    "analysis::Commissioning": "Commissioning",
+    "analysis::Trim": "Trim",
+    "analysis::WorkingRange": "WorkingRange",
+    "analysis::static_force_at": "static_force_at",
 }
 
 _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the right-hand side (about a "
@@ -458,8 +463,15 @@ EXCLUDED = {
                                 "read from files and overrides",
     "catenary::dropper_length_errors": "the random dropper-length errors of FeIrregularity (see there)",
     "catenary::StoredModes": "result of ModeStore::load (see there)",
-    "optim::operating_length": "the operating point of `--relaxed` (CLI); Study.operating_length holds it per "
-                               "catenary",
+    "analysis::operating_length": "the operating point of `--relaxed` (CLI) and of commissioning; "
+                                  "Study.operating_length holds it per catenary, Commissioning.operating_length per design",
+    "analysis::Commissioned": "commission returns it as a (Model, Commissioning) pair",
+    "analysis::assess_static": "the static force rows of a commissioned design: in StudyCost.binding and the "
+                               "study report's acceptance margins",
+    "optim::DesignPantographs": "what evaluate runs; its commissioning is StudyCost.commissioning",
+    "optim::design_pantographs": "inside evaluate / evaluate_time; commission gives a design's commissioned model",
+    "optim::objective_name": "Study.objective",
+    "optim::objective_unit": "Study.objective (J in N for 'j2', a ratio for 'sigma_over_mean')",
     "catenary::ModeStore": "the on-disk store of decompositions, chosen by the environment (INERTA_CACHE), "
                            "used by every FeCatenary the module makes",
     "numerics::lowest_modes": "numerical kernel of the modal solve (Lanczos spectrum slicing), tested in C++",

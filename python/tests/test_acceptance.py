@@ -84,3 +84,31 @@ def test_a_pickled_sweep_keeps_what_the_verdict_reads():
     a, b = inerta.acceptance(r, "en50367-ac"), inerta.acceptance(back, "en50367-ac")
     assert np.array_equal(a["passed"], b["passed"]) and np.array_equal(a["value"], b["value"], equal_nan=True)
     assert a[a["criterion"] == "support_uplift"]["assessed"].all()  # the line's limit: assessed now
+
+
+def test_commissioning_relaxes_trims_and_holds_the_static_force_over_the_working_range():
+    # Issue 49: the HSX commissioned on a short line with its stock suspension and with a static spring
+    # in parallel. Relaxed at standstill, both start from the same static force; the trim meets the
+    # target within 0.05 N; over the working range the stock (Maxwell) suspension adds nothing, the
+    # static spring moves the force by about its stiffness through the linkage's ratio squared.
+    hsx = inerta.load_model(model("hsx.yaml"))
+    line = short_line()
+    stock, c0 = inerta.commission(hsx, line, 250 / 3.6, "en50367-ac", suspension="S2-default")
+    assert c0.reached and abs(c0.mean - c0.target) <= 0.05
+    assert c0.target == pytest.approx(0.00047 * 250**2 + 90)
+    assert c0.static_stiffness == 0.0
+    assert c0.range_force == pytest.approx([c0.static_force] * 5, abs=1e-9)
+    assert len(c0.range_model) == 5 and c0.range_model[0] != c0.range_model[-1]  # the frame's own springs
+    spring, c1 = inerta.commission(hsx, line, 250 / 3.6, "en50367-ac", suspension="k1|(k2-c)",
+                                   params={"k1": 2e4, "k2": 1.41e5, "c": 1.044e4},
+                                   working_range=inerta.WorkingRange(0.05, 0.05, 3))
+    assert c1.static_stiffness == pytest.approx(2e4)
+    assert c1.static_force == pytest.approx(c0.static_force, rel=1e-9)  # relaxed where the stock one holds the head
+    assert c1.range_height == pytest.approx([-0.05, 0.0, 0.05])
+    assert c1.range_force[0] > c1.static_force > c1.range_force[2]  # a spring pushes back on a rising wire
+    # The static force the head meets at a height, by the library's rig: what the range is made of.
+    assert inerta.static_force_at(hsx, c0.head_offset) == pytest.approx(c0.static_force, rel=1e-12)
+    assert isinstance(spring, inerta.Model) and isinstance(stock, inerta.Model)
+    t = inerta.Trim()
+    t.speed, t.target = 70.0, 120.0
+    assert (t.speed, t.target, t.periodic) == (70.0, 120.0, False)

@@ -102,6 +102,8 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     out += [inerta.load_lumped_pantograph_data(model("pantograph-3mass.yaml"))]
     out += [inerta.load_acceptance("en50367-ac"),
             inerta.fit_aerodynamic(inerta.load_model(model("pantograph-3mass.yaml")), fe, 80.0, "en50367-ac")]
+    out += [inerta.commission(inerta.load_model(model("pantograph-3mass.yaml")), fe, 80.0, "en50367-ac")[1],
+            inerta.Trim(), inerta.WorkingRange()]
     lp = inerta.butterworth_lowpass(20.0, 1000.0)
     tt = np.arange(2000) / 1000.0
     FF = 100 + np.sin(2 * np.pi * 3 * tt)

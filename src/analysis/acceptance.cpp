@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "inerta/analysis/commission.hpp"
 #include "inerta/analysis/simulate.hpp"
 #include "inerta/error.hpp"
 
@@ -139,6 +140,37 @@ std::vector<CriterionResult> assess(const AcceptanceCriteria& c, const VerdictIn
 
 bool passed(const std::vector<CriterionResult>& rows) {
   return std::all_of(rows.begin(), rows.end(), [](const CriterionResult& r) { return !r.assessed || r.passed; });
+}
+
+std::vector<CriterionResult> assess_static(const AcceptanceCriteria& criteria, const Commissioning& c) {
+  std::vector<CriterionResult> rows;
+  if (!criteria.has_static_force) return rows;
+  const AcceptanceCriteria::StaticForce& s = criteria.static_force;
+  const double f0 = c.static_force, tol = s.tolerance_pct / 100;
+  double lo = s.lower, hi = s.upper;
+  if (!std::isnan(tol) && std::isfinite(f0)) {
+    lo = std::isnan(lo) ? f0 * (1 - tol) : std::max(lo, f0 * (1 - tol));
+    hi = std::isnan(hi) ? f0 * (1 + tol) : std::min(hi, f0 * (1 + tol));
+  }
+  const bool have = !c.range_force.empty();
+  for (const bool upper : {false, true}) {
+    CriterionResult r;
+    r.criterion = upper ? "static_force_upper" : "static_force_lower";
+    r.unit = "N";
+    r.upper = upper;
+    r.limit = upper ? hi : lo;
+    r.value = upper ? c.range_max() : c.range_min();
+    if (std::isnan(r.limit)) continue;
+    if (!have) {
+      r.note = "no static force over the working range (a pantograph without a rig joint, or not commissioned)";
+    } else {
+      r.assessed = true;
+      r.margin = upper ? r.limit - r.value : r.value - r.limit;
+      r.passed = r.margin >= 0;
+    }
+    rows.push_back(r);
+  }
+  return rows;
 }
 
 double relative_margin(const CriterionResult& r) {

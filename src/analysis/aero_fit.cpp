@@ -20,15 +20,22 @@ pantograph::Pantograph with_aerodynamic(const pantograph::Pantograph& p, double 
 
 AeroFit fit_aerodynamic(const pantograph::Pantograph& p, const catenary::Catenary& cat, const catenary::Contact& contact,
                         double v, double target, Statistics statistics, const RunOptions& o, double tol, int max_runs) {
+  auto mean_at = [&](double a) {
+    const SpeedResult r = sweep(with_aerodynamic(p, a), cat, contact, {v}, o).front();
+    if (statistics == Statistics::Filtered && !r.filtered.empty()) return r.filtered.front().mean;
+    return r.stats.mean;
+  };
+  return fit_aerodynamic(mean_at, v, target, tol, max_runs);
+}
+
+AeroFit fit_aerodynamic(const std::function<double(double)>& mean_of, double v, double target, double tol, int max_runs) {
   if (!(v > 0) || !std::isfinite(v)) throw InvalidArgument(fmt::format("aero-fit: speed {} m/s: expected > 0", v));
   if (!std::isfinite(target)) throw InvalidArgument(fmt::format("aero-fit: target {} N: expected a finite force", target));
   AeroFit fit;
   fit.target = target;
   auto mean_at = [&](double a) {
     ++fit.runs;
-    const SpeedResult r = sweep(with_aerodynamic(p, a), cat, contact, {v}, o).front();
-    if (statistics == Statistics::Filtered && !r.filtered.empty()) return r.filtered.front().mean;
-    return r.stats.mean;
+    return mean_of(a);
   };
   double a0 = 0, f0 = mean_at(0);
   fit.mean_without = f0;

@@ -132,7 +132,8 @@ AcceptanceCriteria read(const std::string& f) {
   const YAML::Node root = yaml_load_file(f, "acceptance criteria file");
   if (!root.IsMap()) yaml_fail(f, root, "criteria", "expected a map with name, filter and criteria");
   keys(f, root, "criteria",
-       {"name", "filter", "mean_force", "sigma", "statistical_min", "max_force", "contact_loss", "support_uplift", "target"});
+       {"name", "filter", "mean_force", "sigma", "statistical_min", "max_force", "contact_loss", "support_uplift", "target",
+        "static_contact_force"});
   AcceptanceCriteria c;
   c.source = f;
   if (!root["name"].IsDefined() || !root["name"].IsScalar()) yaml_fail(f, root, "name", "missing; expected the set's name");
@@ -177,8 +178,22 @@ AcceptanceCriteria read(const std::string& f) {
     c.has_target = true;
     c.target = curve(f, s, "target");
   }
+  if (const YAML::Node s = root["static_contact_force"]; s.IsDefined()) {  // {lower, upper, tolerance_pct} (issue 49)
+    const std::string k = "static_contact_force";
+    if (!s.IsMap()) yaml_fail(f, s, k, "expected {lower: N, upper: N, tolerance_pct: %} (at least one)");
+    keys(f, s, k, {"lower", "upper", "tolerance_pct"});
+    c.has_static_force = true;
+    if (s["lower"].IsDefined()) c.static_force.lower = number_in(f, s, k, "lower", 0, 1e4, "a force from 0 to 1e4 N");
+    if (s["upper"].IsDefined()) c.static_force.upper = number_in(f, s, k, "upper", 0, 1e4, "a force from 0 to 1e4 N");
+    if (s["tolerance_pct"].IsDefined())
+      c.static_force.tolerance_pct = number_in(f, s, k, "tolerance_pct", 0, 100, "a percentage from 0 to 100");
+    if (std::isnan(c.static_force.lower) && std::isnan(c.static_force.upper) && std::isnan(c.static_force.tolerance_pct))
+      yaml_fail(f, s, k, "expected at least one of lower, upper, tolerance_pct");
+    if (c.static_force.lower > c.static_force.upper)
+      yaml_fail(f, s["upper"], k + ".upper", fmt::format("{} N is below lower ({} N)", c.static_force.upper, c.static_force.lower));
+  }
   if (c.mean.empty() && c.sigma.empty() && c.statistical_min.empty() && c.max_force.empty() && c.contact_loss.empty() &&
-      c.support_uplift.empty())
+      c.support_uplift.empty() && !c.has_static_force)
     yaml_fail(f, root, "criteria",
               "no criterion; expected at least one of mean_force, sigma, statistical_min, max_force, contact_loss, support_uplift");
   return c;

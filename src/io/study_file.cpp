@@ -128,16 +128,23 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     const std::string k = it->first.as<std::string>();
     static const char* allowed[] = {"name",      "model",     "catenary", "catenaries", "speeds", "layouts",
                                     "search",    "harmonics", "objective", "networks",  "admittance", "method",
-                                    "limits",    "bounds",    "coarse",   "refine",     "pantographs", "set"};
+                                    "limits",    "bounds",    "coarse",   "refine",     "pantographs", "set",
+                                    "trim",      "working_range", "reference"};
     if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) ==
         std::end(allowed))
       yaml_fail(path, it->first, k,
                     "unknown key; expected name, model, catenary, catenaries, speeds, layouts, networks, admittance, search, "
-                    "harmonics, objective, method, limits, bounds, coarse, refine, pantographs, set");
+                    "harmonics, objective, method, limits, bounds, coarse, refine, pantographs, set, trim, working_range, reference");
   }
+  optim::Study::Objective objective = optim::Study::Objective::J2;
   if (const YAML::Node o = root["objective"]; o.IsDefined()) {  // optional: a pantograph study's objective is J2
-    if (!o.IsMap() || o.size() != 1 || !o["type"].IsDefined() || !o["type"].IsScalar() || o["type"].Scalar() != "j2")
-      yaml_fail(path, o, "objective", "a study with catenary: optimises J2; expected objective: {type: j2} or no objective");
+    const bool ok = o.IsMap() && o.size() == 1 && o["type"].IsDefined() && o["type"].IsScalar() &&
+                    (o["type"].Scalar() == "j2" || o["type"].Scalar() == "sigma_over_mean");
+    if (!ok)
+      yaml_fail(path, o.IsMap() && o["type"].IsDefined() ? o["type"] : o, "objective",
+                "a study with catenary: optimises J2 (max σ) or σ/F_m; expected objective: {type: j2}, "
+                "{type: sigma_over_mean} or no objective");
+    if (o["type"].Scalar() == "sigma_over_mean") objective = optim::Study::Objective::SigmaOverMean;
   }
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   auto rel = [&](const YAML::Node& n, const char* key) {
@@ -147,6 +154,7 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
   };
   optim::Study s;
   s.source = path;
+  s.objective = objective;
   s.name = root["name"].IsDefined() ? root["name"].as<std::string>() : path;
   // `set: [NAME.KEY=VALUE]`: overrides of the model (e.g. the aerodynamic uplift aero-fit gives).
   std::vector<std::string> model_sets;
@@ -213,9 +221,24 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
       for (const auto& x : sets) label += (label.empty() ? "" : " ") + x;
       s.catenary_labels.push_back(label.empty() ? "default" : label);
     }
+    s.reference = load_catenary(cat_path).catenary;  // the line as written: where designs are commissioned
   } else {
     CatenaryFile f = load_catenary(cat_path);
     s.catenaries.push_back(f.catenary), s.contact = f.contact, s.catenary_labels.push_back("default");
+    s.reference = f.catenary;
+  }
+  if (const YAML::Node r = root["reference"]; r.IsDefined()) {  // `catenary:` with these overrides: where designs are commissioned
+    if (!r.IsSequence()) yaml_fail(path, r, "reference", "expected a list of catenary overrides, e.g. [catenary.mc1=0]");
+    std::vector<std::string> sets;
+    for (const auto& x : r) {
+      if (!x.IsScalar()) yaml_fail(path, x, "reference", "expected an override NAME.KEY=VALUE");
+      sets.push_back(x.Scalar());
+    }
+    try {
+      s.reference = load_catenary(cat_path, sets).catenary;
+    } catch (const ModelError& e) {
+      yaml_fail(path, r, "reference", e.what());
+    }
   }
   const YAML::Node sp = root["speeds"];
   if (!sp.IsMap()) yaml_fail(path, sp.IsDefined() ? sp : root, "speeds", "expected {from, to, step, unit: kmh|ms}");
@@ -295,6 +318,57 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
       yaml_fail(path, l["acceptance"], "acceptance",
                 "acceptance criteria need a finite line (a finite-element catenary: the 20 Hz statistics, the registrations' uplift)");
   }
+  if (const YAML::Node w = root["working_range"]; w.IsDefined()) {  // m around the reference line's height
+    if (coarse) yaml_fail(path, w, "working_range", "a coarse study takes its study's working range; give it there");
+    if (!w.IsMap()) yaml_fail(path, w, "working_range", "expected {below: m, above: m} (contact-wire heights around the reference line's)");
+    for (auto it = w.begin(); it != w.end(); ++it)
+      if (const std::string k = it->first.Scalar(); k != "below" && k != "above")
+        yaml_fail(path, it->first, "working_range." + k, "unknown key; expected below, above (m)");
+    for (const char* k : {"below", "above"})
+      if (w[k].IsDefined()) {
+        const double v = yaml_number(path, w[k], std::string("working_range.") + k);
+        if (!(v >= 0 && v <= 2))
+          yaml_fail(path, w[k], std::string("working_range.") + k, fmt::format("{} m; expected 0 … 2 m", w[k].Scalar()));
+        (std::string(k) == "below" ? s.working_range.below : s.working_range.above) = v;
+      }
+    if (s.working_range.below + s.working_range.above <= 0)
+      yaml_fail(path, w, "working_range", "below and above are both 0: no range");
+  }
+  if (const YAML::Node t = root["trim"]; t.IsDefined()) {  // trim: {aerodynamic_at: {speed, unit}} (issue 49)
+    if (coarse) yaml_fail(path, t, "trim", "a coarse study is commissioned as its study says; give trim there");
+    const char* expect = "expected trim: {aerodynamic_at: {speed: 250, unit: kmh}} (and target: N without an acceptance set)";
+    if (!t.IsMap() || !t["aerodynamic_at"].IsDefined() || t.size() > 2 || (t.size() == 2 && !t["target"].IsDefined()))
+      yaml_fail(path, t, "trim", expect);
+    const YAML::Node a = t["aerodynamic_at"];
+    if (!a.IsMap()) yaml_fail(path, a, "trim.aerodynamic_at", expect);
+    for (auto it = a.begin(); it != a.end(); ++it)
+      if (const std::string k = it->first.Scalar(); k != "speed" && k != "unit")
+        yaml_fail(path, it->first, "trim.aerodynamic_at." + k, "unknown key; expected speed, unit");
+    if (!a["speed"].IsDefined()) yaml_fail(path, a, "trim.aerodynamic_at.speed", "missing; expected the trim speed");
+    const double v = yaml_number(path, a["speed"], "trim.aerodynamic_at.speed");
+    const std::string u = a["unit"].IsDefined() ? a["unit"].as<std::string>() : "ms";
+    if (u != "kmh" && u != "ms") yaml_fail(path, a["unit"], "trim.aerodynamic_at.unit", "expected kmh or ms");
+    const double speed = v / (u == "kmh" ? 3.6 : 1.0);
+    if (!(speed > 0 && speed < 200)) yaml_fail(path, a["speed"], "trim.aerodynamic_at.speed", "expected a speed > 0 and below 720 km/h");
+    analysis::Trim trim;
+    trim.speed = speed;
+    if (const YAML::Node g = t["target"]; g.IsDefined()) {  // N, where no acceptance set gives it
+      trim.target = yaml_number(path, g, "trim.target");
+      if (!(trim.target > 0 && trim.target < 1e4)) yaml_fail(path, g, "trim.target", "expected a mean contact force > 0 and below 1e4 N");
+    } else if (!s.limits.acceptance || !s.limits.acceptance->has_target) {
+      yaml_fail(path, t, "trim", "the trim's target is the acceptance set's mean-force target: expected limits: {acceptance: "
+                                 "PRESET|FILE} with a target curve (en50367-ac has one), or trim.target: N");
+    } else {
+      trim.target = s.limits.acceptance->target.at(speed * 3.6);
+    }
+    if (s.limits.acceptance)
+      trim.options.filter_cutoff = s.limits.acceptance->filter_cutoff, trim.options.filter_order = s.limits.acceptance->filter_order;
+    trim.periodic = s.method == optim::Study::Method::Periodic;
+    trim.statistics = trim.periodic ? analysis::Statistics::Raw : analysis::Statistics::Filtered;
+    trim.harmonics = s.harmonics;
+    s.trim = trim;
+    s.static_criteria = s.limits.acceptance;
+  }
   if (const YAML::Node b = root["bounds"]; b.IsDefined()) s.bounds = read_bounds(path, b);
   if (!coarse && root["refine"].IsDefined() && !root["coarse"].IsDefined())
     yaml_fail(path, root["refine"], "refine", "refines the optimum of a coarse study: expected coarse: too");
@@ -307,16 +381,20 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     for (auto it = root.begin(); it != root.end(); ++it) {
       const std::string k = it->first.as<std::string>();
       // The coarse search (the periodic fast path) runs one pantograph.
-      if (k != "coarse" && k != "refine" && k != "method" && k != "admittance" && k != "pantographs") merged[k] = it->second;
+      if (k != "coarse" && k != "refine" && k != "method" && k != "admittance" && k != "pantographs" && k != "trim" &&
+          k != "working_range")
+        merged[k] = it->second;
     }
     for (auto it = c.begin(); it != c.end(); ++it) {
       const std::string k = it->first.as<std::string>();
-      static const char* allowed[] = {"catenary", "catenaries", "speeds", "search", "harmonics", "method", "limits"};
+      static const char* allowed[] = {"catenary", "catenaries", "speeds", "search", "harmonics", "method", "limits", "reference"};
       if (std::find_if(std::begin(allowed), std::end(allowed), [&](const char* a) { return k == a; }) == std::end(allowed))
-        yaml_fail(path, it->first, k, "unknown key in coarse; expected catenary, catenaries, speeds, search, harmonics, method, limits");
+        yaml_fail(path, it->first, k,
+                  "unknown key in coarse; expected catenary, catenaries, speeds, search, harmonics, method, limits, reference");
       merged[k] = it->second;
     }
     if (!c["catenaries"].IsDefined() && c["catenary"].IsDefined()) merged.remove("catenaries");
+    if (!c["reference"].IsDefined()) merged.remove("reference");  // the study's overrides are of its own line
     if (!c["limits"].IsDefined() && root["limits"].IsDefined() && root["limits"].IsMap() &&
         (root["limits"]["support_uplift"].IsDefined() || root["limits"]["acceptance"].IsDefined())) {
       YAML::Node l(YAML::NodeType::Map);
@@ -326,6 +404,15 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     }
     auto sub = std::make_shared<optim::Study>(read_study(path, merged, true, operating_lengths));
     sub->name = s.name + " (coarse)";
+    if (s.trim) {  // commissioned the same way, on the coarse study's own line, by its own method
+      analysis::Trim t = *s.trim;
+      t.periodic = sub->method == optim::Study::Method::Periodic;
+      if (t.periodic) t.statistics = analysis::Statistics::Raw;
+      t.harmonics = sub->harmonics;
+      sub->trim = t;
+    }
+    sub->working_range = s.working_range;
+    sub->static_criteria = s.limits.acceptance;  // its static force criterion needs no finite line
     s.refine.starts = 0;
     s.refine.initial_step = 0.25, s.refine.min_step = 0.02, s.refine.max_evaluations = 60;
     // COBYLA by default: on the FE-line study it ended better than the pattern search and BOBYQA

@@ -63,8 +63,9 @@ Json study_results_json(const std::string& study, const optim::StudyCost& defaul
 
 std::string study_table(const optim::Study& study, const optim::StudyCost& def,
                         const std::vector<optim::LayoutResult>& results) {
+  const std::string J = study.objective == optim::Study::Objective::J2 ? "J2 [N]" : "σ/F_m";
   std::string t = fmt::format("\n  {:<12} {:<10} {:>11} {:>11} {:>11} {:>9} {:>11} {:>10} {:>10}\n", "layout", "network",
-                              "b [kg]", "c [N·s/m]", "k [N/m]", "J2 [N]", "vs default", "v [km/h]", "F_m [N]");
+                              "b [kg]", "c [N·s/m]", "k [N/m]", J, "vs default", "v [km/h]", "F_m [N]");
   bool marked = false;
   for (const auto& r : results) {
     auto v = [&](const char* k) {  // '*': ended on a bound

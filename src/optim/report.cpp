@@ -29,21 +29,15 @@ SpeedCurve curve_of(const std::string& label, const std::vector<analysis::SpeedR
   return c;
 }
 
-// The pantograph with `net` in place of its suspension, relaxed at catenary i's operating length.
-pantograph::Pantograph candidate(const Study& study, const network::Network& net, std::size_t i) {
-  pantograph::Pantograph p = study.pantograph;
-  p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
-  return p;
-}
-
 }  // namespace
 
 std::vector<SpeedCurve> sigma_curves(const Study& study, const network::Network& net) {
   if (study.method == Study::Method::Time) return sigma_curves_time(study, net);
   std::vector<SpeedCurve> curves;
+  const DesignPantographs d = design_pantographs(study, net);
   for (std::size_t i = 0; i < study.catenaries.size(); ++i)
     curves.push_back(
-        curve_of(study.catenary_labels[i], analysis::sweep_periodic(candidate(study, net, i), *study.catenaries[i],
+        curve_of(study.catenary_labels[i], analysis::sweep_periodic(d.pantographs[i], *study.catenaries[i],
                                                                     study.contact, study.speeds, study.harmonics)));
   return curves;
 }
@@ -61,8 +55,9 @@ std::vector<SpeedCurve> sigma_curves_time(const Study& study, const network::Net
   const int total = static_cast<int>(study.catenaries.size() * study.speeds.size());
   std::mutex mutex;
   int done = 0;
+  const DesignPantographs d = design_pantographs(study, net);
   tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
-    pantograph::Pantograph m = candidate(study, net, i);
+    pantograph::Pantograph m = d.pantographs[i];
     m.model.options.centripetal = centripetal;
     results[i] = analysis::sweep(m, *study.catenaries[i], study.contact, study.speeds, options, [&](int, int) {
       std::lock_guard<std::mutex> lock(mutex);
@@ -118,9 +113,10 @@ std::vector<ForceHistory> contact_histories(const Study& study, const network::N
   std::exception_ptr error;
   std::mutex mutex;
   const analysis::RunOptions defaults;
+  const DesignPantographs d = design_pantographs(study, net);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
     try {
-      const auto sys = study.catenaries[i]->couple(candidate(study, net, i), study.contact, speed);
+      const auto sys = study.catenaries[i]->couple(d.pantographs[i], study.contact, speed);
       const analysis::RunOptions o = defaults;
       analysis::SpeedResult r = analysis::run_speed(*sys, o);
       const std::size_t per = r.F.size() / static_cast<std::size_t>(r.spans),

@@ -19,23 +19,35 @@
 
 namespace inerta::optim {
 
-double operating_length(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
-                        const catenary::Contact& contact) {
-  const int act = pantograph::suspension_index(pantograph.model);
-  auto sys = catenary.couple(pantograph, contact, 1.0);
-  sys->equilibrate();
-  const catenary::ContactId c = sys->contact(0);
-  return sys->model(c).forces[static_cast<std::size_t>(act)]->length(sys->model(c), sys->state(c));
-}
-
 std::vector<double> operating_lengths(const Study& s) {
   std::vector<double> L;
   for (const auto& cat : s.catenaries) try {
-      L.push_back(operating_length(s.pantograph, *cat, s.contact));
+      L.push_back(analysis::operating_length(s.pantograph, *cat, s.contact));
     } catch (const ModelError& e) {
       throw ModelError(fmt::format("{}: {}", s.source, e.what()));
     }
   return L;
+}
+
+const char* objective_unit(const Study& study) { return study.objective == Study::Objective::J2 ? "N" : ""; }
+const char* objective_name(const Study& study) { return study.objective == Study::Objective::J2 ? "J2" : "sigma/F_m"; }
+
+DesignPantographs design_pantographs(const Study& study, const network::Network& net) {
+  DesignPantographs d;
+  if (study.commissioned()) {  // once, on the reference line; every catenary takes it as it is
+    if (!study.reference) throw InvalidArgument(study.source + ": a commissioned study (trim:) needs its reference line");
+    analysis::Commissioned c = analysis::commission(study.pantograph, &net, *study.reference, study.contact, *study.trim,
+                                                    study.pantograph.rig_joint >= 0 ? &study.working_range : nullptr);
+    d.pantographs.assign(study.catenaries.size(), c.pantograph);
+    d.commissioning = std::move(c.record);
+    return d;
+  }
+  for (std::size_t i = 0; i < study.catenaries.size(); ++i) {  // the thesis's: relaxed under each catenary
+    pantograph::Pantograph p = study.pantograph;
+    p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
+    d.pantographs.push_back(std::move(p));
+  }
+  return d;
 }
 
 network::Network default_suspension(const Study& study) {
@@ -47,10 +59,13 @@ network::Network default_suspension(const Study& study) {
   }
 }
 
-StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps) {
+StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps,
+                  const std::optional<analysis::Commissioning>& commissioning) {
   const ContactLimits& lim = study.limits;
   StudyCost c;
   c.J = -1;
+  c.commissioning = commissioning;
+  const bool ratio = study.objective == Study::Objective::SigmaOverMean;
   double excess = 0, worst = 0;
   auto breach = [&](double rel, const std::string& what) {  // rel: relative excess > 0
     excess += rel;
@@ -69,8 +84,14 @@ StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::Sp
       const std::vector<analysis::ContactStatistics> one{x.stats};
       const auto& contacts = x.contacts.empty() ? one : x.contacts;
       const std::string at = fmt::format(" at {:.0f} km/h{}", x.speed * 3.6, where);
-      for (const analysis::ContactStatistics& st : contacts) {
-        if (st.std > c.J) c.J = st.std, c.speed = x.speed, c.mean = st.mean, c.catenary = static_cast<int>(i);
+      for (std::size_t k = 0; k < contacts.size(); ++k) {
+        const analysis::ContactStatistics& st = contacts[k];
+        // The objective: σ, or σ/F_m of the statistics the σ criterion reads (20 Hz where the line gives them).
+        const analysis::ContactStatistics& sf = k < x.filtered.size() ? x.filtered[k] : st;
+        const double j = ratio ? sf.std / sf.mean : st.std;
+        if (j > c.J || std::isnan(j))
+          c.J = std::isnan(j) ? INFINITY : j, c.speed = x.speed, c.mean = ratio ? sf.mean : st.mean,
+          c.sigma = ratio ? sf.std : st.std, c.catenary = static_cast<int>(i);
         c.mean_min = std::isnan(c.mean_min) ? st.mean : std::min(c.mean_min, st.mean);
         c.mean_max = std::isnan(c.mean_max) ? st.mean : std::max(c.mean_max, st.mean);
         c.loss_pct = std::max(c.loss_pct, st.loss_pct);
@@ -103,6 +124,16 @@ StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::Sp
           }
     }
   }
+  const analysis::AcceptanceCriteria* statics = lim.acceptance ? lim.acceptance.get() : study.static_criteria.get();
+  if (statics && commissioning)  // the static contact force over the working range (issue 49)
+    for (const analysis::CriterionResult& r : analysis::assess_static(*statics, *commissioning)) {
+      if (!r.assessed) continue;
+      const double rel = analysis::relative_margin(r);
+      if (std::isnan(c.binding_margin) || rel < c.binding_margin) c.binding_margin = rel, c.binding = r.criterion + " at standstill";
+      if (!r.passed)
+        breach(-rel, fmt::format("{} {:.4g} {} {} {:.4g} {} ({}) over the working range", r.criterion, r.value, r.unit,
+                                 r.upper ? ">" : "<", r.limit, r.unit, statics->name));
+    }
   c.feasible = excess == 0;
   c.excess = excess;
   return c;
@@ -111,14 +142,13 @@ StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::Sp
 StudyCost evaluate(const Study& study, const network::Network& net) {
   if (study.method == Study::Method::Time) return evaluate_time(study, net);
   require_evaluable(net);
+  const DesignPantographs d = design_pantographs(study, net);
   std::vector<std::vector<analysis::SpeedResult>> sweeps;
   for (std::size_t i = 0; i < study.catenaries.size(); ++i) {
-    pantograph::Pantograph p = study.pantograph;
-    p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
-    sweeps.push_back(analysis::sweep_periodic(p, *study.catenaries[i], study.contact, study.speeds, study.harmonics));
+    sweeps.push_back(analysis::sweep_periodic(d.pantographs[i], *study.catenaries[i], study.contact, study.speeds, study.harmonics));
     if (std::any_of(sweeps.back().begin(), sweeps.back().end(), [](const auto& x) { return !x.stable(); })) break;
   }
-  return cost_of(study, sweeps);
+  return cost_of(study, sweeps, d.commissioning);
 }
 
 double estimated_evaluation_seconds(const Study& study) {
@@ -136,18 +166,17 @@ double estimated_evaluation_seconds(const Study& study) {
 
 StudyCost evaluate_time(const Study& study, const network::Network& net) {
   // Every (catenary, speed) run in parallel: the catenaries here, their speeds in analysis::sweep.
+  const DesignPantographs d = design_pantographs(study, net);
   std::vector<std::vector<analysis::SpeedResult>> sweeps(study.catenaries.size());
   tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
-    pantograph::Pantograph p = study.pantograph;
-    p.model = pantograph::with_suspension(p.model, net, study.operating_length[i]);
     std::vector<catenary::PantographOnLine> train;
-    for (double x0 : study.positions) train.push_back({p, x0, study.contact});
+    for (double x0 : study.positions) train.push_back({d.pantographs[i], x0, study.contact});
     analysis::RunOptions o;
     if (study.limits.acceptance)  // the criteria's filter for the 20 Hz statistics
       o.filter_cutoff = study.limits.acceptance->filter_cutoff, o.filter_order = study.limits.acceptance->filter_order;
     sweeps[i] = analysis::sweep(train, *study.catenaries[i], study.speeds, o);
   });
-  return cost_of(study, sweeps);
+  return cost_of(study, sweeps, d.commissioning);
 }
 
 network::Network design_network(const std::string& layout, const network::Params& values) {

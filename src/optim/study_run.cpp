@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <mutex>
 
@@ -67,18 +68,32 @@ std::string StudyOutcome::recheck_csv() const {
 }
 
 std::string StudyOutcome::refined_csv() const {
+  // A commissioned study (issue 49): the stock suspension ranked with the refined designs, the objective's
+  // σ and F_m, and what commissioning set (a, G(0), the static force and its range).
+  const bool commissioned = study && study->commissioned();
   std::string csv =
       "rank,network,coarse_network,coarse_rank,J2_coarse,J2_start,J2,vs_default_pct,feasible,violation,binding,"
-      "binding_margin,evaluations,budget_exhausted,values\n";
+      "binding_margin,evaluations,budget_exhausted,values";
+  csv += commissioned ? ",design,objective,sigma_N,mean_N,a,static_stiffness,static_force,static_force_min,static_force_max\n" : "\n";
   for (std::size_t k = 0; k < results.size() && k < refinements.size(); ++k) {
     const LayoutResult& r = results[k];
-    const StructureEntry& e = entries[refinements[k].entry];
+    const bool stock = refinements[k].entry == Refinement::kStock;
+    const StructureEntry* e = stock ? nullptr : &entries[refinements[k].entry];
     std::string values;
     for (const auto& [name, v] : r.values) values += fmt::format("{}{}={:.10g}", values.empty() ? "" : ";", name, v);
-    csv += fmt::format("{},\"{}\",\"{}\",{},{:.10g},{:.10g},{:.10g},{:.6g},{},\"{}\",\"{}\",{:.6g},{},{},\"{}\"\n", k + 1,
-                       r.expression, e.expression, refinements[k].coarse_rank, e.J, r.coarse_here.J, r.cost.J,
-                       100 * (r.cost.J - default_cost.J) / default_cost.J, r.cost.feasible ? 1 : 0, r.cost.violation,
-                       r.cost.binding, r.cost.binding_margin, r.evaluations, r.budget_exhausted ? 1 : 0, values);
+    csv += fmt::format("{},\"{}\",\"{}\",{},{:.10g},{:.10g},{:.10g},{:.6g},{},\"{}\",\"{}\",{:.6g},{},{},\"{}\"", k + 1,
+                       r.expression, e ? e->expression : "-", refinements[k].coarse_rank, e ? e->J : coarse_default_cost.J,
+                       stock ? r.cost.J : r.coarse_here.J, r.cost.J, 100 * (r.cost.J - default_cost.J) / default_cost.J,
+                       r.cost.feasible ? 1 : 0, r.cost.violation, r.cost.binding, r.cost.binding_margin, r.evaluations,
+                       r.budget_exhausted ? 1 : 0, values);
+    if (commissioned) {
+      const analysis::Commissioning c = r.cost.commissioning.value_or(analysis::Commissioning{});
+      csv += fmt::format(",{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", stock ? "default" : "refined",
+                         objective_name(*study), r.cost.sigma, r.cost.mean, c.a, c.static_stiffness, c.static_force,
+                         c.range_min(), c.range_max());
+    } else {
+      csv += "\n";
+    }
   }
   return csv;
 }
@@ -119,6 +134,50 @@ std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntr
   return out;
 }
 
+// Ranks 1…n of x (ties: their mean rank).
+std::vector<double> ranks(const std::vector<double>& x) {
+  std::vector<std::size_t> i(x.size());
+  for (std::size_t k = 0; k < i.size(); ++k) i[k] = k;
+  std::stable_sort(i.begin(), i.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+  std::vector<double> r(x.size());
+  for (std::size_t k = 0; k < i.size();) {
+    std::size_t e = k;
+    while (e + 1 < i.size() && x[i[e + 1]] == x[i[k]]) ++e;
+    for (std::size_t j = k; j <= e; ++j) r[i[j]] = 0.5 * static_cast<double>(k + e) + 1;
+    k = e + 1;
+  }
+  return r;
+}
+
+// Spearman's ρ of the coarse stage's ranking (the refinement order: 1 … n) and this study's (by the
+// refined costs, penalised) over the refined networks.
+double spearman(const std::vector<LayoutResult>& refined) {
+  const std::size_t n = refined.size();
+  if (n < 2) return NAN;
+  std::vector<double> coarse(n), fine(n);
+  for (std::size_t k = 0; k < n; ++k) coarse[k] = static_cast<double>(k), fine[k] = refined[k].cost.penalised();
+  const std::vector<double> a = ranks(coarse), b = ranks(fine);
+  const double mean = 0.5 * static_cast<double>(n + 1);
+  double sab = 0, saa = 0, sbb = 0;
+  for (std::size_t k = 0; k < n; ++k) sab += (a[k] - mean) * (b[k] - mean), saa += (a[k] - mean) * (a[k] - mean), sbb += (b[k] - mean) * (b[k] - mean);
+  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : NAN;
+}
+
+// The stock suspension as a study result: its expression and element values, its cost.
+LayoutResult stock_result(const network::Network& baseline, const StudyCost& cost) {
+  LayoutResult r;
+  r.layout = r.expression = network::to_string(baseline, false);
+  std::function<void(const network::Network&)> leaves = [&](const network::Network& n) {
+    if (n.is_element()) r.values[n.name] = n.value;
+    for (const auto& c : n.children) leaves(c);
+  };
+  leaves(baseline);
+  r.cost = cost;
+  r.evaluations = 1;
+  r.stock = true;
+  return r;
+}
+
 // Multi-fidelity `layouts: all`: the study's refine_networks best distinct reduced networks of the coarse
 // search (feasible first, by the coarse ranking), each refined here from its coarse optimum; ranked by the
 // cost here (penalised: within the limits first), ties by the coarse rank. Sets o.refinements.
@@ -148,10 +207,16 @@ std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, S
     LayoutResult& r = refined[k];
     r.coarse_cost.J = e.J, r.coarse_cost.feasible = e.feasible, r.coarse_evaluations = e.evaluations;
   }
+  o.rank_agreement = spearman(refined);
+  // A commissioned study: the stock suspension competes in the final ranking (issue 49), commissioned and
+  // judged as every refined design; ahead of a design it ties with.
+  if (study.commissioned()) refined.push_back(stock_result(o.baseline, o.default_cost)), from.push_back({Refinement::kStock, 0});
   std::vector<std::size_t> idx(refined.size());
   for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-  std::stable_sort(idx.begin(), idx.end(),
-                   [&](std::size_t a, std::size_t b) { return refined[a].cost.penalised() < refined[b].cost.penalised(); });
+  std::stable_sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+    const double x = refined[a].cost.penalised(), y = refined[b].cost.penalised();
+    return x < y || (x == y && refined[a].stock && !refined[b].stock);
+  });
   std::vector<LayoutResult> out;
   for (std::size_t k : idx) out.push_back(refined[k]), o.refinements.push_back(from[k]);
   return out;
@@ -230,6 +295,7 @@ StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEve
   if (verified >= 0) best = static_cast<std::size_t>(verified);
   o.best = best_of(o.results[best], best);
   o.best.verified = verified >= 0;
+  o.stock_best = o.results[best].stock;
   events.searches_done(o);
   if (!study.admittance_degrees.empty()) {
     std::vector<BoundCandidate> cands{

@@ -89,7 +89,18 @@ struct AcceptanceCriteria {
 
   bool has_target = false;  ///< the mean-force target curve (aero-fit), F(v) with v in km/h
   SpeedCurve target;
+
+  /// The static contact force at standstill over the working range (issue 49; EN 50206-1, TSI
+  /// LOC&PAS): every height's force F(h) within [lower, upper] and within ± tolerance_pct % of the force
+  /// at the reference height F₀ (the commissioned static force). NaN: that edge not checked.
+  struct StaticForce {
+    double lower = NAN, upper = NAN;  ///< N
+    double tolerance_pct = NAN;       ///< %
+  };
+  bool has_static_force = false;
+  StaticForce static_force;
 };
+
 
 /// What the verdict of one pantograph at one speed reads.
 struct VerdictInput {
@@ -124,6 +135,14 @@ double counted_loss_pct(const std::vector<long>& loss_runs, long samples, double
 
 /// The lengths of the maximal runs of F_i ≤ 0 in F, in order.
 std::vector<long> loss_runs(const std::vector<double>& F);
+
+struct Commissioning;  // commission.hpp
+
+/// The static contact force rows (static_force_lower, static_force_upper) of a commissioned design: the
+/// smallest and largest force over its working range against the band's edges (the tighter of
+/// [lower, upper] and F₀ (1 ∓ tolerance)). Not assessed without the forces (a pantograph without a rig
+/// joint). Empty if the set has no static force criterion.
+std::vector<CriterionResult> assess_static(const AcceptanceCriteria& criteria, const Commissioning& commissioning);
 
 /// true if every assessed row passed (rows not assessed do not count).
 bool passed(const std::vector<CriterionResult>& rows);

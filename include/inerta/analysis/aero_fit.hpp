@@ -1,6 +1,8 @@
 #pragma once
 // The aerodynamic uplift that brings a pantograph's mean contact force to a target at one speed
 // (`inerta pantograph aero-fit`, docs/contact-quality.md "Aerodynamic uplift").
+#include <functional>
+
 #include "inerta/analysis/acceptance.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/catenary.hpp"
@@ -29,5 +31,9 @@ pantograph::Pantograph with_aerodynamic(const pantograph::Pantograph& p, double 
 AeroFit fit_aerodynamic(const pantograph::Pantograph& p, const catenary::Catenary& catenary,
                         const catenary::Contact& contact, double speed, double target, Statistics statistics,
                         const RunOptions& options = {}, double tolerance = 0.05, int max_runs = 10);
+
+/// The same secant iteration on any mean force F(a) at speed v (m/s): e.g. the periodic fast path's.
+AeroFit fit_aerodynamic(const std::function<double(double)>& mean_at, double speed, double target,
+                        double tolerance = 0.05, int max_runs = 10);
 
 }  // namespace inerta::analysis

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "inerta/analysis/acceptance.hpp"
+#include "inerta/analysis/commission.hpp"
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/catenary/catenary.hpp"
 #include "inerta/mbs/model.hpp"
@@ -91,18 +92,46 @@ struct Study {
   double lo = 0.1, hi = 1e9;  ///< bounds of every free value (SI), 0 and ∞ reachable
   int harmonics = 8;
   /// Per catenary: the actuator's length at the static equilibrium of the pantograph with its own
-  /// suspension under that catenary. Candidate networks are relaxed there, so they carry no static
-  /// load and the static (≈ mean) contact force stays the design's, as the thesis requires.
+  /// suspension under that catenary. Without `trim`, candidate networks are relaxed there (the
+  /// thesis's procedure), so they carry no static load and the static (≈ mean) contact force stays
+  /// the design's under every catenary.
   std::vector<double> operating_length;
+  /// `trim: {aerodynamic_at: {speed, unit}}` (issue 49): each design, the default included, is
+  /// commissioned once on `reference` (analysis::commission: its static springs relaxed at standstill,
+  /// its aerodynamic uplift a v² fitted so that the mean contact force meets the target there); every
+  /// catenary then runs with those values, nothing re-set. The target: the acceptance set's curve.
+  std::optional<analysis::Trim> trim;
+  /// The study's `catenary:` as written (no variant's overrides): the line designs are commissioned on.
+  std::shared_ptr<const catenary::Catenary> reference;
+  /// `working_range: {below, above}` (m): the contact-wire heights around the reference line's over which
+  /// a commissioned design's static contact force is computed (the static_force criterion).
+  analysis::WorkingRange working_range;
+  /// The set whose static_contact_force criterion judges a commissioned design (the study's acceptance set;
+  /// a coarse study, which cannot take the others on a lumped line, takes its study's).
+  std::shared_ptr<const analysis::AcceptanceCriteria> static_criteria;
+  /// `objective: {type: j2 | sigma_over_mean}`: J = max σ (N), or max σ / F_m (σ and F_m as the acceptance
+  /// set's σ criterion reads them: the 20 Hz statistics of a finite line; the raw ones of a lumped line).
+  enum class Objective { J2, SigmaOverMean };
+  Objective objective = Objective::J2;
+  bool commissioned() const { return trim.has_value(); }
 };
+
+/// The unit of a study's J: "N" (J2) or "" (σ/F_m).
+const char* objective_unit(const Study& study);
+/// The objective's name for reports: "J2" or "sigma/F_m".
+const char* objective_name(const Study& study);
+
+/// A design as the study runs it: the pantograph under each catenary (commissioned once: the same for
+/// every catenary; else relaxed under each) and, when commissioned, what commissioning set.
+struct DesignPantographs {
+  std::vector<pantograph::Pantograph> pantographs;  ///< one per study.catenaries
+  std::optional<analysis::Commissioning> commissioning;
+};
+DesignPantographs design_pantographs(const Study& study, const network::Network& net);
 
 /// Per catenary: the actuator's length at the static equilibrium of the pantograph with its own
 /// suspension under that catenary (Study::operating_length).
 std::vector<double> operating_lengths(const Study& study);
-/// The same for one pantograph under one catenary (`inerta sweep --suspension … --relaxed`). ModelError
-/// if the pantograph has no actuator.
-double operating_length(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
-                        const catenary::Contact& contact);
 
 struct StudyCost {
   double J = 0;      ///< max over catenaries of σ_max, N
@@ -127,6 +156,10 @@ struct StudyCost {
   double binding_margin = NAN;
   // The limited quantities, worst over catenaries and speeds (for the report).
   double mean_min = NAN, mean_max = NAN, loss_pct = 0, statistical_min = NAN, uplift = NAN;
+  /// σ and F_m of the worst σ/F_m (the objective sigma_over_mean), N.
+  double sigma = NAN;
+  /// A commissioned study (Study::trim): what commissioning set for this design.
+  std::optional<analysis::Commissioning> commissioning;
   /// What the search minimises and designs are ranked by: J if every limit holds, else
   /// 1e100 (1 + excess): such a design ranks after every one that keeps them, the smaller excess first.
   double penalised() const { return feasible ? J : 1e100 * (1 + excess); }
@@ -142,7 +175,8 @@ StudyCost evaluate(const Study& study, const network::Network& net);
 
 /// The limits applied to the sweeps of each catenary (sets J, penalised, feasible, violation and the
 /// worst limited quantities); `sweeps[i]` under study.catenaries[i].
-StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps);
+StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps,
+                  const std::optional<analysis::Commissioning>& commissioning = std::nullopt);
 
 struct LayoutResult {
   std::string layout, expression;
@@ -161,6 +195,9 @@ struct LayoutResult {
   std::vector<std::pair<network::Params, double>> ends;
   int refined_from = 0;                 ///< multi-fidelity: the refinement starts it took (refine_candidates at most)
   std::vector<std::string> at_bounds;   ///< free values that ended on the search's limits (lo, hi, 0 or ∞)
+  /// The pantograph's own suspension, ranked with the others (a commissioned multi-fidelity study's final
+  /// ranking, issue 49: the recommendation is never worse than it); layout = its expression.
+  bool stock = false;
 };
 
 /// The estimated wall time of one evaluation of a design (analysis::estimated_sweep_seconds of each

@@ -123,8 +123,9 @@ struct Recheck {
 
 /// Multi-fidelity `layouts: all`: where a refined network came from.
 struct Refinement {
-  std::size_t entry = 0;  ///< index in StudyOutcome::entries (the coarse search's)
-  int coarse_rank = 0;    ///< its rank among the refined by the coarse search (1: best)
+  std::size_t entry = 0;  ///< index in StudyOutcome::entries (the coarse search's); kStock: the stock suspension
+  int coarse_rank = 0;    ///< its rank among the refined by the coarse search (1: best); 0 for the stock one
+  static constexpr std::size_t kStock = static_cast<std::size_t>(-1);
 };
 
 /// The design a study recommends.
@@ -158,6 +159,11 @@ struct StudyOutcome {
   std::vector<StructureEntry> entries;
   std::vector<std::size_t> order;        ///< ranking(entries)
   std::vector<Refinement> refinements;  ///< multi-fidelity `layouts: all`: one per result
+  /// Multi-fidelity `layouts: all`: Spearman's rank correlation of the coarse stage's ranking and this
+  /// study's over the refined networks (1: the same order; NaN: fewer than two).
+  double rank_agreement = NAN;
+  /// The recommendation is the stock suspension: no design ranked ahead of it (a commissioned study).
+  bool stock_best = false;
   std::vector<Recheck> rechecks;        ///< `layouts: all`: ranked by the time-domain J2
   std::vector<AdmittanceBound> admittance;
   std::optional<Report> report;         ///< with StudyOptions::report (J2)
