@@ -121,7 +121,8 @@ OptimiseArgs oa;
 // terminal), the structure search's progress, the tables after the searches, the bounds, the report's steps.
 class Printer : public optim::StudyEvents {
  public:
-  Printer(const optim::Study& study, bool tty) : study_(study), tty_(tty), structure_(structure_progress("N")) {}
+  Printer(const optim::Study& study, bool tty)
+      : study_(study), tty_(tty), u_(optim::objective_unit(study)), structure_(structure_progress(optim::objective_unit(study))) {}
   using optim::StudyEvents::searched;
 
   void searching(std::size_t i, int start, int evals, double best) override {
@@ -155,8 +156,8 @@ class Printer : public optim::StudyEvents {
     std::fflush(stdout);
   }
   void refined(std::size_t k, const optim::LayoutResult& r) override {
-    fmt::print("  {:>2}. {:<28} here {:.4f} N → refined {:.4f} N after {} evaluations{}{}\n", k + 1, r.expression,
-               r.coarse_here.J, r.cost.J, r.evaluations, r.budget_exhausted ? " (budget exhausted)" : "",
+    fmt::print("  {:>2}. {:<28} here {:.4f}{} → refined {:.4f}{} after {} evaluations{}{}\n", k + 1, r.expression,
+               r.coarse_here.J, *u_ ? " N" : "", r.cost.J, *u_ ? " N" : "", r.evaluations, r.budget_exhausted ? " (budget exhausted)" : "",
                r.cost.feasible ? "" : "; outside the limits: " + r.cost.violation);
     std::fflush(stdout);
   }
@@ -284,6 +285,7 @@ class Printer : public optim::StudyEvents {
 
   const optim::Study& study_;
   bool tty_;
+  const char* u_;  ///< the objective's unit ("N" or "")
   optim::StructureProgressFn structure_;
   std::function<void(const optim::AdmittanceBound&)> bound_;
   std::string current_;

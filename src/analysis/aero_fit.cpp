@@ -35,7 +35,11 @@ AeroFit fit_aerodynamic(const std::function<double(double)>& mean_of, double v, 
   fit.target = target;
   auto mean_at = [&](double a) {
     ++fit.runs;
-    return mean_of(a);
+    const double m = mean_of(a);
+    if (!std::isfinite(m))  // e.g. no stable periodic solution: no mean force to fit
+      throw NumericalError(fmt::format("aero-fit: the mean contact force at {:.4g} km/h with a = {:.6g} N·s²/m² is {} "
+                                       "(no steady state)", v * 3.6, a, m));
+    return m;
   };
   double a0 = 0, f0 = mean_at(0);
   fit.mean_without = f0;
@@ -45,6 +49,7 @@ AeroFit fit_aerodynamic(const std::function<double(double)>& mean_of, double v, 
   while (std::abs(f1 - target) > tol && fit.runs < max_runs) {
     if (f1 == f0) break;
     const double a2 = std::max(0.0, a1 + (target - f1) * (a1 - a0) / (f1 - f0));  // secant
+    if (!std::isfinite(a2)) break;
     a0 = a1, f0 = f1, a1 = a2, f1 = mean_at(a1);
   }
   fit.a = a1, fit.mean = f1;

@@ -257,7 +257,10 @@ bool is_model_study(const std::string& path) {
   const YAML::Node root = yaml_load_file(path, "study file");
   if (!is_map(root)) return false;
   const YAML::Node o = root["objective"];
-  return o.IsDefined() && !(is_map(o) && is_scalar(o["type"]) && o["type"].Scalar() == "j2");
+  // A pantograph study has catenary: (its objective j2 or sigma_over_mean); a model study has none.
+  if (root["catenary"].IsDefined()) return false;
+  return o.IsDefined() && !(is_map(o) && is_scalar(o["type"]) &&
+                            (o["type"].Scalar() == "j2" || o["type"].Scalar() == "sigma_over_mean"));
 }
 
 optim::ModelStudy load_model_study(const std::string& path, bool evaluate_baseline) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "inerta/analysis/aero_fit.hpp"
 #include "inerta/analysis/commission.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/acceptance_file.hpp"
@@ -129,6 +130,9 @@ TEST(Commission, BadInputIsNamed) {
   pantograph::Pantograph no_rig = hsx;
   no_rig.rig_joint = -1;
   EXPECT_THROW(analysis::static_force_at(no_rig, 0.0), ModelError);
+  // A mean force that is not a number (a design without a steady state) is a numerical failure, never a fit.
+  EXPECT_THROW(analysis::fit_aerodynamic([](double) { return NAN; }, 70.0, 100.0), NumericalError);
+  EXPECT_THROW(analysis::fit_aerodynamic([](double a) { return a > 0 ? NAN : 50.0; }, 70.0, 100.0), NumericalError);
   analysis::Trim t = trim_250();
   t.target = NAN;
   EXPECT_THROW(analysis::commission(hsx, nullptr, *line.catenary, line.contact, t), InvalidArgument);

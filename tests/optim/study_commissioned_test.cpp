@@ -34,14 +34,7 @@ const std::string kHead = "name: commissioned\nmodel: " + kDir + "/models/hsx.ya
                           "speeds: {from: 200, to: 200, step: 10, unit: kmh}\n"
                           "limits: {acceptance: en50367-ac}\n";
 
-std::string error_of(const std::string& name, const std::string& text) {
-  try {
-    io::load_study(write_study(name, text), false);
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::string& name, const std::string& text) { return inerta::testing::study_error(name, text); }
 
 double reference_length(const pantograph::Pantograph& p) {
   const mbs::Model& m = p.model;

@@ -56,14 +56,7 @@ const std::string kProduct =
     "       [line.spans=3, solver.cutoff=30, irregularity.dropper_length_std=0.01, irregularity.seed=2]]\n"
     "    - [[], [contact_wire.tension=24200]]\n";
 
-std::string error_of(const std::string& name, const std::string& text) {
-  try {
-    io::load_study(write_study(name, text), false);
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string error_of(const std::string& name, const std::string& text) { return inerta::testing::study_error(name, text); }
 }  // namespace
 
 TEST(StudyFeAll, TheRefinedRankingEqualsABruteForceEvaluationOfTheSameCandidates) {

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "inerta/error.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/io/study_file.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/dynamics.hpp"
 #include "inerta/solve/integrator.hpp"
@@ -20,6 +22,16 @@ inline std::string write_study(const std::string& name, const std::string& text)
   const auto p = inerta::testing::temp_dir() / name;
   std::ofstream(p) << text;
   return p.string();
+}
+
+/// The ModelError message of loading the study `text` (written to the file `name`), or "" if it loads.
+inline std::string study_error(const std::string& name, const std::string& text) {
+  try {
+    io::load_study(write_study(name, text), false);
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 struct Series {
