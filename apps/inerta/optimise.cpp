@@ -165,8 +165,8 @@ class Printer : public optim::StudyEvents {
     if (study_.all && study_.coarse) {
       int evaluations = 0;
       for (const auto& e : o.entries) evaluations += e.evaluations;
-      fmt::print("coarse search: {} networks, {} evaluations; the default there {:.4f} N\n", o.entries.size(), evaluations,
-                 o.coarse_default_cost.J);
+      fmt::print("coarse search: {} networks, {} evaluations; the default there {:.4f}{}\n", o.entries.size(), evaluations,
+                 o.coarse_default_cost.J, *u_ ? " N" : "");
       print_refined(o);
     } else if (study_.all) {
       print_structure(o.entries, o.default_cost.J, "N");
@@ -178,8 +178,9 @@ class Printer : public optim::StudyEvents {
     } else {
       fmt::print("{}", io::study_table(study_, o.default_cost, o.results));
     }
-    fmt::print("default suspension ({}) J2 = {:.3f} N at {:.0f} km/h; wall {:.1f} s\n", network::to_string(o.baseline, true),
-               o.default_cost.J, o.default_cost.speed * 3.6, o.seconds);
+    fmt::print("default suspension ({}) {} = {} at {:.0f} km/h; wall {:.1f} s\n", network::to_string(o.baseline, true),
+               optim::objective_name(study_), *u_ ? fmt::format("{:.3f} N", o.default_cost.J) : fmt::format("{:.4f}", o.default_cost.J),
+               o.default_cost.speed * 3.6, o.seconds);
     bound_ = print_admittance_bound(o.default_cost.J, "N");
     std::fflush(stdout);
   }

@@ -302,29 +302,37 @@ def _main(argv=None):
         print(f"study {args.study}: on {n} Dask worker(s) at {client.scheduler.address}"
               + (f", {'resuming from' if resuming else 'checkpoint'} {checkpoint}" if checkpoint else ""), flush=True)
 
+        objective, unit = ("J2", " N") if study.objective == "j2" else ("sigma/F_m", "")
+
         def report(event, *values):
             if event == "searched":
                 i, r = values
-                print(f"  [{i + 1}/{len(study.layouts)}] {study.layouts[i]:<12} J = {r.cost.J:.4f} N after "
+                print(f"  [{i + 1}/{len(study.layouts)}] {study.layouts[i]:<12} J = {r.cost.J:.4f}{unit} after "
                       f"{r.evaluations} evaluations", flush=True)
             elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
-                print(f"  [{values[0]}/{values[1]}] networks, best J2 so far {values[2]:.4f} N", flush=True)
+                print(f"  [{values[0]}/{values[1]}] networks, best {objective} so far {values[2]:.4f}{unit}", flush=True)
             elif event == "refining":
                 print(f"\n  refining the best {len(values[0])} distinct reduced networks of the coarse search on this study:",
                       flush=True)
             elif event == "refined":
                 k, r = values
-                print(f"    {k + 1}. {r.expression:<28} here {r.coarse_here.J:.4f} N -> refined {r.cost.J:.4f} N after "
+                print(f"    {k + 1}. {r.expression:<28} here {r.coarse_here.J:.4f}{unit} -> refined {r.cost.J:.4f}{unit} after "
                       f"{r.evaluations} evaluations" + ("" if r.cost.feasible else f"; outside the limits: {r.cost.violation}"),
                       flush=True)
             elif event == "searches_done":
                 o = values[0]
                 if study.all_networks and study.coarse is not None:
-                    print(f"\n  the refined networks, ranked by this study's J2 (default {o.default_cost.J:.4f} N):")
+                    print(f"\n  the refined networks, ranked by this study's {objective} (default {o.default_cost.J:.4f}{unit}):")
                     for r, f in zip(o.results, o.refinements):
+                        if r.stock:  # the stock suspension, ranked with them (a commissioned study)
+                            print(f"    {'default ' + r.expression:<28} {r.cost.J:.4f}{unit}"
+                                  + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
+                            continue
                         e = o.entries[f.entry]
-                        print(f"    {r.expression:<28} coarse {e.J:.4f} N (#{f.coarse_rank}), start {r.coarse_here.J:.4f} N, "
-                              f"refined {r.cost.J:.4f} N" + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
+                        print(f"    {r.expression:<28} coarse {e.J:.4f}{unit} (#{f.coarse_rank}), start {r.coarse_here.J:.4f}{unit}, "
+                              f"refined {r.cost.J:.4f}{unit}" + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
+                    if o.rank_agreement == o.rank_agreement:
+                        print(f"    rank agreement of the coarse and the fine stage (Spearman): {o.rank_agreement:.3f}")
                 elif study.all_networks:
                     print("\n  best networks (periodic fast path):")
                     for r in o.results[:10]:
@@ -336,7 +344,7 @@ def _main(argv=None):
                               + (f"{c.time.J:.4f} N" if not c.failure else f"failed ({c.failure})"))
                 else:
                     print(_inerta.study_table(study, o.default_cost, o.results), end="")
-                print(f"default suspension J2 = {o.default_cost.J:.3f} N at {o.default_cost.speed * 3.6:.0f} km/h; "
+                print(f"default suspension {objective} = {o.default_cost.J:.4f}{unit} at {o.default_cost.speed * 3.6:.0f} km/h; "
                       f"wall {o.seconds:.1f} s", flush=True)
             elif event == "bound":
                 b = values[0]

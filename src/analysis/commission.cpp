@@ -76,6 +76,7 @@ Commissioned commission(const pantograph::Pantograph& pantograph, const network:
     p.model = pantograph::with_suspension(p.model, *suspension, rec.operating_length);
     const network::Network s = network::simplify(*suspension);
     rec.static_stiffness = s.kind == network::Network::Kind::Open ? 0.0 : network::realise(s).static_stiffness();
+    if (std::abs(rec.static_stiffness) < 1e-6) rec.static_stiffness = 0;  // the realisation's round-off of a G(0) = 0
   }
   // The static contact force there, and the head's height: the rig's reaction with the head held where
   // the line holds it at standstill (the pantograph's own equilibrium with the line).
