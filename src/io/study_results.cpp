@@ -46,6 +46,16 @@ Json study_results_json(const std::string& study, const optim::StudyCost& defaul
     l["evaluations"] = r.evaluations;
     if (!r.cost.feasible) l["feasible"] = false, l["violation"] = r.cost.violation;
     if (!r.cost.binding.empty()) l["binding"] = r.cost.binding, l["binding_margin"] = r.cost.binding_margin;
+    if (r.stock) l["stock"] = true;
+    if (const auto& c = r.cost.commissioning)
+      l["commissioning"] = Json{{"a", c->a},
+                                {"static_stiffness", c->static_stiffness},
+                                {"static_force", c->static_force},
+                                {"static_force_min", c->range_min()},
+                                {"static_force_max", c->range_max()},
+                                {"operating_length", c->operating_length},
+                                {"trim_mean", c->mean},
+                                {"sigma", r.cost.sigma}};
     if (r.coarse_evaluations > 0) {
       Json cv = Json::object();
       for (const auto& [k, v] : r.coarse_values) cv[k] = value_json(v);
@@ -108,12 +118,23 @@ std::vector<std::string> write_study_results(const std::string& dir, const std::
   fs::create_directories(dir);
   const std::string csv_path = (fs::path(dir) / "results.csv").string(),
                     json_path = (fs::path(dir) / "results.json").string();
-  std::string csv = "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations\n";
-  for (const auto& r : results)
-    csv += fmt::format("{},{},{},{},{},{:.6g},{:.4g},{:.6g},{:.6g},{}\n", csv_field(r.layout),
+  // A commissioned study (issue 49): what commissioning set for each design, and which row is the stock one.
+  const bool commissioned = std::any_of(results.begin(), results.end(), [](const auto& r) { return r.cost.commissioning.has_value(); });
+  std::string csv = "layout,network,b,c,k,J2,reduction_pct,v_kmh,mean_N,evaluations";
+  csv += commissioned ? ",stock,sigma_N,a,static_stiffness,static_force,static_force_min,static_force_max\n" : "\n";
+  for (const auto& r : results) {
+    csv += fmt::format("{},{},{},{},{},{:.6g},{:.4g},{:.6g},{:.6g},{}", csv_field(r.layout),
                        csv_field(r.expression), csv_field(value_text(r.values, "b")), csv_field(value_text(r.values, "c")),
                        csv_field(value_text(r.values, "k")), r.cost.J,
                        reduction_pct(r.cost, default_cost), r.cost.speed * 3.6, r.cost.mean, r.evaluations);
+    if (!commissioned) {
+      csv += "\n";
+      continue;
+    }
+    const analysis::Commissioning c = r.cost.commissioning.value_or(analysis::Commissioning{});
+    csv += fmt::format(",{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g}\n", r.stock ? 1 : 0, r.cost.sigma, c.a, c.static_stiffness,
+                       c.static_force, c.range_min(), c.range_max());
+  }
   write_text_file(csv_path, csv);
   write_json(json_path, study_results_json(study, default_cost, results));
   return {csv_path, json_path};

@@ -4,12 +4,15 @@
 // competes in the final ranking and a study where nothing beats it recommends it; the file's errors.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <string>
 
 #include "inerta/analysis/commission.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/study_file.hpp"
+#include "inerta/io/study_results.hpp"
 #include "inerta/mbs/network_strut.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/optim/study.hpp"
@@ -113,6 +116,12 @@ TEST(StudyCommissioned, WhenNothingBeatsTheStockSuspensionTheStudyRecommendsIt) 
   for (std::size_t k = 1; k < o.results.size(); ++k)
     EXPECT_GE(o.results[k].cost.penalised(), o.results.front().cost.penalised()) << o.results[k].expression;
   EXPECT_NE(o.refined_csv().find(",default,sigma/F_m,"), std::string::npos) << o.refined_csv();
+  // results.csv: what commissioning set for each design, the stock row marked.
+  const auto files = io::write_study_results((inerta::testing::temp_dir() / "stock-out").string(), s.name, o.default_cost, o.results);
+  std::ifstream in(files.front());
+  const std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(csv.find(",stock,sigma_N,a,static_stiffness,static_force,static_force_min,static_force_max\n"), std::string::npos) << csv;
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), static_cast<long>(o.results.size()) + 1);
 }
 
 TEST(StudyCommissioned, BadTrimAndWorkingRangeAreFileErrorsNamingTheKey) {
