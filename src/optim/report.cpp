@@ -223,6 +223,13 @@ Report make_report(const Study& study, const std::vector<LayoutResult>& results,
     r.margins = acceptance_margins(study, r.baseline.label, runs_default);
     const auto best = acceptance_margins(study, r.best.label, runs_best);
     r.margins.insert(r.margins.end(), best.begin(), best.end());
+    // A commissioned study: the static contact force over the working range, a row of each design at
+    // standstill on the reference line (speed 0), like every criterion (issue 49).
+    if (study.commissioned())
+      for (const auto* d : {&r.baseline, &r.best})
+        if (const auto c = design_pantographs(study, d->net).commissioning)
+          for (const analysis::CriterionResult& x : analysis::assess_static(*study.limits.acceptance, *c))
+            r.margins.push_back({d->label, "reference line at standstill", 0.0, 0, x, x.assessed ? analysis::relative_margin(x) : NAN});
   } else {
     r.sigma_default = sigma_curves(study, r.baseline.net);
     r.sigma_best = sigma_curves(study, r.best.net);

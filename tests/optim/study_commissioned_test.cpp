@@ -103,8 +103,21 @@ TEST(StudyCommissioned, WhenNothingBeatsTheStockSuspensionTheStudyRecommendsIt) 
                            "refine: {best_networks: 3, initial_step: 0.3, min_step: 0.1, max_evaluations: 3}\n";
   const optim::Study s = io::load_study(write_study("stock.yaml", text));
   ASSERT_TRUE(s.coarse && s.coarse->commissioned() && s.coarse->static_criteria);
-  const optim::StudyOutcome o = optim::run_study(s);
+  optim::StudyOptions opts;
+  opts.report = true;
+  opts.report_options.frf_f = {1.0, 2.0};
+  const optim::StudyOutcome o = optim::run_study(s, opts);
   ASSERT_EQ(o.results.size(), o.refinements.size());
+  // The report's margins carry the static force rows of both designs, at standstill on the reference line.
+  ASSERT_TRUE(o.report.has_value());
+  int statics = 0;
+  for (const auto& m : o.report->margins)
+    if (m.result.criterion.rfind("static_force_", 0) == 0) {
+      ++statics;
+      EXPECT_EQ(m.catenary, "reference line at standstill");
+      EXPECT_TRUE(m.result.assessed && m.result.passed) << m.design;
+    }
+  EXPECT_EQ(statics, 4);
   int stock = 0;
   for (std::size_t k = 0; k < o.results.size(); ++k) stock += o.results[k].stock ? 1 : 0;
   EXPECT_EQ(stock, 1);
