@@ -345,15 +345,13 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
     if (d_.anchor.pinned) {
       g_anchor_force_ = Eigen::VectorXd::Zero(n_dofs_);
       for (int w = 0; w < 2; ++w)
-        for (const int e : {0, N - 2}) {
+        for (const auto& [e, b] : {std::pair{0, 0}, std::pair{N - 2, 2}}) {  // (element, the anchor's local w): node 0, node N − 1
           const Eigen::Matrix4d ke = beam_stiffness(wires[w]->EI, wires[w]->tension, x_[e + 1] - x_[e]);
           const std::array<int, 4> dd{dof(w, e, 0), dof(w, e, 1), dof(w, e + 1, 0), dof(w, e + 1, 1)};
-          for (int b : {0, 2}) {
-            if (dd[b] >= 0 || (e == 0) != (b == 0)) continue;  // the anchor's own w: node 0 or N − 1
-            const double gb = g_of(x_[static_cast<std::size_t>(e + b / 2)]);
-            for (int a = 0; a < 4; ++a)
-              if (dd[a] >= 0) kg[w][dd[a]] += ke(a, b) * gb, g_anchor_force_[dd[a]] += ke(a, b) * gb;
-          }
+          if (dd[b] >= 0) continue;
+          const double gb = g_of(x_[static_cast<std::size_t>(e + b / 2)]);
+          for (int a = 0; a < 4; ++a)
+            if (dd[a] >= 0) kg[w][dd[a]] += ke(a, b) * gb, g_anchor_force_[dd[a]] += ke(a, b) * gb;
         }
     }
   }
