@@ -134,7 +134,8 @@ int aero_fit() {
   analysis::WorkingRange range;
   {
     const auto colon = a.working_range.find(':');
-    if (colon == std::string::npos || !CLI::detail::lexical_cast(a.working_range.substr(0, colon), range.below) ||
+    const bool decimal = a.working_range.find_first_not_of("0123456789.eE+-:") == std::string::npos;  // no hex, inf, nan
+    if (colon == std::string::npos || !decimal || !CLI::detail::lexical_cast(a.working_range.substr(0, colon), range.below) ||
         !CLI::detail::lexical_cast(a.working_range.substr(colon + 1), range.above) || !(range.below >= 0 && range.below <= 2) ||
         !(range.above >= 0 && range.above <= 2) || range.below + range.above <= 0)
       throw CLI::ValidationError("--working-range", fmt::format("'{}': expected BELOW:ABOVE in m, each 0 … 2, not both 0", a.working_range));

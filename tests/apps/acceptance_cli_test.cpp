@@ -135,6 +135,21 @@ TEST_F(AcceptanceCli, AeroFitBringsTheMeanForceToTheTarget) {
           quote(f) + " --speed 300 --unit kmh");
   EXPECT_EQ(r.code, 2);
   EXPECT_TRUE(contains(r.err, "no mean-force 'target' curve")) << r.err;
+  // Commissioning's options (issue 49): a working range that is not two decimal heights of 0 … 2 m, a
+  // --param without --suspension, an unknown layout: usage errors naming the option.
+  for (const char* w : {"nan:0.1", "0x1:1", "inf:1", "1e300:0.1", "0:0", "-0.1:0.1", "0.1"}) {
+    r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + kLine +
+            " --acceptance en50367-ac --speed 300 --unit kmh --working-range " + w);
+    EXPECT_EQ(r.code, 105) << w << r.err;
+    EXPECT_TRUE(contains(r.err, "--working-range")) << w << r.err;
+  }
+  r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + kLine + " --acceptance en50367-ac --speed 300 --param k=1");
+  EXPECT_EQ(r.code, 105) << r.err;
+  EXPECT_TRUE(contains(r.err, "--param")) << r.err;
+  r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + kLine +
+          " --acceptance en50367-ac --speed 300 --suspension 'k-q'");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "--suspension 'k-q'")) << r.err;
 }
 
 }  // namespace test_apps_acceptance_cli
