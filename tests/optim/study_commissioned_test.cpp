@@ -4,8 +4,11 @@
 // competes in the final ranking and a study where nothing beats it recommends it; the file's errors.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -84,6 +87,7 @@ TEST(StudyCommissioned, EachDesignIsRelaxedOnceForEveryCatenaryAndAStaticSpringF
   const optim::StudyCost c = optim::evaluate(s, optim::default_suspension(s));
   ASSERT_TRUE(c.commissioning.has_value());
   EXPECT_NEAR(c.J, c.sigma / c.mean, 1e-15);
+  for (const char* f : {"legacy.yaml", "commissioned.yaml"}) std::filesystem::remove(inerta::testing::temp_dir() / f);
 }
 
 TEST(StudyCommissioned, WhenNothingBeatsTheStockSuspensionTheStudyRecommendsIt) {
@@ -135,6 +139,8 @@ TEST(StudyCommissioned, WhenNothingBeatsTheStockSuspensionTheStudyRecommendsIt) 
   const std::string csv((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(csv.find(",stock,sigma_N,a,static_stiffness,static_force,static_force_min,static_force_max\n"), std::string::npos) << csv;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), static_cast<long>(o.results.size()) + 1);
+  std::filesystem::remove_all(inerta::testing::temp_dir() / "stock-out");
+  std::filesystem::remove(inerta::testing::temp_dir() / "stock.yaml");
 }
 
 TEST(StudyCommissioned, BadTrimAndWorkingRangeAreFileErrorsNamingTheKey) {
@@ -152,6 +158,7 @@ TEST(StudyCommissioned, BadTrimAndWorkingRangeAreFileErrorsNamingTheKey) {
                                 "/models/catenary.yaml\nspeeds: {from: 200, to: 200, step: 10, unit: kmh}\n"
                                 "trim: {aerodynamic_at: {speed: 250, unit: kmh}}\nlayouts: [S2-5]\n";
   EXPECT_NE(error_of("t7.yaml", no_target).find("acceptance"), std::string::npos);
+  for (int k = 1; k <= 7; ++k) std::filesystem::remove(inerta::testing::temp_dir() / fmt::format("t{}.yaml", k));
 }
 
 }  // namespace test_optim_study_commissioned
