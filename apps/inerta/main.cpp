@@ -17,6 +17,7 @@ using namespace inerta;
 
 int main(int argc, char** argv) {
   io::remove_partial_outputs_on_signal();  // Ctrl-C leaves no half-written file (io/files.hpp)
+  io::protect_inputs();                     // no output replaces a file the command read
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
   const std::vector<cli::Command> commands{

@@ -169,10 +169,14 @@ void print_line_outputs(std::FILE* info, const analysis::CoupledSimulation& r,
              1e3 * worst, x_worst, r.uplift.size());
 }
 
+std::string line_file_stem(const std::string& out) {
+  return out.size() > 4 && out.ends_with(".csv") ? out.substr(0, out.size() - 4) : out;
+}
+
 // Beside OUT.csv: OUT.supports.csv (uplift of every support over time) and OUT.psd.csv (PSD of each
 // pantograph's contact force in the section).
 void write_line_files(std::FILE* info, const std::string& out, const analysis::CoupledSimulation& r) {
-  const std::string stem = out.size() > 4 && out.ends_with(".csv") ? out.substr(0, out.size() - 4) : out;
+  const std::string stem = line_file_stem(out);
   {
     OutputFile f(stem + ".supports.csv");
     std::vector<const analysis::TimeHistory*> hs{&r.supports};
@@ -242,6 +246,10 @@ int cmd_simulate(const SimulateArgs& a) {
                                                       "this run", std::string(kFeCheaper) + ", or a shorter --t-end");
                                          });
     for (const auto& note : panto.model.notes) fmt::print(info, "note: {}\n", note);
+    if (!a.out.empty())  // every input is read now (the line's CSV files too): no output may replace one
+      for (const std::string& o : {a.out, cli::acceptance_path(a.out), line_file_stem(a.out) + ".supports.csv",
+                                   line_file_stem(a.out) + ".psd.csv"})
+        io::check_output_path(o);
     std::vector<catenary::PantographOnLine> train;
     for (double x0 : x0s) train.push_back({panto, x0, cat.contact});
     analysis::CoupledOptions co;

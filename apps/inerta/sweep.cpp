@@ -103,6 +103,8 @@ int cmd_sweep(const SweepArgs& a) {
                                                     std::string(kFeCheaper) + ", or fewer --speeds");
                                        });
   for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
+  if (!a.out.empty())  // every input is read now (the line's CSV files too): no output may replace one
+    for (const std::string& out : {a.out, cli::acceptance_path(a.out)}) io::check_output_path(out);
   analysis::RunOptions o;
   o.integrator.method = solve::parse_method(a.integrator);
   o.integrator.rtol = a.rtol;

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -50,7 +51,41 @@ extern "C" void remove_partial_and_die(int sig) {
 
 std::string reason() { return std::strerror(errno); }
 
+// The inputs read since protect_inputs(): no output may replace them (identified by device and inode,
+// so another name of the same file, a link or a relative path, is the same input).
+struct Input {
+  dev_t dev;
+  ino_t ino;
+  std::string path;
+};
+std::mutex inputs_mutex;
+bool protecting = false;
+std::vector<Input> inputs_read;
+
+void record_input(const struct stat& st, const std::string& path) {
+  std::lock_guard lock(inputs_mutex);
+  if (!protecting) return;
+  for (const Input& i : inputs_read)
+    if (i.dev == st.st_dev && i.ino == st.st_ino) return;
+  inputs_read.push_back({st.st_dev, st.st_ino, path});
+}
+
+// Throws if `out` exists and is an input read so far.
+void refuse_input(const std::string& out) {
+  struct stat st {};
+  if (::stat(out.c_str(), &st) != 0) return;
+  std::lock_guard lock(inputs_mutex);
+  for (const Input& i : inputs_read)
+    if (i.dev == st.st_dev && i.ino == st.st_ino)
+      throw std::runtime_error(fmt::format("'{}' is the input file '{}': refusing to overwrite it; give another output name", out, i.path));
+}
+
 }  // namespace
+
+void protect_inputs() {
+  std::lock_guard lock(inputs_mutex);
+  protecting = true;
+}
 
 std::string read_input_text(const std::string& path, const std::string& what) {
   // Opened without blocking (a FIFO named as an input must not hang open()), then checked on the
@@ -68,6 +103,7 @@ std::string read_input_text(const std::string& path, const std::string& what) {
                                  S_ISDIR(st.st_mode) ? "a folder" : "a device, FIFO or socket", what));
   if (static_cast<std::size_t>(st.st_size) > max_input_bytes)
     throw ModelError(fmt::format("{}: {} bytes, larger than the 256 MiB accepted for the {}", path, st.st_size, what));
+  record_input(st, path);
   std::string text;
   char buffer[65536];
   for (;;) {
@@ -94,6 +130,7 @@ void check_output_path(const std::string& out, const std::vector<std::string>& i
   for (const auto& in : inputs)
     if (!in.empty() && fs::exists(p, ec) && fs::equivalent(p, fs::path(in), ec))
       throw std::runtime_error(fmt::format("'{}' is the input file '{}': refusing to overwrite it; give another output name", out, in));
+  refuse_input(out);
   if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) return;  // a device or FIFO: written directly
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec))
@@ -151,6 +188,7 @@ void OutputFile::commit() {
     throw std::runtime_error(fmt::format("cannot write '{}': {}", path_, reason()));
   }
   if (!temp_.empty()) {
+    refuse_input(path_);  // an input read after this output was opened (the temporary file is removed)
     if (std::rename(temp_.c_str(), path_.c_str()) != 0)
       throw std::runtime_error(fmt::format("cannot write '{}': {}", path_, reason()));
     unregister_partial(temp_.c_str());
@@ -198,10 +236,12 @@ void prepare_output_folder(const std::string& dir, const std::vector<std::string
                                       dir, present.size(),
                                       fmt::join(present.begin(), present.begin() + std::min<std::ptrdiff_t>(4, std::ssize(present)), ", "),
                                       present.size() > 4 ? ", ..." : ""));
-  if (force)
+  if (force) {
+    for (const auto& name : owned) refuse_input((d / name).string());  // none removed if one is an input
     for (const auto& name : owned)
       if (fs::is_regular_file(d / name, ec) && !fs::remove(d / name, ec))
         throw InvalidArgument(fmt::format("cannot remove '{}': {}", (d / name).string(), ec.message()));
+  }
   if (::access(d.c_str(), W_OK) != 0)
     throw InvalidArgument(fmt::format("cannot write in the folder '{}': {}", dir, reason()));
 }

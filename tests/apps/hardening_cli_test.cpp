@@ -262,6 +262,34 @@ TEST_F(Hardening, OutputEqualToAnInputIsRefused) {
   EXPECT_EQ(r.code, 1) << r.err;
 }
 
+// Issue 52: every input a command reads — criteria, a CSV the line reads, the study — is safe from every
+// output it writes, derived names (OUT.acceptance.csv) included.
+TEST_F(Hardening, NoOutputReplacesAnyInput) {
+  const std::string crit = write("c.yaml", text_of(std::string(INERTA_SOURCE_DIR) + "/criteria/en50367-ac.yaml"));
+  const std::string before = text_of(crit);
+  const std::string sim = "simulate " + quote(model("pantograph-3mass.yaml")) + " --catenary " + quote(model("catenary-fe.yaml")) +
+                          " --speed 250 --unit kmh --t-end 0.05 --acceptance " + quote(crit);
+  Result r = run(sim + " --out " + quote(crit));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "is the input file")) << r.err;
+  EXPECT_EQ(text_of(crit), before);
+  // The derived name: --out X.csv writes X.acceptance.csv beside it.
+  const std::string derived = write("x.acceptance.csv", text_of(crit));
+  r = run("simulate " + quote(model("pantograph-3mass.yaml")) + " --catenary " + quote(model("catenary-fe.yaml")) +
+          " --speed 250 --unit kmh --t-end 0.05 --acceptance " + quote(derived) + " --out " + quote((dir_ / "x.csv").string()));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "is the input file")) << r.err;
+  EXPECT_EQ(text_of(derived), before);
+  // A height-error CSV the line reads.
+  std::string dz = "x,dz\n0,0\n100000,0\n";
+  const std::string csv = write("dz.csv", dz);
+  r = run("simulate " + quote(model("pantograph-3mass.yaml")) + " --catenary " + quote(model("catenary-fe.yaml")) +
+          " --set irregularity.height_errors=" + quote(csv) + " --speed 250 --unit kmh --t-end 0.05 --out " + quote(csv));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "is the input file")) << r.err;
+  EXPECT_EQ(text_of(csv), dz);
+}
+
 TEST_F(Hardening, UnwritableOutIsFoundBeforeTheComputation) {
   Result r = run("sweep " + quote(model("hsx.yaml")) + " --catenary " + quote(model("catenary.yaml")) +
                  " --speeds 50:5:300 --unit kmh --out " + quote((dir_ / "no" / "such" / "s.csv").string()));

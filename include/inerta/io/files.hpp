@@ -13,8 +13,14 @@
 
 namespace inerta::io {
 
-/// Throws std::runtime_error if `out` names the same file as one of `inputs` ("would overwrite its
-/// input"), or is a directory, or its folder does not exist or is not writable. Empty `out`: nothing.
+/// From now on every file read by read_input_text is protected: check_output_path, OutputFile's commit
+/// and prepare_output_folder refuse to replace it ("'out' is the input file 'in'"), whatever name the
+/// output gives it (the CLI calls it first: every input a command reads — model, line, criteria, study,
+/// CSV — is safe from every output it writes, derived names included).
+void protect_inputs();
+
+/// Throws std::runtime_error if `out` names the same file as one of `inputs` or as an input protected
+/// by protect_inputs() ("refusing to overwrite it"), or is a directory, or its folder does not exist or is not writable. Empty `out`: nothing.
 void check_output_path(const std::string& out, const std::vector<std::string>& inputs = {});
 
 /// Largest input file read, bytes (models, catenaries, studies, CSV tables).
