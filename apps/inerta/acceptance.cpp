@@ -23,10 +23,20 @@
 namespace inerta::cli {
 
 void add_acceptance_options(CLI::App* app, AcceptanceArgs& a) {
-  app->add_option("--acceptance", a.criteria,
-                  "Judge the run by an acceptance criteria set: a preset (en50367-ac, en50367-dc3) or a criteria file "
-                  "(docs/contact-quality.md); prints the verdict and writes OUT.acceptance.csv");
-  app->add_flag("--strict", a.strict, "With --acceptance: exit 6 if a criterion fails (default: a report, exit 0)");
+  CLI::Option* acc =
+      app->add_option("--acceptance", a.criteria,
+                      "Judge the run by an acceptance criteria set: a preset (en50367-ac, en50367-dc3) or a criteria file "
+                      "(docs/contact-quality.md); prints the verdict and writes OUT.acceptance.csv")
+          ->check(CLI::Validator(
+              [](std::string& s) {
+                return s.empty() ? std::string("an empty name: give a preset (en50367-ac, en50367-dc3) or a criteria file")
+                                 : std::string();
+              },
+              "PRESET|FILE"));
+  app->add_flag("--strict", a.strict,
+                "With --acceptance: exit 6 unless the verdict is PASS (a criterion failed, or nothing could be assessed; "
+                "default: a report, exit 0)")
+      ->needs(acc);
 }
 
 std::string acceptance_path(const std::string& out) {
@@ -65,18 +75,30 @@ int report_acceptance(std::FILE* info, const analysis::AcceptanceCriteria& c, co
       if (last != x.speed) failing_speeds.push_back(fmt::format("{:.4g}", v)), last = x.speed;
     }
   }
-  const bool ok = failed.empty();
+  const analysis::Verdict verdict = analysis::judge(rows);
   std::vector<std::string> which;
   for (const auto& [k, n] : failed) which.push_back(fmt::format("{} ({} row{})", k, n, n > 1 ? "s" : ""));
-  if (ok)
-    fmt::print(info, "verdict: PASS (every assessed criterion at every speed)\n");
-  else
-    fmt::print(info, "verdict: FAIL at {} {}: {}\n", fmt::join(failing_speeds, ", "), unit, fmt::join(which, ", "));
+  const std::string unassessed =
+      verdict.not_assessed.empty() ? "" : fmt::format("; not assessed: {}", fmt::join(verdict.not_assessed, ", "));
+  switch (verdict.status) {
+    case analysis::Verdict::Status::kPass:
+      fmt::print(info, "verdict: PASS ({}){}\n",
+                 verdict.not_assessed.empty() ? "every criterion at every speed" : "every assessed criterion at every speed",
+                 unassessed);
+      break;
+    case analysis::Verdict::Status::kFail:
+      fmt::print(info, "verdict: FAIL at {} {}: {}{}\n", fmt::join(failing_speeds, ", "), unit, fmt::join(which, ", "), unassessed);
+      break;
+    case analysis::Verdict::Status::kNotAssessed:
+      fmt::print(info, "verdict: NOT ASSESSED (no criterion could be judged on this run: see the notes above){}\n",
+                 strict ? "; --strict: exit status 6" : "");
+      break;
+  }
   if (const std::string path = acceptance_path(out); !path.empty()) {
     io::write_acceptance_csv(path, rows);
     fmt::print(info, "wrote {}\n", path);
   }
-  return ok || !strict ? 0 : exit_acceptance_failed;
+  return verdict.pass() || !strict ? 0 : exit_acceptance_failed;
 }
 
 // ---- inerta pantograph aero-fit -------------------------------------------------------------------

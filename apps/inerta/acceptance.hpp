@@ -25,7 +25,7 @@ void add_acceptance_options(CLI::App* app, AcceptanceArgs& a);
 
 /// Prints the verdict table (per speed, per pantograph, per criterion), writes OUT.acceptance.csv
 /// when `out` is a file (OUT = out without .csv), and returns 0, or exit_acceptance_failed with
-/// --strict if an assessed criterion failed. `kmh`: speeds printed in km/h.
+/// --strict unless the verdict is PASS (a criterion failed, or none was assessed: analysis::judge). `kmh`: speeds printed in km/h.
 int report_acceptance(std::FILE* info, const analysis::AcceptanceCriteria& criteria,
                       const std::vector<analysis::VerdictRow>& rows, const std::string& out, bool strict, bool kmh);
 

@@ -210,8 +210,8 @@ int cmd_check_reduction(CheckReductionArgs a) {
         if (io::status_text(vd[i].result) != std::string(io::status_text(vm[i].result)))
           differ.push_back(fmt::format("{} (direct {} {:.4g}, modal {} {:.4g})", vd[i].result.criterion, io::status_text(vd[i].result),
                                        vd[i].result.value, io::status_text(vm[i].result), vm[i].result.value));
-      fmt::print("  acceptance {}: direct {}, modal {}{}\n", criteria->name, analysis::passed(vd) ? "PASS" : "FAIL",
-                 analysis::passed(vm) ? "PASS" : "FAIL",
+      fmt::print("  acceptance {}: direct {}, modal {}{}\n", criteria->name, analysis::judge(vd).text(),
+                 analysis::judge(vm).text(),
                  differ.empty() ? "; every criterion the same" : fmt::format("; criteria that differ: {}", fmt::join(differ, "; ")));
     }
   }

@@ -1033,6 +1033,16 @@ def acceptance_presets() -> list[str]: ...
 def acceptance(result: Union[SweepResult, CoupledResult],
                criteria: Union[str, os.PathLike[str], AcceptanceCriteria]) -> np.ndarray: ...
 
+class Verdict:
+    @property
+    def status(self) -> str: ...  # 'PASS', 'FAIL' or 'NOT ASSESSED'
+    failed: list[str]
+    not_assessed: list[str]
+    def __bool__(self) -> bool: ...
+
+def verdict(result: Union[SweepResult, CoupledResult],
+            criteria: Union[str, os.PathLike[str], AcceptanceCriteria]) -> Verdict: ...
+
 class AeroFit:
     reached: bool
     a: float

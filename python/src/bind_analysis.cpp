@@ -3,6 +3,7 @@
 // keep the library's vectors; time histories are NumPy views of them (no copy, no per-sample
 // Python objects).
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -796,21 +797,36 @@ void bind_analysis(py::module_& m) {
         "An acceptance criteria set: a preset name (en50367-ac, en50367-dc3; inerta.acceptance_presets()) or a criteria "
         "file. ModelError with file, line and key for a bad file.");
   m.def("acceptance_presets", &io::acceptance_presets, "The names of the shipped acceptance criteria presets.");
-  m.def("acceptance", [](const py::object& result, const py::object& criteria) {
+  // The verdict rows of a sweep or coupled result against a preset, file or AcceptanceCriteria.
+  static const auto verdict_rows = [](const py::object& result, const py::object& criteria, const char* fn) {
     analysis::AcceptanceCriteria loaded;
     const analysis::AcceptanceCriteria* c = nullptr;
     if (py::isinstance<analysis::AcceptanceCriteria>(criteria))
       c = &criteria.cast<const analysis::AcceptanceCriteria&>();
     else
       loaded = io::load_acceptance(path_arg(criteria)), c = &loaded;
-    std::vector<analysis::VerdictRow> rows;
-    if (py::isinstance<SweepResult>(result))
-      rows = analysis::verdict(*c, result.cast<const SweepResult&>().r);
-    else if (py::isinstance<CoupledResult>(result))
-      rows = analysis::verdict(*c, *result.cast<const CoupledResult&>().sim);
-    else
-      throw py::type_error(fmt::format("acceptance: result: expected the result of inerta.sweep or inerta.simulate_coupled, "
-                                       "got {}", py::str(py::type::of(result)).cast<std::string>()));
+    if (py::isinstance<SweepResult>(result)) return analysis::verdict(*c, result.cast<const SweepResult&>().r);
+    if (py::isinstance<CoupledResult>(result)) return analysis::verdict(*c, *result.cast<const CoupledResult&>().sim);
+    throw py::type_error(fmt::format("{}: result: expected the result of inerta.sweep or inerta.simulate_coupled, got {}", fn,
+                                     py::str(py::type::of(result)).cast<std::string>()));
+  };
+  py::class_<analysis::Verdict>(m, "Verdict",
+                                "The verdict of a run: status 'PASS', 'FAIL' or 'NOT ASSESSED' (no criterion could be judged: "
+                                "never a PASS); failed and not_assessed name the criteria.")
+      .def_property_readonly("status", [](const analysis::Verdict& v) { return std::string(v.text()); })
+      .def_readonly("failed", &analysis::Verdict::failed)
+      .def_readonly("not_assessed", &analysis::Verdict::not_assessed)
+      .def("__bool__", &analysis::Verdict::pass)
+      .def("__repr__", [](const analysis::Verdict& v) {
+        return fmt::format("Verdict({}, failed=[{}], not_assessed=[{}])", v.text(), fmt::join(v.failed, ", "), fmt::join(v.not_assessed, ", "));
+      });
+  m.def("verdict", [](const py::object& result, const py::object& criteria) {
+    return analysis::judge(verdict_rows(result, criteria, "verdict"));
+  }, py::arg("result"), py::arg("criteria"),
+        "The verdict line of inerta.acceptance's rows: Verdict(status 'PASS' | 'FAIL' | 'NOT ASSESSED', failed, "
+        "not_assessed); bool(v) is True only for PASS.");
+  m.def("acceptance", [](const py::object& result, const py::object& criteria) {
+    const std::vector<analysis::VerdictRow> rows = verdict_rows(result, criteria, "acceptance");
     py::list items;
     for (const auto& x : rows)
       items.append(py::make_tuple(x.speed, x.pantograph, x.result.criterion, x.result.unit, x.result.value, x.result.limit,

@@ -199,6 +199,8 @@ BOUND = {
     "analysis::simulate": "simulate",
     "analysis::OutputSummary": "OutputSummary",
     "analysis::summarise": "summarise",
+    "analysis::Verdict": "Verdict",
+    "analysis::judge": "verdict",
     "analysis::CoupledOptions": "simulate_coupled",  # its keyword arguments
     "analysis::CoupledSimulation": "CoupledResult",
     "analysis::ContactSummary": "ContactSummary",
@@ -488,6 +490,7 @@ EXCLUDED = {
     "io::check_output_path": "see io::OutputFile",
     "io::read_input_text": "see io::OutputFile; the loaders that use it are bound",
     "io::remove_partial_outputs_on_signal": "the CLI's signal handlers (the Python module leaves SIGINT to Python)",
+    "io::protect_inputs": "the CLI's guard of the files a command read; a Python session writes where it is told",
     "io::check_unique_keys": "internal helper of the YAML readers",
     "io::yaml_number_in": "internal helper of the YAML readers",
     "io::yaml_integer": "internal helper of the YAML readers",

@@ -49,6 +49,23 @@ def test_the_cli_and_python_give_the_same_table(tmp_path):
         assert (r["value"] == "nan" and np.isnan(value)) or float(r["value"]) == pytest.approx(value, rel=1e-5)
 
 
+def test_the_verdict_line_never_passes_what_it_did_not_assess():
+    m = inerta.load_model(model("pantograph-3mass.yaml"))
+    # The wire profile gives no 20 Hz statistics and no loss events: nothing assessed (issue 52).
+    r = inerta.sweep(m, inerta.load_catenary(model("wire-profile.yaml")), inerta.kmh([300.0]))
+    v = inerta.verdict(r, "en50367-ac")
+    assert v.status == "NOT ASSESSED" and not v and v.failed == []
+    assert set(v.not_assessed) == set(inerta.acceptance(r, "en50367-ac")["criterion"])
+    # The FE line: a verdict from the rows, the support uplift named as not assessed.
+    r = inerta.sweep(m, short_line(), inerta.kmh([250.0]))
+    t = inerta.acceptance(r, "en50367-ac")
+    v = inerta.verdict(r, "en50367-ac")
+    assessed = t[t["assessed"]]
+    assert v.status == ("PASS" if assessed["passed"].all() else "FAIL")
+    assert v.failed == [str(c) for c in assessed[~assessed["passed"]]["criterion"]]
+    assert v.not_assessed == ["support_uplift"]
+
+
 def test_errors_name_what_is_wrong():
     with pytest.raises(inerta.ModelError, match="unknown preset 'nope'"):
         inerta.load_acceptance("nope")

@@ -256,4 +256,31 @@ bool passed(const std::vector<VerdictRow>& rows) {
   return std::all_of(rows.begin(), rows.end(), [](const VerdictRow& r) { return !r.result.assessed || r.result.passed; });
 }
 
+const char* Verdict::text() const {
+  switch (status) {
+    case Status::kPass: return "PASS";
+    case Status::kFail: return "FAIL";
+    case Status::kNotAssessed: break;
+  }
+  return "NOT ASSESSED";
+}
+
+Verdict judge(const std::vector<VerdictRow>& rows) {
+  Verdict v;
+  bool any = false;
+  auto add = [](std::vector<std::string>& list, const std::string& c) {
+    if (std::find(list.begin(), list.end(), c) == list.end()) list.push_back(c);
+  };
+  for (const VerdictRow& r : rows) {
+    if (!r.result.assessed) {
+      add(v.not_assessed, r.result.criterion);
+      continue;
+    }
+    any = true;
+    if (!r.result.passed) add(v.failed, r.result.criterion);
+  }
+  v.status = !v.failed.empty() ? Verdict::Status::kFail : any ? Verdict::Status::kPass : Verdict::Status::kNotAssessed;
+  return v;
+}
+
 }  // namespace inerta::analysis

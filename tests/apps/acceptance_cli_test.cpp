@@ -104,6 +104,39 @@ TEST_F(AcceptanceCli, ASimulationJudgesEveryPantographAndAPassingSetExitsZeroWit
   EXPECT_TRUE(contains(r.err, "--acceptance")) << r.err;
 }
 
+// Issue 52: nothing assessed is no PASS; a partial verdict names what it left out; --strict and
+// --acceptance are not silently ignored.
+TEST_F(AcceptanceCli, NothingAssessedIsNotAPassAndAPartialVerdictSaysWhatItLeftOut) {
+  // The wire profile gives no 20 Hz statistics and no loss events: every row not assessed.
+  auto r = run("sweep " + model("pantograph-3mass.yaml") + " --catenary " + model("wire-profile.yaml") +
+               " --speeds 300:1:300 --unit kmh --acceptance en50367-ac --strict --out " + quote(path("w.csv").string()));
+  EXPECT_EQ(r.code, 6) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "verdict: NOT ASSESSED")) << r.out;
+  EXPECT_FALSE(contains(r.out, "verdict: PASS")) << r.out;
+  r = run("sweep " + model("pantograph-3mass.yaml") + " --catenary " + model("wire-profile.yaml") +
+          " --speeds 300:1:300 --unit kmh --acceptance en50367-ac --out " + quote(path("w.csv").string()));
+  EXPECT_EQ(r.code, 0) << r.err;  // without --strict: a report
+  EXPECT_TRUE(contains(r.out, "verdict: NOT ASSESSED")) << r.out;
+  // The FE line without registration.uplift_limit: the support uplift is not assessed, the rest is.
+  const auto lenient = write("lenient.yaml",
+                             "name: lenient\nfilter: {cutoff: 20, order: 4}\n"
+                             "sigma: {max_ratio: 2, statistics: filtered}\n"
+                             "support_uplift: {clearance_factor: 2}\n");
+  r = run("simulate " + model("pantograph-3mass.yaml") + " --catenary " + kLine + " --speed 200 --unit kmh --acceptance " +
+          quote(lenient) + " --strict --out " + quote(path("p.csv").string()));
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "verdict: PASS (every assessed criterion at every speed); not assessed: support_uplift")) << r.out;
+  // --strict needs --acceptance; an empty --acceptance is no criteria set.
+  r = run("sweep " + model("pantograph-3mass.yaml") + " --catenary " + model("wire-profile.yaml") +
+          " --speeds 300:1:300 --unit kmh --strict");
+  EXPECT_NE(r.code, 0);
+  EXPECT_TRUE(contains(r.err, "--strict requires --acceptance")) << r.err;
+  r = run("sweep " + model("pantograph-3mass.yaml") + " --catenary " + model("wire-profile.yaml") +
+          " --speeds 300:1:300 --unit kmh --acceptance ''");
+  EXPECT_EQ(r.code, 105) << r.err;
+  EXPECT_TRUE(contains(r.err, "--acceptance: an empty name")) << r.err;
+}
+
 TEST_F(AcceptanceCli, CheckReductionSaysWhetherBothSolvesReachTheSameVerdict) {
   const auto r = run("catenary check-reduction " + model("catenary-fe.yaml") +
                      " --set line.spans=3 --set solver.window_behind=-1 --speed 200 --unit kmh --tolerance 100 "

@@ -166,6 +166,21 @@ std::vector<VerdictRow> verdict(const AcceptanceCriteria& criteria, const Couple
 /// true if every assessed row passed.
 bool passed(const std::vector<VerdictRow>& rows);
 
+/// The verdict of a set of rows (issue 52): FAIL if an assessed row failed; NOT ASSESSED if no row was
+/// assessed (nothing was judged: never a PASS); else PASS. A PASS or FAIL with rows not assessed names
+/// their criteria, so a partial verdict is never read as a whole one.
+struct Verdict {
+  enum class Status { kPass, kFail, kNotAssessed };
+  Status status = Status::kNotAssessed;
+  std::vector<std::string> failed;        ///< criteria with a failing row, in the rows' order
+  std::vector<std::string> not_assessed;  ///< criteria with a row not assessed, in the rows' order
+  /// "PASS", "FAIL" or "NOT ASSESSED".
+  const char* text() const;
+  /// PASS only.
+  bool pass() const { return status == Status::kPass; }
+};
+Verdict judge(const std::vector<VerdictRow>& rows);
+
 /// A row's margin relative to its limit: margin / |limit|, or margin / max(|value|, 1) for a limit of 0
 /// (the statistical minimum F_m − 3σ ≥ 0). Negative: the criterion fails.
 double relative_margin(const CriterionResult& row);
