@@ -327,17 +327,17 @@ int cmd_optimise(const OptimiseArgs& a) {
     fmt::print("study {}: {} layouts, {} catenaries, {} speeds, {} starts (seed {}), {}\n", study.name,
                study.layouts.size(), study.catenaries.size(), study.speeds.size(), study.search.starts, study.search.seed,
                study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path");
-  if (const double e = optim::estimated_evaluation_seconds(study); e > 0) {
-    // The time domain: its searches are bounded by their evaluations (refine.max_evaluations for
-    // a multi-fidelity study, search.max_evaluations per start otherwise).
-    const long evals = study.coarse ? static_cast<long>(study.refine.max_evaluations) * study.refine_candidates *
-                                          static_cast<long>(study.all ? study.refine_networks : study.layouts.size())
-                                    : static_cast<long>(study.search.max_evaluations) * study.search.starts *
-                                          static_cast<long>(study.layouts.size());
-    if (e > 1) fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,
-                          study.catenaries.size(), study.speeds.size());
-    cost_guard(e * static_cast<double>(evals), 0, a.max_seconds, fmt::format("this study, at its limit of {} evaluations,", evals),
-               "fewer layouts, starts or search.max_evaluations, fewer speeds, or a coarse: stage");
+  {  // every stage: the search (or the coarse search) and the refinement (optim::estimated_study_seconds)
+    const optim::StudyEstimate est = optim::estimated_study_seconds(study);
+    if (const double e = optim::estimated_evaluation_seconds(study); e > 1)
+      fmt::print("one evaluation ≈ {:.1f} s (estimated: {} catenaries × {} speeds in the time domain)\n", e,
+                 study.catenaries.size(), study.speeds.size());
+    std::string what = fmt::format("this study ({} search evaluations ≈ {:.0f} s", est.search_evaluations, est.search_seconds);
+    if (study.coarse) what += fmt::format(", {} refinement evaluations at their limit ≈ {:.0f} s", est.refine_evaluations, est.refine_seconds);
+    what += ")";
+    cost_guard(est.seconds(), 0, a.max_seconds, what,
+               "fewer layouts or networks (networks: {max_elements}), fewer starts or search.max_evaluations, fewer speeds, "
+               "a smaller refine: budget, or a coarse: stage");
   }
   std::fflush(stdout);
   optim::StudyOptions options;
@@ -404,8 +404,8 @@ Command add_optimise_command(CLI::App& app) {
           },
           "ADDRESS"));
   opt->add_option("--max-seconds", oa.max_seconds,
-                  "Refuse (exit 2) a study whose estimate at its limit of evaluations is above S seconds (default: no "
-                  "limit; the estimate is printed beyond 10 s)")
+                  "Refuse (exit 2) a study whose estimate — every stage: the search or coarse search, the refinements at "
+                  "their limit — is above S seconds (default: no limit; the estimate is printed beyond 10 s)")
       ->check(number_rule(analysis::max_seconds_rule));
   opt->add_flag("--force", oa.force,
                 "Use an --out folder that is not empty: the files a study writes there are removed first");

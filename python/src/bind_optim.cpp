@@ -262,6 +262,19 @@ void bind_optim(py::module_& m) {
         "J2 by the time-domain reference (analysis::sweep per catenary; all cores).");
   m.def("estimated_evaluation_seconds", &optim::estimated_evaluation_seconds, py::arg("study"),
         "A rough wall time (s) of one evaluation of a time-domain study (0 with the periodic fast path).");
+  py::class_<optim::StudyEstimate>(m, "StudyEstimate", "A whole study's estimated wall time, every stage (s).")
+      .def_readonly("search_evaluations", &optim::StudyEstimate::search_evaluations)
+      .def_readonly("refine_evaluations", &optim::StudyEstimate::refine_evaluations)
+      .def_readonly("search_seconds", &optim::StudyEstimate::search_seconds)
+      .def_readonly("refine_seconds", &optim::StudyEstimate::refine_seconds)
+      .def_property_readonly("seconds", &optim::StudyEstimate::seconds);
+  m.def("estimated_study_seconds", [](const optim::Study& s) {
+    py::gil_scoped_release release;
+    return optim::estimated_study_seconds(s);
+  }, py::arg("study"),
+        "The estimated wall time of a whole study (s), every stage: the search or coarse search (the periodic path: "
+        "about 60 evaluations per free value and start, one evaluation of the stock suspension timed) and the "
+        "refinements at their limit.");
   m.def("cost_of", &optim::cost_of, py::arg("study"), py::arg("sweeps"), py::arg("commissioning") = py::none(),
         "The study's cost of one SpeedResult list per catenary (its limits applied): J2, penalised, feasible, "
         "violation and the limited quantities.");

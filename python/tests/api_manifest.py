@@ -57,6 +57,8 @@ BOUND = {
     "optim::ModelStudyResult": "ModelStudyResult",
     "analysis::estimated_sweep_seconds": "estimated_sweep_seconds",
     "optim::estimated_evaluation_seconds": "estimated_evaluation_seconds",
+    "optim::StudyEstimate": "StudyEstimate",
+    "optim::estimated_study_seconds": "estimated_study_seconds",
     "optim::BoundCandidate": "BoundCandidate",
     # the study engine (optim/study_run.hpp)
     "optim::SearchTask": "SearchTask",

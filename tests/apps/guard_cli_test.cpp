@@ -77,6 +77,33 @@ TEST_F(Guard, AnExpensiveFeRunIsRefusedBeforeItsSetupWithHowToProceed) {
   EXPECT_EQ(r.code, 105) << r.err;
 }
 
+// Issue 52: the estimate of a study covers every stage — the coarse search of every network included.
+TEST_F(Guard, AStudysEstimateCoversItsCoarseSearch) {
+  std::string text = inerta::testing::read_file(std::string(INERTA_SOURCE_DIR) + "/studies/hsx-s2-fe-all.yaml");
+  for (std::size_t at; (at = text.find("../models/")) != std::string::npos;)
+    text.replace(at, 10, std::string(INERTA_SOURCE_DIR) + "/models/");
+  const std::string four = write("s4.yaml", text);
+  text.replace(text.find("max_elements: 4"), 15, "max_elements: 7");  // 14 453 networks
+  const std::string seven = write("s7.yaml", text);
+  Result r = run("optimise " + seven + " --max-seconds 600");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "search evaluations")) << r.err;
+  EXPECT_TRUE(contains(r.err, "above the limit of 600 s; give --max-seconds")) << r.err;
+  EXPECT_TRUE(contains(r.err, "networks: {max_elements}")) << r.err;
+  // Its four-element version: the coarse search (119 networks) is a few per cent of the seven's.
+  const auto searched = [&](const std::string& err) {
+    const std::size_t at = err.find("this study (");
+    return at == std::string::npos ? -1L : std::stol(err.substr(at + 12));
+  };
+  const long n7 = searched(r.err);
+  r = run("optimise " + four + " --max-seconds 1");
+  EXPECT_EQ(r.code, 2) << r.err;
+  const long n4 = searched(r.err);
+  EXPECT_GT(n4, 119 * 60) << r.err;  // at least 60 evaluations a network
+  EXPECT_GT(n7, 100 * n4) << r.err;
+  EXPECT_FALSE(fs::exists(path("results.csv")));  // refused before any output
+}
+
 TEST_F(Guard, SpeedsThatWouldRunWithoutEndOrNotAtAllAreRefused) {
   // 1e-9 km/h on the lumped line: 40 spans would last ≈ 1e14 s (the --t-end limit is 1e7 s).
   Result r = run("sweep " + model("hsx.yaml") + " --catenary " + model("catenary.yaml") +

@@ -204,6 +204,17 @@ struct LayoutResult {
 /// catenary variant, the variants in parallel); 0 with the periodic fast path.
 double estimated_evaluation_seconds(const Study& study);
 
+/// The estimated wall time of a whole study (issue 52): the search stage (the study's own, or its
+/// coarse study's: every layout, about 60 evaluations per free value and start, at most the search's
+/// limit) and the refinement (`refine`'s budget for each refined layout). One evaluation: the time
+/// domain's estimate (estimated_evaluation_seconds), or the periodic path timed on the stock suspension.
+struct StudyEstimate {
+  long search_evaluations = 0, refine_evaluations = 0;
+  double search_seconds = 0, refine_seconds = 0;
+  double seconds() const { return search_seconds + refine_seconds; }
+};
+StudyEstimate estimated_study_seconds(const Study& study);
+
 /// J2 of a design by the time-domain reference (analysis::sweep), to re-check the fast path's winner
 /// (with the study's limits).
 StudyCost evaluate_time(const Study& study, const network::Network& net);
