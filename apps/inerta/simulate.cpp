@@ -241,9 +241,16 @@ int cmd_simulate(const SimulateArgs& a) {
                                              fmt::print(stderr, "{}\n", w);
                                            std::vector<catenary::PantographOnLine> tr;
                                            for (double x0 : x0s) tr.push_back({p, x0, c.contact});
-                                           cost_guard(c.catenary->estimated_seconds(tr, v, a.t_end),
+                                           // a point model's run: --spans spans unless --t-end is given
+                                           const double t_run = a.t_end > 0 || std::isfinite(c.catenary->line_length())
+                                                                    ? a.t_end
+                                                                    : a.spans * c.catenary->span() / v;
+                                           cost_guard(c.catenary->estimated_seconds(tr, v, t_run),
                                                       c.catenary->estimated_bytes(tr, v, a.t_end), a.max_seconds,
-                                                      "this run", std::string(kFeCheaper) + ", or a shorter --t-end");
+                                                      "this run",
+                                                      std::isfinite(c.catenary->line_length())
+                                                          ? std::string(kFeCheaper) + ", or a shorter --t-end"
+                                                          : std::string("a higher --speed, fewer --spans or a shorter --t-end"));
                                          });
     for (const auto& note : panto.model.notes) fmt::print(info, "note: {}\n", note);
     if (!a.out.empty())  // every input is read now (the line's CSV files too): no output may replace one

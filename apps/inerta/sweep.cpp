@@ -100,7 +100,9 @@ int cmd_sweep(const SweepArgs& a) {
                                            fmt::print(stderr, "{}\n", w);
                                          cost_guard(analysis::estimated_sweep_seconds({{p, 0.0, c.contact}}, *c.catenary, v),
                                                     c.catenary->estimated_bytes({{p, 0.0, c.contact}}, 0, 0), a.max_seconds, fmt::format("this sweep of {} speeds", v.size()),
-                                                    std::string(kFeCheaper) + ", or fewer --speeds");
+                                                    std::isfinite(c.catenary->line_length())
+                                                        ? std::string(kFeCheaper) + ", or fewer --speeds"
+                                                        : std::string("higher or fewer --speeds"));
                                        });
   for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   if (!a.out.empty())  // every input is read now (the line's CSV files too): no output may replace one

@@ -569,7 +569,8 @@ void bind_analysis(py::module_& m) {
   }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::arg("t_end") = py::none(), py::kw_only(),
         py::arg("contact") = py::none(), py::arg("positions") = py::none(),
         "A rough wall time (s) of one run (simulate_coupled) on the 2-core reference machine "
-        "(catenary::Catenary::estimated_seconds; t_end None: to the line's end); 0 for a lumped line.");
+        "(catenary::Catenary::estimated_seconds; t_end None: to the line's end, on a lumped line or wire profile a "
+        "sweep's longest run of 40 spans).");
   m.def("estimated_sweep_seconds", [](const py::object& model, const py::object& catenary, const py::object& speeds,
                                       const py::object& contact, const py::object& positions) {
     const CatenaryArg cat = catenary_arg(catenary);

@@ -206,7 +206,8 @@ def test_modal_solver_and_compare():
 
 def test_run_time_estimates_follow_the_solvers_cost_laws():
     """Catenary.estimated_seconds: the direct solve's work is the line's unknowns × steps (quadratic
-    in the spans at a speed), the modal solve's the window's (linear); lumped lines cost nothing."""
+    in the spans at a speed), the modal solve's the window's (linear); a lumped line's run its length
+    (issue 52: a crawl is no longer free)."""
     m3 = inerta.load_model(model("pantograph-3mass.yaml"))
     v = 250 / 3.6
 
@@ -219,7 +220,10 @@ def test_run_time_estimates_follow_the_solvers_cost_laws():
     assert (est(40, "modal") - first_modes) / (est(10, "modal") - first_modes) == pytest.approx(4, rel=0.05)
     assert est(10, "modal") < est(10, "direct")
     lumped = inerta.load_catenary(model("catenary.yaml"))
-    assert inerta.estimated_seconds(m3, lumped, 50.0) == 0
+    # t_end given: proportional to it; None: a sweep's longest run, 40 spans at that speed.
+    assert inerta.estimated_seconds(m3, lumped, 50.0, 20.0) == pytest.approx(2 * inerta.estimated_seconds(m3, lumped, 50.0, 10.0))
+    assert inerta.estimated_seconds(m3, lumped, 1e-4) == pytest.approx(1000 * inerta.estimated_seconds(m3, lumped, 0.1))
+    assert inerta.estimated_seconds(m3, lumped, 1e-4) > 3600
     c = inerta.load_catenary(model("catenary-fe.yaml"))
     speeds = [150 / 3.6, 200 / 3.6, 250 / 3.6, 300 / 3.6]
     serial = sum(inerta.estimated_seconds(m3, c, s) for s in speeds)

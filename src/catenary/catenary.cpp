@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "inerta/error.hpp"
@@ -29,6 +30,12 @@ std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& p
   std::vector<PantographOnLine> running = pantographs;  // with each one's aerodynamic uplift at this speed
   for (PantographOnLine& p : running) p.pantograph = pantograph::at_speed(p.pantograph, speed);
   return make_coupled(running, speed);
+}
+
+double Catenary::estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {
+  if (!(speed > 0)) return 0;
+  const double t = t_end > 0 ? t_end : kSweepSpans * span() / speed;
+  return 1e-3 * t * static_cast<double>(std::max<std::size_t>(pantographs.size(), 1));
 }
 
 std::unique_ptr<Coupled> Catenary::couple(const pantograph::Pantograph& p, const Contact& contact, double speed) const {

@@ -104,6 +104,22 @@ TEST_F(Guard, AStudysEstimateCoversItsCoarseSearch) {
   EXPECT_FALSE(fs::exists(path("results.csv")));  // refused before any output
 }
 
+// Issue 52: a point model's run is estimated like an FE run (its length is set by the speed).
+TEST_F(Guard, ALumpedRunAtACrawlIsRefusedByItsEstimate) {
+  Result r = run("simulate " + model("hsx.yaml") + " --catenary " + model("catenary.yaml") + " --speed 1e-4 --out " +
+                 path("slow.csv").string());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "this run is estimated at about")) << r.err;
+  EXPECT_TRUE(contains(r.err, "a higher --speed, fewer --spans or a shorter --t-end")) << r.err;
+  r = run("sweep " + model("hsx.yaml") + " --catenary " + model("wire-profile.yaml") + " --speeds 0.001:0.001:0.002");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "this sweep of 2 speeds is estimated at")) << r.err;
+  // A short --t-end at the same crawl is cheap and runs.
+  r = run("simulate " + model("hsx.yaml") + " --catenary " + model("catenary.yaml") + " --speed 1e-4 --t-end 1 --out " +
+          path("slow.csv").string());
+  EXPECT_EQ(r.code, 0) << r.err;
+}
+
 TEST_F(Guard, SpeedsThatWouldRunWithoutEndOrNotAtAllAreRefused) {
   // 1e-9 km/h on the lumped line: 40 spans would last ≈ 1e14 s (the --t-end limit is 1e7 s).
   Result r = run("sweep " + model("hsx.yaml") + " --catenary " + model("catenary.yaml") +
