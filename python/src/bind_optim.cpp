@@ -28,6 +28,16 @@ std::vector<std::shared_ptr<catenary::Catenary>> catenaries_of(const Study& s) {
 
 network::Network net_arg(const py::object& net, const py::object& params) { return network_arg(net, params); }
 
+// A study's speeds (m/s): at least one, each by the library's speed rule (issue 52: none gave J2 = −1).
+std::vector<double> study_speeds(const py::object& speeds, const char* fn) {
+  std::vector<double> v = doubles(speeds);
+  if (v.empty()) throw InvalidArgument(fmt::format("{}: speeds: empty; a study needs at least one speed (m/s)", fn));
+  for (double x : v)
+    if (const std::string e = analysis::speed_rule.check(x, fmt::format("{:g}", x)); !e.empty())
+      throw InvalidArgument(fmt::format("{}: speeds: {}", fn, e));
+  return v;
+}
+
 Study make_study(const Model& pantograph, const py::object& catenaries, const py::object& speeds,
                  const std::vector<std::string>& layouts, const py::object& contact, const py::object& labels,
                  const py::object& search, double lo, double hi, int harmonics, const std::string& name) {
@@ -52,9 +62,7 @@ Study make_study(const Model& pantograph, const py::object& catenaries, const py
     s.catenary_labels = labels.cast<std::vector<std::string>>();
     if (s.catenary_labels.size() != s.catenaries.size()) throw InvalidArgument("study: one label per catenary");
   }
-  s.speeds = doubles(speeds);
-  for (double v : s.speeds)
-    if (!(v > 0)) throw InvalidArgument(fmt::format("study: speeds must be > 0 m/s, got {:g}", v));
+  s.speeds = study_speeds(speeds, "study");
   if (layouts.empty()) throw InvalidArgument("study: at least one layout");
   for (const auto& l : layouts) network::parse(network::find_layout(l) ? network::find_layout(l)->expression : l);
   s.layouts = layouts;
@@ -137,8 +145,9 @@ void bind_optim(py::module_& m) {
       .def("replace", [](const Study& s, const py::object& speeds, const py::object& layouts, const py::object& search,
                          const py::object& lo, const py::object& hi, const py::object& harmonics, const py::object& name) {
         Study r = s;
-        if (!speeds.is_none()) r.speeds = doubles(speeds);
+        if (!speeds.is_none()) r.speeds = study_speeds(speeds, "Study.replace");
         if (!layouts.is_none()) r.layouts = layouts.cast<std::vector<std::string>>();
+        if (r.layouts.empty()) throw InvalidArgument("Study.replace: layouts: empty; a study needs at least one layout");
         if (!search.is_none()) r.search = search.cast<numerics::Options>();
         if (!lo.is_none()) r.lo = lo.cast<double>();
         if (!hi.is_none()) r.hi = hi.cast<double>();

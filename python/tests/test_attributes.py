@@ -159,6 +159,10 @@ search: {{starts: 1, seed: 1, min_step: 0.05}}
     ro.map_size = 0
     fa = inerta.run_study(inerta.load_study(fe_all), inerta.StudyOptions(report=True, report_options=ro))
     out += [fa, fa.refinements[0], fa.report.margins[0]]
+    # The verdict line and a study's estimate (issue 52).
+    m3 = inerta.load_model(model("pantograph-3mass.yaml"))
+    out += [inerta.verdict(inerta.sweep(m3, inerta.load_catenary(model("wire-profile.yaml")), [80.0]), "en50367-ac"),
+            inerta.estimated_study_seconds(inerta.load_study(fe_all))]
     return out
 
 

@@ -231,6 +231,15 @@ def test_run_time_estimates_follow_the_solvers_cost_laws():
     study = inerta.load_study(f"{SRC}/studies/hsx-s2-fe-line.yaml")
     assert inerta.estimated_evaluation_seconds(study) > 0
     assert inerta.estimated_evaluation_seconds(inerta.load_study(f"{SRC}/studies/hsx-s2.yaml")) == 0
+    # A whole study, every stage (issue 52): the coarse search of every network at about 60 evaluations per
+    # free value, the refinements at their limit with the time domain's evaluation.
+    real = inerta.load_study(f"{SRC}/studies/hsx-s2-fe-all.yaml")
+    e = inerta.estimated_study_seconds(real)
+    assert e.search_evaluations == sum(min(60 * len(inerta.free_parameters(n)), real.coarse.search.max_evaluations)
+                                       for n in real.layouts)
+    assert e.refine_evaluations == real.refine.max_evaluations * real.refine_networks
+    assert e.refine_seconds == pytest.approx(e.refine_evaluations * inerta.estimated_evaluation_seconds(real))
+    assert e.search_seconds > 0 and e.seconds == pytest.approx(e.search_seconds + e.refine_seconds)
 
 
 def test_a_run_estimated_at_hours_says_so_first_and_ctrl_c_leaves_no_file(tmp_path):

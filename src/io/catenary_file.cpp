@@ -337,6 +337,9 @@ void read_fe_stitch(const detail::Reader& rd, const YAML::Node& st, catenary::Fe
 // The height-error profile: a CSV with columns x and dz (m), relative to the catenary file.
 void read_height_errors(const std::string& csv, catenary::FeIrregularity& irr) {
   const CsvTable t = CsvTable::read(csv);
+  if (t.column("x").size() < 2)  // only a header (or one point) would run as the perfect line
+    throw ModelError(fmt::format("{}: {} data row(s); expected the height errors x, dz (m) at 2 or more points covering the line",
+                                 csv, t.column("x").size()));
   irr.height_errors_file = csv;
   irr.height_error_x = t.column("x");
   irr.height_error_dz = t.column("dz");

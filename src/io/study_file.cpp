@@ -173,11 +173,23 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     yaml_fail(path, root["set"], "set", e.what());
   }
   const std::string cat_path = rel(root["catenary"], "catenary");
+  // A file named in an override (irregularity.height_errors=F.csv) is relative to the study file, as
+  // every path written in it.
+  auto study_override = [&](const std::string& o) {
+    const std::string key = "irregularity.height_errors=";
+    if (!o.starts_with(key)) return o;
+    const std::filesystem::path f(o.substr(key.size())), dir = std::filesystem::path(path).parent_path();
+    return f.is_absolute() || dir.empty() ? o : key + (dir / f).string();
+  };
   const YAML::Node cats = root["catenaries"];
   if (cats.IsDefined()) {
     // A list of override lists, or {product: [FACTOR, ...]}: every combination of one override list of
     // each factor (a list of override lists), the first factor varying slowest (seeds × tensions).
-    std::vector<std::vector<std::string>> variants;
+    struct Set {
+      std::string text;
+      YAML::Node node;  // where it is written, for its errors
+    };
+    std::vector<std::vector<Set>> variants;
     if (cats.IsMap()) {
       if (cats.size() != 1 || !cats["product"].IsDefined())
         yaml_fail(path, cats, "catenaries", "expected a list of override lists, or {product: [[...], [...]]}");
@@ -189,14 +201,14 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
         if (!f.IsSequence() || f.size() == 0)
           yaml_fail(path, f, "product",
                     "expected a factor: a list of override lists such as [[irregularity.seed=1], [irregularity.seed=2]]");
-        std::vector<std::vector<std::string>> next;
+        std::vector<std::vector<Set>> next;
         for (const auto& v : variants)
           for (const auto& c : f) {
             if (!c.IsSequence()) yaml_fail(path, c, "product", "expected an override list such as [irregularity.seed=1]");
             auto sets = v;
             for (const auto& x : c) {
               if (!x.IsScalar()) yaml_fail(path, x, "product", "expected an override NAME.KEY=VALUE");
-              sets.push_back(x.Scalar());
+              sets.push_back({x.Scalar(), x});
             }
             next.push_back(std::move(sets));
           }
@@ -207,18 +219,33 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
       if (!cats.IsSequence() || cats.size() == 0)
         yaml_fail(path, cats, "catenaries", "expected a list of override lists, or {product: [[...], [...]]}");
       for (const auto& c : cats) {
-        std::vector<std::string> sets;
+        std::vector<Set> sets;
         if (!c.IsSequence()) yaml_fail(path, c, "catenaries", "expected a list such as [catenary.kc0=5000]");
-        for (const auto& x : c) sets.push_back(x.as<std::string>());
+        for (const auto& x : c) {
+          if (!x.IsScalar()) yaml_fail(path, x, "catenaries", "expected an override NAME.KEY=VALUE");
+          sets.push_back({x.Scalar(), x});
+        }
         variants.push_back(std::move(sets));
       }
     }
     for (const auto& sets : variants) {
-      CatenaryFile f = load_catenary(cat_path, sets);
+      std::vector<std::string> texts;
+      for (const Set& x : sets) texts.push_back(study_override(x.text));
+      CatenaryFile f;
+      try {
+        f = load_catenary(cat_path, texts);
+      } catch (const ModelError& e) {  // at the line of the override that fails (alone), else of the list
+        for (const Set& x : sets) try {
+            (void)load_catenary(cat_path, {study_override(x.text)});
+          } catch (const ModelError& one) {
+            yaml_fail(path, x.node, "catenaries", one.what());
+          }
+        yaml_fail(path, cats, "catenaries", e.what());
+      }
       s.catenaries.push_back(f.catenary);
       s.contact = f.contact;
       std::string label;
-      for (const auto& x : sets) label += (label.empty() ? "" : " ") + x;
+      for (const auto& x : sets) label += (label.empty() ? "" : " ") + x.text;
       s.catenary_labels.push_back(label.empty() ? "default" : label);
     }
     s.reference = load_catenary(cat_path).catenary;  // the line as written: where designs are commissioned
@@ -232,7 +259,7 @@ optim::Study read_study(const std::string& path, const YAML::Node& root, bool co
     std::vector<std::string> sets;
     for (const auto& x : r) {
       if (!x.IsScalar()) yaml_fail(path, x, "reference", "expected an override NAME.KEY=VALUE");
-      sets.push_back(x.Scalar());
+      sets.push_back(study_override(x.Scalar()));
     }
     try {
       s.reference = load_catenary(cat_path, sets).catenary;

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -185,6 +187,27 @@ TEST(StudyFeAll, FileErrorsNameFileLineAndKey) {
   // The admittance bound would be a search on the fine line.
   e = error_of("bad_adm.yaml", kAll + "admittance: [2]\n");
   EXPECT_NE(e.find("admittance"), std::string::npos) << e;
+}
+
+// Issue 52: a bad catenary override in a study names the study file and the override's line; a CSV
+// named in an override is relative to the study file; a height-error CSV without data is refused.
+TEST(StudyFeAll, AStudysCatenaryOverridesAreCheckedAtTheirLineAndTheirFilesBesideIt) {
+  std::string e = error_of("bad_cat.yaml", kHead + "catenaries:\n  - [line.spans=3]\n  - [line.spans=3, no_such.key=1]\n");
+  EXPECT_NE(e.find("bad_cat.yaml:8"), std::string::npos) << e;  // the second variant's line
+  EXPECT_NE(e.find("no_such.key=1"), std::string::npos) << e;
+  e = error_of("bad_cat2.yaml", kHead + "catenaries:\n  product:\n    - [[line.spans=3]]\n    - [[contact_wire.tension=abc]]\n");
+  EXPECT_NE(e.find("bad_cat2.yaml:9"), std::string::npos) << e;
+  EXPECT_NE(e.find("'abc' is not a number"), std::string::npos) << e;
+  // height_errors relative to the study file: found beside it whatever the working directory.
+  const auto dir = inerta::testing::temp_dir();
+  std::ofstream(dir / "dz_ok.csv") << "x,dz\n0,0\n10000,0\n";
+  std::ofstream(dir / "dz_empty.csv") << "x,dz\n";
+  e = error_of("rel_ok.yaml", kHead + "catenaries: [[line.spans=3, irregularity.height_errors=dz_ok.csv]]\n");
+  EXPECT_EQ(e, "");
+  e = error_of("rel_empty.yaml", kHead + "catenaries: [[line.spans=3, irregularity.height_errors=dz_empty.csv]]\n");
+  EXPECT_NE(e.find("rel_empty.yaml:6"), std::string::npos) << e;
+  EXPECT_NE(e.find("0 data row(s)"), std::string::npos) << e;
+  std::filesystem::remove(dir / "dz_ok.csv"), std::filesystem::remove(dir / "dz_empty.csv");
 }
 
 }  // namespace test_optim_study_fe_all
