@@ -82,6 +82,9 @@ std::vector<double> parse_positions(const std::string& list) {
     double v = 0;
     if (!CLI::detail::lexical_cast(item, v) || !std::isfinite(v))
       throw CLI::ValidationError("--positions", "expected comma-separated positions in m, got '" + list + "'");
+    for (double w : x)
+      if (w == v)
+        throw CLI::ValidationError("--positions", fmt::format("{:g} m is given twice in '{}'; each pantograph needs its own position", v, list));
     x.push_back(v);
   }
   if (x.empty()) throw CLI::ValidationError("--positions", "expected at least one position");
@@ -360,7 +363,12 @@ Command add_simulate_command(CLI::App& app) {
       ->capture_default_str()
       ->check(count_rule(analysis::spans_rule));
   sim->add_option("--positions", sa.positions,
-                  "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200");
+                  "Several pantographs (copies of the model) at these positions along the line, m, e.g. 0,200")
+      ->check(CLI::Validator(
+          [](std::string& v) {
+            return v.empty() ? std::string("empty; expected comma-separated positions in m, e.g. 0,200") : std::string();
+          },
+          "X,..."));
   cli::add_acceptance_options(sim, sa.acceptance);
   sim->add_option("--max-seconds", sa.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
       ->check(number_rule(analysis::max_seconds_rule));

@@ -107,8 +107,18 @@ std::vector<std::string> override_strings(const py::object& o) {
   if (py::isinstance<py::str>(o)) return {o.cast<std::string>()};
   if (py::isinstance<py::dict>(o)) {
     for (auto [k, v] : o.cast<py::dict>()) {
-      std::string value = py::isinstance<py::str>(v) ? v.cast<std::string>() : number_text(v.cast<double>());
-      out.push_back(py::str(k).cast<std::string>() + "=" + value);
+      const std::string key = py::str(k).cast<std::string>();
+      std::string value;
+      if (py::isinstance<py::bool_>(v))  // before numbers: bool is an int in Python (False was "0")
+        value = v.cast<bool>() ? "true" : "false";
+      else if (py::isinstance<py::str>(v))
+        value = v.cast<std::string>();
+      else if (py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v) || py::hasattr(v, "__float__"))
+        value = number_text(v.cast<double>());
+      else
+        throw py::type_error(fmt::format("overrides: '{}': expected a number, a string or True/False, got {}", key,
+                                         py::str(py::type::of(v)).cast<std::string>()));
+      out.push_back(key + "=" + value);
     }
     return out;
   }

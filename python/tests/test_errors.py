@@ -205,3 +205,20 @@ def test_run_options_are_refused_before_the_run_not_crashed_on(lumped, field, va
     for run in (lambda: inerta.run_speed(m3, lumped, 50.0, options=o), lambda: inerta.sweep(m3, lumped, [50.0], options=o)):
         with pytest.raises(inerta.InvalidArgument, match=re.escape(message)):
             run()
+
+
+def test_silent_accepts_of_the_real_line_inputs_are_errors():
+    """Issue 52: False in an override dict is false; a study without speeds or layouts; two heads at one point."""
+    stitched = model("catenary-fe-stitched.yaml")
+    assert "70 droppers" in repr(inerta.load_catenary(stitched, {"stitch.enabled": False}))
+    with pytest.raises(TypeError, match="'stitch.enabled': expected a number, a string or True/False"):
+        inerta.load_catenary(stitched, {"stitch.enabled": [1]})
+    s = inerta.load_study(f"{SRC}/studies/hsx-s2.yaml")
+    with pytest.raises(inerta.InvalidArgument, match="speeds: empty"):
+        s.replace(speeds=[])
+    with pytest.raises(inerta.InvalidArgument, match="layouts: empty"):
+        s.replace(layouts=[])
+    m3 = inerta.load_model(M3)
+    fe = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 4})
+    with pytest.raises(inerta.InvalidArgument, match="pantographs 1 and 2 are both at x0 = 100 m"):
+        inerta.simulate_coupled(m3, fe, 70.0, positions=[100.0, 100.0], t_end=0.05)

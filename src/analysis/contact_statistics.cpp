@@ -34,6 +34,15 @@ ContactStatistics statistics(const std::vector<double>& F) {
   return s;
 }
 
+void check_filter_sampling(double cutoff, double dt, double speed) {
+  if (!(cutoff < 0.5 / dt))
+    throw InvalidArgument(fmt::format(
+        "the filtered statistics' low-pass cutoff {:g} Hz (an acceptance set's filter.cutoff; EN 50317: 20 Hz) is not "
+        "below the Nyquist frequency {:.4g} Hz of this run's sampling (a sample every {:.4g} ms at {:.4g} m/s); lower "
+        "the cutoff or sample more finely",
+        cutoff, 0.5 / dt, 1e3 * dt, speed));
+}
+
 namespace {
 // check_run_speed from the catenary's figures (a Coupled system has them too, but no wave speed).
 void check_speed(double span, double line_length, double wave, double speed, int spans, bool allow_supercritical) {
@@ -58,6 +67,7 @@ void check_speed(double span, double line_length, double wave, double speed, int
                                  speed * 3.6, wave * 3.6));
 }
 
+
 // A finite line (the finite-element catenary): one pass from the static state until the leading
 // pantograph is 1 m short of the end; statistics of each contact over the analysis section.
 SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
@@ -70,6 +80,7 @@ SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
   if (!(t_end > 0))
     throw InvalidArgument(fmt::format("the line ({:g} m) is too short for a run", sys.line_length()));
   const catenary::Section sec = sys.section();
+  check_filter_sampling(o.filter_cutoff, T / o.samples_per_span, sys.speed());
   std::vector<std::vector<double>> F(static_cast<std::size_t>(nc)), ts(F.size()), xc(F.size()), Fall(F.size());
   const std::vector<double> xs = sys.support_x();
   r.support_x = xs;  // then only those in the section

@@ -117,6 +117,7 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
   if (!std::isfinite(r.t_end) || !std::isfinite(r.sample))
     throw InvalidArgument("simulate: t_end and the sampling interval must be finite numbers of seconds");
   check_samples(r.t_end, r.sample);
+  if (line) check_filter_sampling(o.filter_cutoff, r.sample, speed);
   r.window_from = std::max(0.0, r.t_end - o.window_spans * T);
   if (line) r.section = sys->section();
   if (line)

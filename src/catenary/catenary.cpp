@@ -25,6 +25,10 @@ std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& p
                                    k + 1));
     if (m.spatial()) throw ModelError(fmt::format("{}: the pantograph-catenary analyses are planar", m.source));
     if (!std::isfinite(p.x0)) throw InvalidArgument(fmt::format("pantograph {}: position x0 = {}", k + 1, p.x0));
+    for (std::size_t j = 0; j < k; ++j)  // two heads on one point of the wire: not a train (issue 52)
+      if (pantographs[j].x0 == p.x0)
+        throw InvalidArgument(fmt::format("pantographs {} and {} are both at x0 = {:g} m; give each its own position", j + 1,
+                                          k + 1, p.x0));
     p.contact.validate();
   }
   std::vector<PantographOnLine> running = pantographs;  // with each one's aerodynamic uplift at this speed

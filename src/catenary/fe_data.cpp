@@ -24,10 +24,20 @@ void non_negative(const char* what, const char* key, double v, const char* unit)
     throw InvalidArgument(fmt::format("finite-element catenary: {}", what), key,
                           fmt::format("must be >= 0 ({}), got {}", unit, v));
 }
+// Ranges far beyond any line (tensions 10–40 kN, 0.5–2 kg/m, waves 100–600 m/s; issue 52: 1e300 N gave
+// a 150-digit wave speed and singular matrices), so that a typo is an error, not a run.
 void wire(const char* which, const FeWire& w) {
   positive(which, "tension", w.tension, "N");
   positive(which, "mass_per_length", w.mass_per_length, "kg/m");
   non_negative(which, "EI", w.EI, "N·m²");
+  if (w.tension > 1e7)
+    throw InvalidArgument(fmt::format("finite-element catenary: {}", which), "tension",
+                          fmt::format("{:g} N is above the 1e7 N (10 MN) accepted; real lines run at 10–40 kN", w.tension));
+  if (w.wave_speed() > 1e4)
+    throw InvalidArgument(fmt::format("finite-element catenary: {}", which), "mass_per_length",
+                          fmt::format("the wave speed sqrt(tension / mass_per_length) = {:.4g} m/s is above 10 000 m/s (real "
+                                      "wires: 100–600 m/s); check tension ({:g} N) and mass_per_length ({:g} kg/m)",
+                                      w.wave_speed(), w.tension, w.mass_per_length));
 }
 }  // namespace
 
@@ -235,6 +245,9 @@ void FeCatenaryData::validate() const {
       throw InvalidArgument("finite-element catenary: anchors", "mass", fmt::format("must be at most 1e5 (kg), got {}", anchor.mass));
   }
   positive("line", "span", span, "m");
+  if (sectioned() && spans > 1000)  // no `line.spans` in such a file: its sections give the spans
+    throw InvalidArgument("finite-element catenary", "tension_sections",
+                          fmt::format("the sections make a line of {} spans (their spans less the overlaps'); at most 1000", spans));
   if (spans < 1 || spans > 1000)
     throw InvalidArgument("finite-element catenary: line", "spans", fmt::format("must be 1 … 1000, got {}", spans));
   positive("line", "encumbrance", encumbrance, "m");
@@ -313,9 +326,7 @@ void FeCatenaryData::validate() const {
                             fmt::format("must be shorter than the span ({} m): the stitch wires of two masts would "
                                         "overlap, got {} m",
                                         span, st.length));
-    positive("stitch", "tension", st.wire.tension, "N");
-    positive("stitch", "mass_per_length", st.wire.mass_per_length, "kg/m");
-    non_negative("stitch", "EI", st.wire.EI, "N·m²");
+    wire("stitch", st.wire);
     non_negative("stitch", "clamp_mass", st.clamp_mass, "kg");
     positive("stitch", "droppers.EA", st.dropper_EA, "N");
     non_negative("stitch", "droppers.mass_per_length", st.dropper_mass_per_length, "kg/m");

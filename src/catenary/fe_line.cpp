@@ -393,11 +393,19 @@ FeLine::FeLine(FeCatenaryData data) : d_(std::move(data)) {
           "finite-element catenary: the form-finding gives dropper {} (x = {:.3f} m) a compression of {:.4g} N — "
           "the pre-sag cannot be held by droppers that only pull; check presag and the wire data",
           k + 1, dr.x, -dr.tension));
-    if (!(stretched > 0))
+    if (!(stretched > 0)) {
+      if (dr.on_stitch_wire)  // the stitch wire carries its droppers' share of the contact wire alone
+        throw ModelError(fmt::format(
+            "finite-element catenary: stitch dropper {} (x = {:.3f} m, stitch.droppers.x[{}]) would need a length of "
+            "{:.4g} m — the stitch wire sags below the contact wire under its droppers' load; move the stitch "
+            "droppers towards the stitch wire's clamps (stitch.droppers.x, within ±stitch.length/2), or raise "
+            "stitch.tension",
+            k + 1, dr.x, dr.index, stretched));
       throw ModelError(fmt::format(
           "finite-element catenary: dropper {} (x = {:.3f} m) would need a length of {:.4g} m — the messenger sags "
           "below the contact wire; increase the encumbrance or the messenger tension",
           k + 1, dr.x, stretched));
+    }
     dr.length = stretched / (1 + dr.tension / dr.EA);
     dr.stiffness = dr.static_stiffness = dr.EA / dr.length;
   }

@@ -353,7 +353,7 @@ void read_fe_irregularity(const detail::Reader& rd, const YAML::Node& ir, catena
   irr.dropper_length_std = rd.number_or(ir, "dropper_length_std", 0.0);
   if (const YAML::Node n = ir["seed"]; n.IsDefined()) {
     const double v = rd.number(n, "seed");
-    if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v)) rd.fail(n, "seed", fmt::format("expected a whole number >= 0, got {}", v));
+    if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v)) rd.fail(n, "seed", fmt::format("expected a whole number from 0 to 2^53 − 1 = 9007199254740991 (exact as a number), got {:.17g}", v));
     irr.seed = static_cast<std::uint64_t>(v);
   }
   if (const YAML::Node n = ir["dropper_length_errors"]; n.IsDefined()) {
@@ -673,7 +673,7 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
     if (key == "seed") {
       const double v = number();
       if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v))
-        throw ModelError(fmt::format("--set '{}': expected a whole number >= 0", o));
+        throw ModelError(fmt::format("--set '{}': expected a whole number from 0 to 2^53 − 1 = 9007199254740991 (exact as a number)", o));
       irr.seed = static_cast<std::uint64_t>(v);
       return true;
     }

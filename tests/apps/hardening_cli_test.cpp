@@ -290,6 +290,58 @@ TEST_F(Hardening, NoOutputReplacesAnyInput) {
   EXPECT_EQ(text_of(csv), dz);
 }
 
+// Issue 52: inputs that were accepted in silence, and errors that named the wrong thing.
+TEST_F(Hardening, SilentAcceptsAreErrorsThatSayWhatToChange) {
+  const std::string fe = " --catenary " + quote(model("catenary-fe.yaml")) + " --speed 250 --unit kmh --t-end 0.05 --out " +
+                         quote((dir_ / "o.csv").string());
+  for (const std::string p : {"0,0", "100,100.0"}) {
+    Result r = run("simulate " + quote(model("hsx.yaml")) + fe + " --positions " + p);
+    EXPECT_EQ(r.code, 105) << p << r.err;
+    EXPECT_TRUE(contains(r.err, "given twice")) << r.err;
+  }
+  Result r = run("simulate " + quote(model("hsx.yaml")) + fe + " --positions ''");
+  EXPECT_EQ(r.code, 105) << r.err;
+  EXPECT_TRUE(contains(r.err, "--positions: empty")) << r.err;
+  // Absurd tensions are refused by their range, the stitch wire's too (was: a singular matrix).
+  r = run("simulate " + quote(model("hsx.yaml")) + fe + " --set messenger.tension=1e300");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "above the 1e7 N")) << r.err;
+  r = run("check " + quote(model("catenary-fe-stitched.yaml")) + " --set stitch.tension=1e300");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "stitch: tension")) << r.err;
+  r = run("check " + quote(model("catenary-fe.yaml")) + " --set contact_wire.mass_per_length=1e-9");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "wave speed")) << r.err;
+  // The seed's bound is stated.
+  r = run("check " + quote(model("catenary-fe.yaml")) + " --set irregularity.seed=18446744073709551615");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "2^53")) << r.err;
+  // Stitch droppers at the mast: the stitch wire sags, not the messenger.
+  std::string st = text_of(model("catenary-fe-stitched.yaml"));
+  st.replace(st.find("x: [-5, 5]"), 10, "x: [-0.01, 0.01]");
+  r = run("simulate " + quote(model("hsx.yaml")) + " --catenary " + quote(write("st.yaml", st)) +
+          " --speed 250 --unit kmh --t-end 0.05 --out " + quote((dir_ / "o.csv").string()));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "the stitch wire sags below the contact wire")) << r.err;
+  EXPECT_TRUE(contains(r.err, "stitch.droppers.x")) << r.err;
+  // A criteria filter above the run's Nyquist frequency: refused before the run, naming the key.
+  std::string crit = text_of(std::string(INERTA_SOURCE_DIR) + "/criteria/en50367-ac.yaml");
+  crit.replace(crit.find("cutoff: 20,"), 11, "cutoff: 600,");
+  r = run("simulate " + quote(model("pantograph-3mass.yaml")) + " --catenary " + quote(model("catenary-fe.yaml")) +
+          " --set line.spans=4 --speed 250 --unit kmh --acceptance " + quote(write("c600.yaml", crit)) + " --out " +
+          quote((dir_ / "o.csv").string()));
+  EXPECT_NE(r.code, 0) << r.err;
+  EXPECT_TRUE(contains(r.err, "filter.cutoff")) << r.err;
+  EXPECT_TRUE(contains(r.err, "Nyquist")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "o.csv"));
+  // Sections adding up to more than 1000 spans name the sections, not a key the file does not have.
+  std::string ov = text_of(model("catenary-fe-overlap.yaml"));
+  for (const char* n : {"{spans: 12,", "{spans: 13,", "{spans: 12,"}) ov.replace(ov.find(n), std::string(n).size(), "{spans: 400,");
+  r = run("check " + quote(write("ov.yaml", ov)));
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "'tension_sections': the sections make a line of 1194 spans")) << r.err;
+}
+
 TEST_F(Hardening, UnwritableOutIsFoundBeforeTheComputation) {
   Result r = run("sweep " + quote(model("hsx.yaml")) + " --catenary " + quote(model("catenary.yaml")) +
                  " --speeds 50:5:300 --unit kmh --out " + quote((dir_ / "no" / "such" / "s.csv").string()));

@@ -53,6 +53,11 @@ void check_run_speed(const catenary::Catenary& catenary, double speed, int spans
 /// …"); else "".
 std::string speed_warning(const catenary::Catenary& catenary, double speed);
 
+/// Before a finite line's run (issue 52): InvalidArgument unless the filtered statistics' cutoff (Hz) is
+/// below the Nyquist frequency of the sampling step `dt` (s), naming both and what to change — not a
+/// failure after the run.
+void check_filter_sampling(double cutoff, double dt, double speed);
+
 /// The rules of RunOptions: spans 1 … 10000 (max_spans ≥ min_spans), settled_spans 1 … 1000,
 /// tolerance 0 … 1, samples_per_span 10 … 1e6. InvalidArgument "max_spans: 0 is out of range; …".
 void check(const RunOptions& options);
