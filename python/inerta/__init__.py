@@ -54,9 +54,28 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
     sent ("designs_sent", "searches_sent", "checks_sent")."""
     import os
 
+    # The arguments checked here, by name (issue 52), not deep inside a running study.
     if isinstance(study, (str, os.PathLike)):
         path = os.fspath(study)
         study = _inerta.load_model_study(path) if _inerta.is_model_study(path) else _inerta.load_study(path)
+    elif not isinstance(study, (_inerta.Study, _inerta.ModelStudy)):
+        raise TypeError(f"optimise: study: expected a Study, a ModelStudy or a study file's path, got {type(study).__name__}")
+    if progress is not None and not callable(progress):
+        raise TypeError(f"optimise: progress: expected a callable progress(event, *values), got {type(progress).__name__}")
+    if out is not None and not isinstance(out, (str, os.PathLike)):
+        raise TypeError(f"optimise: out: expected a folder's path, got {type(out).__name__}")
+    if client is None:
+        for name, value in (("checkpoint", checkpoint), ("stats", stats)):
+            if value is not None:
+                raise ValueError(f"optimise: {name}= is about the Dask tasks and needs client=; without a client the "
+                                 "study runs in this process (no checkpoint, no task counts)")
+    else:
+        if not (hasattr(client, "submit") and hasattr(client, "gather")):
+            raise TypeError(f"optimise: client: expected a dask.distributed.Client, got {type(client).__name__}")
+        if stats is not None and not isinstance(stats, dict):
+            raise TypeError(f"optimise: stats: expected a dict that receives the task counts, got {type(stats).__name__}")
+        if checkpoint is not None and not isinstance(checkpoint, (str, os.PathLike)):
+            raise TypeError(f"optimise: checkpoint: expected a file's path, got {type(checkpoint).__name__}")
     executor = None
     if client is not None:
         if isinstance(study, _inerta.ModelStudy):

@@ -191,6 +191,17 @@ void bind_study_run(py::module_& m) {
       .def("refined_csv", &optim::StudyOutcome::refined_csv);
   m.def("run_study", [](const py::object& study, const py::object& options, const py::object& progress,
                         optim::StudyExecutor* executor) {
+    // Arguments checked by name (issue 52): not "Unable to cast" or an error from inside the study.
+    if (!py::isinstance<optim::ModelStudy>(study) && !py::isinstance<optim::Study>(study))
+      throw py::type_error(fmt::format("run_study: study: expected a Study or a ModelStudy (inerta.load_study(path), "
+                                       "or inerta.optimise(path)), got {}",
+                                       py::str(py::type::of(study).attr("__name__")).cast<std::string>()));
+    if (!options.is_none() && !py::isinstance<optim::StudyOptions>(options))
+      throw py::type_error(fmt::format("run_study: options: expected a StudyOptions, got {}",
+                                       py::str(py::type::of(options).attr("__name__")).cast<std::string>()));
+    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+      throw py::type_error(fmt::format("run_study: progress: expected a callable progress(event, *values), got {}",
+                                       py::str(py::type::of(progress).attr("__name__")).cast<std::string>()));
     const optim::StudyOptions o = options.is_none() ? optim::StudyOptions{} : options.cast<optim::StudyOptions>();
     if (py::isinstance<optim::ModelStudy>(study)) {
       if (executor) throw InvalidArgument("run_study: a model study runs in this process (no executor)");

@@ -222,3 +222,21 @@ def test_silent_accepts_of_the_real_line_inputs_are_errors():
     fe = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 4})
     with pytest.raises(inerta.InvalidArgument, match="pantographs 1 and 2 are both at x0 = 100 m"):
         inerta.simulate_coupled(m3, fe, 70.0, positions=[100.0, 100.0], t_end=0.05)
+
+
+def test_the_study_calls_check_their_arguments_by_name():
+    """Issue 52: no "Unable to cast", no AttributeError from inside a running study."""
+    path = f"{SRC}/studies/hsx-s2.yaml"
+    for call, message in [
+        (lambda: inerta.optimise({}), "optimise: study: expected a Study"),
+        (lambda: inerta.optimise(5), "optimise: study: expected a Study"),
+        (lambda: inerta.run_study(path), "run_study: study: expected a Study or a ModelStudy"),
+        (lambda: inerta.run_study(inerta.load_study(path), progress=5), "run_study: progress: expected a callable"),
+        (lambda: inerta.optimise(path, client=object()), "optimise: client: expected a dask.distributed.Client"),
+        (lambda: inerta.optimise(path, progress=5), "optimise: progress: expected a callable"),
+    ]:
+        with pytest.raises(TypeError, match=re.escape(message)):
+            call()
+    for kw in ({"stats": []}, {"checkpoint": "/tmp/never.pkl"}):
+        with pytest.raises(ValueError, match="needs client="):
+            inerta.optimise(path, **kw)
