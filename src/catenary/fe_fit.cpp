@@ -15,6 +15,14 @@ LumpedFit fit_lumped(const FeLine& line, int span, int points) {
   if (span < 1 || span > d.spans)
     throw InvalidArgument(fmt::format("lumped fit: span {} does not exist (the line has {} spans)", span, d.spans));
   if (points < 16) throw InvalidArgument(fmt::format("lumped fit: needs at least 16 points a span, got {}", points));
+  // An overlap span carries two contact wires: a point model of one wire has no meaning there (issue 52).
+  for (std::size_t k = 1; k < d.tension_sections.size(); ++k) {
+    const int from = d.tension_sections[k].first_span + 1, to = from + d.overlap_spans - 1;  // 1-based
+    if (span >= from && span <= to)
+      throw InvalidArgument(fmt::format("lumped fit: span {} is in the overlap of sections {} and {} (spans {} … {}: two "
+                                        "contact wires); fit a span of one wire (--span)",
+                                        span, k, k + 1, from, to));
+  }
   LumpedFit fit;
   fit.span = span;
   const double L = d.span, x_start = (span - 1) * L;

@@ -340,6 +340,11 @@ TEST_F(Hardening, SilentAcceptsAreErrorsThatSayWhatToChange) {
   r = run("check " + quote(write("ov.yaml", ov)));
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_TRUE(contains(r.err, "'tension_sections': the sections make a line of 1194 spans")) << r.err;
+  // A lumped fit of an overlap span (two contact wires) is refused.
+  r = run("catenary fit " + quote(model("catenary-fe-overlap.yaml")) + " --span 11 --out " + quote((dir_ / "f.yaml").string()));
+  EXPECT_NE(r.code, 0) << r.err;
+  EXPECT_TRUE(contains(r.err, "span 11 is in the overlap of sections 1 and 2 (spans 10 … 12")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "f.yaml"));
 }
 
 TEST_F(Hardening, UnwritableOutIsFoundBeforeTheComputation) {
