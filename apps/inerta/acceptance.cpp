@@ -126,7 +126,10 @@ int aero_fit() {
   const io::CatenaryFile cat = io::load_catenary(a.catenary, cat_sets);
   const double k = a.unit == "kmh" ? 1 / 3.6 : 1.0;  // to m/s
   const double v = a.speed * k, target = c.target.at(v * 3.6);
-  const analysis::Statistics stats = c.mean.empty() ? analysis::Statistics::Raw : c.mean.front().statistics;
+  // A point model (lumped line, wire profile) has no 20 Hz statistics: its raw mean is used (and said).
+  const analysis::Statistics stats = c.mean.empty() || !std::isfinite(cat.catenary->line_length())
+                                         ? analysis::Statistics::Raw
+                                         : c.mean.front().statistics;
   analysis::RunOptions o;
   o.filter_cutoff = c.filter_cutoff, o.filter_order = c.filter_order;
   fmt::print("aero-fit: {} on {}; target mean contact force at {:.4g} km/h: {:.2f} N ({}: {:g} v² + {:g} v + {:g}, v in km/h)\n",
@@ -186,8 +189,10 @@ int aero_fit() {
     fmt::print("  height m {:>8.3f}\n  force N  {:>8.2f}\n  model N  {:>8.2f}  (the model alone, its frame springs included)\n",
                fmt::join(rec.range_height, " "), fmt::join(rec.range_force, " "), fmt::join(rec.range_model, " "));
   }
-  fmt::print("mean contact force without aerodynamic uplift: {:.2f} N ({} statistics)\n", fit.mean_without,
-             stats == analysis::Statistics::Raw ? "raw" : "20 Hz");
+  fmt::print("mean contact force without aerodynamic uplift: {:.2f} N ({})\n", fit.mean_without,
+             stats == analysis::Statistics::Filtered                ? fmt::format("{:g} Hz statistics", c.filter_cutoff)
+             : std::isfinite(cat.catenary->line_length()) ? std::string("raw statistics")
+                                                          : std::string("raw statistics: a point model of the line has no 20 Hz ones"));
   if (!fit.reached) {
     if (fit.mean_without > target)
       fmt::print(stderr, "aero-fit: no a >= 0 reaches the target: the mean force without uplift, {:.2f} N, is already above "

@@ -309,29 +309,40 @@ int fe_whole(const detail::Reader& rd, const YAML::Node& n, const std::string& k
 }
 
 // stitch: {enabled, length, tension, mass_per_length, EI, clamp_mass, droppers: {x, presag, EA,
-// mass_per_length, clamp_mass_stitch, clamp_mass_contact}} (docs/model-format.md).
+// mass_per_length, clamp_mass_stitch, clamp_mass_contact}} (docs/model-format.md). With `s` already a
+// stitch (a tension section over the line's), every key is optional and replaces the line's value.
 void read_fe_stitch(const detail::Reader& rd, const YAML::Node& st, catenary::FeStitch& s) {
   if (!st.IsMap()) rd.fail(st, "stitch", "expected a section: {length, tension, mass_per_length, EI, clamp_mass, droppers}");
+  const bool over = s.present;
   s.present = true;
+  auto value = [&](const YAML::Node& map, const char* key, const char* where, double& v) {
+    if (over) v = rd.number_or(map, key, v);
+    else v = rd.number(rd.need(map, key, where), key);
+  };
   if (const YAML::Node n = st["enabled"]; n.IsDefined()) s.enabled = rd.boolean(n, "enabled");
-  s.length = rd.number(rd.need(st, "length", "stitch"), "length");
-  s.wire.tension = rd.number(rd.need(st, "tension", "stitch"), "tension");
-  s.wire.mass_per_length = rd.number(rd.need(st, "mass_per_length", "stitch"), "mass_per_length");
-  s.wire.EI = rd.number_or(st, "EI", 0.0);
-  s.clamp_mass = rd.number_or(st, "clamp_mass", 0.0);
-  const YAML::Node dr = rd.need(st, "droppers", "stitch");
+  value(st, "length", "stitch", s.length);
+  value(st, "tension", "stitch", s.wire.tension);
+  value(st, "mass_per_length", "stitch", s.wire.mass_per_length);
+  s.wire.EI = rd.number_or(st, "EI", over ? s.wire.EI : 0.0);
+  s.clamp_mass = rd.number_or(st, "clamp_mass", over ? s.clamp_mass : 0.0);
+  const YAML::Node dr = over ? st["droppers"] : rd.need(st, "droppers", "stitch");
+  if (over && (!dr.IsDefined() || dr.IsNull())) return;
   rd.keys(dr, "stitch.droppers", {"x", "presag", "EA", "mass_per_length", "clamp_mass_stitch", "clamp_mass_contact"});
-  const YAML::Node x = rd.need(dr, "x", "stitch.droppers");
-  if (!x.IsSequence()) rd.fail(x, "x", "expected a list of signed positions from the mast (m), e.g. [-7, -2, 2, 7]");
-  for (const auto& item : x) s.dropper_x.push_back(rd.number(item, "x"));
+  if (const YAML::Node x = over ? dr["x"] : rd.need(dr, "x", "stitch.droppers"); x.IsDefined()) {
+    if (!x.IsSequence()) rd.fail(x, "x", "expected a list of signed positions from the mast (m), e.g. [-7, -2, 2, 7]");
+    s.dropper_x.clear();
+    for (const auto& item : x) s.dropper_x.push_back(rd.number(item, "x"));
+    if (over && !dr["presag"].IsDefined()) s.dropper_presag.clear();  // new positions: the line's pre-sags no longer fit
+  }
   if (const YAML::Node p = dr["presag"]; p.IsDefined()) {
     if (!p.IsSequence()) rd.fail(p, "presag", "expected a list of contact-wire pre-sags (m, positive down), one per stitch dropper");
+    s.dropper_presag.clear();
     for (const auto& item : p) s.dropper_presag.push_back(rd.number(item, "presag"));
   }
-  s.dropper_EA = rd.number(rd.need(dr, "EA", "stitch.droppers"), "EA");
-  s.dropper_mass_per_length = rd.number_or(dr, "mass_per_length", 0.0);
-  s.clamp_mass_stitch = rd.number_or(dr, "clamp_mass_stitch", 0.0);
-  s.clamp_mass_contact = rd.number_or(dr, "clamp_mass_contact", 0.0);
+  value(dr, "EA", "stitch.droppers", s.dropper_EA);
+  s.dropper_mass_per_length = rd.number_or(dr, "mass_per_length", over ? s.dropper_mass_per_length : 0.0);
+  s.clamp_mass_stitch = rd.number_or(dr, "clamp_mass_stitch", over ? s.clamp_mass_stitch : 0.0);
+  s.clamp_mass_contact = rd.number_or(dr, "clamp_mass_contact", over ? s.clamp_mass_contact : 0.0);
 }
 
 // The height-error profile: a CSV with columns x and dz (m), relative to the catenary file.
@@ -517,6 +528,7 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
     rd.keys(sn, where, {"spans", "span", "anchors", "messenger", "contact_wire", "droppers", "stitch", "supports", "registration"});
     catenary::FeCatenaryData s = d;
     s.tension_sections.clear();
+    s.section_first = s.section_last = -1;  // the analysis section is the whole line's (its spans), as --set's
     s.overlap_outgoing.clear(), s.overlap_incoming.clear(), s.overlap_outgoing_x.clear(), s.overlap_incoming_x.clear();
     s.overlap_spans = 0;
     const YAML::Node spans = rd.need(sn, "spans", where);
@@ -552,9 +564,9 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
         for (const char* l : {"x", "presag"})
           if (const YAML::Node n = o[l]; n.IsDefined()) *fe_list(s, l) = fe_numbers(rd, n, l);
     }
-    if (const YAML::Node st = sn["stitch"]; st.IsDefined()) {
-      s.stitch = catenary::FeStitch{};
-      if (!st.IsNull()) read_fe_stitch(rd, st, s.stitch);
+    if (const YAML::Node st = sn["stitch"]; st.IsDefined()) {  // the line's stitch key by key; null: none here
+      if (st.IsNull()) s.stitch = catenary::FeStitch{};
+      else read_fe_stitch(rd, st, s.stitch);
     }
     d.tension_sections.push_back(std::move(s));
   }

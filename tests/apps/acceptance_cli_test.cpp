@@ -137,6 +137,15 @@ TEST_F(AcceptanceCli, NothingAssessedIsNotAPassAndAPartialVerdictSaysWhatItLeftO
   EXPECT_TRUE(contains(r.err, "--acceptance: an empty name")) << r.err;
 }
 
+// Issue 52: on a point model of the line the fit reads the raw mean and says so (no "20 Hz statistics").
+TEST_F(AcceptanceCli, AeroFitOnALumpedLineSaysItsStatisticsAreRaw) {
+  const auto r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + model("catenary.yaml") +
+                     " --acceptance en50367-ac --speed 250 --unit kmh");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "(raw statistics: a point model of the line has no 20 Hz ones)")) << r.out;
+  EXPECT_FALSE(contains(r.out, "20 Hz statistics")) << r.out;
+}
+
 TEST_F(AcceptanceCli, CheckReductionSaysWhetherBothSolvesReachTheSameVerdict) {
   const auto r = run("catenary check-reduction " + model("catenary-fe.yaml") +
                      " --set line.spans=3 --set solver.window_behind=-1 --speed 200 --unit kmh --tolerance 100 "

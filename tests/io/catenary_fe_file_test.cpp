@@ -293,3 +293,34 @@ TEST(FeCatenaryFile, SolverSectionAndItsErrors) {
   EXPECT_NE(e.find("cutoff"), std::string::npos) << e;
 }
 }  // namespace test_io_catenary_fe_file
+
+namespace test_io_catenary_fe_file {
+
+// Issue 52: what docs/model-format.md says of a line of tension sections — a section's `stitch:` key by
+// key over the line's, and the file's analysis `section:` over the whole line (as --set's).
+TEST(FeCatenaryFile, ASectionsStitchIsTakenKeyByKeyAndTheAnalysisSectionIsTheLines) {
+  const std::string src = std::string(INERTA_SOURCE_DIR) + "/models/catenary-fe-overlap.yaml";
+  std::ifstream in(src);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string second = "  - {spans: 13, anchors: pinned}";
+  ASSERT_NE(text.find(second), std::string::npos);
+  text.replace(text.find(second), second.size(), "  - {spans: 13, anchors: pinned, stitch: {tension: 4000, droppers: {EA: 1.0e5}}}");
+  text.replace(text.find("\nline:"), 6, "\nsection: {spans: [14, 18]}\nline:");
+  const catenary::FeCatenaryData d = io::read_fe_catenary_data(write(text), {});
+  ASSERT_EQ(d.tension_sections.size(), 3u);
+  const catenary::FeStitch &line = d.tension_sections[0].stitch, &mine = d.tension_sections[1].stitch;
+  EXPECT_EQ(mine.wire.tension, 4000);
+  EXPECT_EQ(mine.dropper_EA, 1.0e5);
+  EXPECT_EQ(mine.length, line.length);  // the line's other keys kept
+  EXPECT_EQ(mine.wire.mass_per_length, line.wire.mass_per_length);
+  EXPECT_EQ(mine.dropper_x, line.dropper_x);
+  EXPECT_EQ(line.wire.tension, 3500);
+  EXPECT_EQ(d.section_first, 14);
+  EXPECT_EQ(d.section_last, 18);
+  // stitch: null leaves a section without stitch wires.
+  const std::string mine_text = "stitch: {tension: 4000, droppers: {EA: 1.0e5}}";
+  text.replace(text.find(mine_text), mine_text.size(), "stitch: null");
+  EXPECT_FALSE(io::read_fe_catenary_data(write(text), {}).tension_sections[1].stitch.present);
+}
+
+}  // namespace test_io_catenary_fe_file
