@@ -492,6 +492,7 @@ EXCLUDED = {
     "io::check_output_path": "see io::OutputFile",
     "io::read_input_text": "see io::OutputFile; the loaders that use it are bound",
     "io::remove_partial_outputs_on_signal": "the CLI's signal handlers (the Python module leaves SIGINT to Python)",
+    "analysis::check_filter_sampling": "the runs' own guard before a finite line's run (sweep, simulate_coupled call it)",
     "io::protect_inputs": "the CLI's guard of the files a command read; a Python session writes where it is told",
     "io::check_unique_keys": "internal helper of the YAML readers",
     "io::yaml_number_in": "internal helper of the YAML readers",

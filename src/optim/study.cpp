@@ -61,7 +61,7 @@ network::Network default_suspension(const Study& study) {
 
 StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps,
                   const std::optional<analysis::Commissioning>& commissioning) {
-  if (study.speeds.empty() || std::all_of(sweeps.begin(), sweeps.end(), [](const auto& s) { return s.empty(); }))
+  if (std::all_of(sweeps.begin(), sweeps.end(), [](const auto& s) { return s.empty(); }))
     throw InvalidArgument(fmt::format("study '{}': no speed to judge a design at (speeds: empty)", study.name));
   const ContactLimits& lim = study.limits;
   StudyCost c;
