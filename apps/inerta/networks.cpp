@@ -14,6 +14,9 @@
 #include "inerta/io/structure_results.hpp"
 #include "inerta/io/files.hpp"
 #include "inerta/network/enumeration.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/network/schematic.hpp"
+#include "common.hpp"
 
 namespace inerta::cli {
 
@@ -24,6 +27,38 @@ struct NetworksArgs {
   int max_springs = -1, max_dampers = -1, max_inerters = -1;
 } networks_args;
 CLI::App* networks_cmd = nullptr;
+
+struct DrawArgs {
+  std::string layout, out;
+  std::vector<std::string> params;
+} draw_args;
+CLI::App* draw_cmd = nullptr;
+
+// `inerta networks draw LAYOUT [--param NAME=VALUE …] --out FILE.svg`: the schematic (network/schematic.hpp).
+int run_draw() {
+  const DrawArgs& a = draw_args;
+  io::check_output_path(a.out);
+  network::Network net;
+  try {
+    if (a.params.empty()) {  // names only: the expression's, or the named layout's
+      const auto named = network::find_layout(a.layout);
+      net = network::parse(named ? named->expression : a.layout);
+    } else {
+      net = network::resolve(a.layout, parse_params(a.params));
+    }
+  } catch (const network::NetworkError& e) {
+    std::string where = e.column > 0 ? fmt::format("\n  {}\n  {:>{}}", a.layout, "^", e.column) : "";
+    throw ModelError(fmt::format("network '{}': {}{}", a.layout, e.what(), where));
+  }
+  const std::string svg = network::schematic_svg(net, {.values = true, .title = network::to_string(net)});
+  if (a.out.empty()) {
+    fmt::print("{}", svg);
+    return 0;
+  }
+  io::write_text_file(a.out, svg);
+  fmt::print("wrote {} (the schematic of {})\n", a.out, network::to_string(net, !a.params.empty()));
+  return 0;
+}
 
 std::string seconds_text(double s) {
   if (s < 90) return fmt::format("{:.0f} s", s);
@@ -46,10 +81,16 @@ CLI::App* add_networks_command(CLI::App& app) {
                            "any | required (a spring path between the terminals) | excluded")
       ->capture_default_str();
   networks_cmd->add_option("--out", a.out, "Write the list to this file (one expression per line) instead of stdout");
+  DrawArgs& d = draw_args;
+  draw_cmd = networks_cmd->add_subcommand("draw", "Draw a network as a mechanical schematic (SVG)");
+  draw_cmd->add_option("layout", d.layout, "A layout name (S2-5) or an expression such as \"k1|(k2-c-b)\"")->required();
+  draw_cmd->add_option("--param", d.params, "Element values NAME=VALUE (SI), shown on the drawing; all or none");
+  draw_cmd->add_option("--out", d.out, "Write the SVG to this file (default: standard output)");
   return networks_cmd;
 }
 
 int run_networks() {
+  if (draw_cmd->parsed()) return run_draw();
   const NetworksArgs& a = networks_args;
   network::EnumerationOptions o;
   o.max_elements = a.max_elements;

@@ -6,6 +6,7 @@
 #include "inerta/network/layouts.hpp"
 #include "inerta/network/network.hpp"
 #include "inerta/network/realisation.hpp"
+#include "inerta/network/schematic.hpp"
 
 namespace inerta::python {
 
@@ -114,6 +115,29 @@ void bind_network(py::module_& m) {
   }, py::arg("layout"), py::arg("params") = py::none(),
         "A layout name or an expression with values: the layout's fixed values, then `params` (a fixed value cannot "
         "be overridden). The bound, unsimplified network.");
+
+  m.def("draw_network", [](const py::object& net, const py::object& params, const std::string& title) {
+    Network n;
+    if (py::isinstance<Network>(net)) {
+      n = net.cast<Network>();
+      if (!params.is_none()) n = network::assign(n, params.cast<network::Params>());
+    } else if (py::isinstance<py::str>(net)) {
+      const std::string text = net.cast<std::string>();
+      if (params.is_none()) {
+        const auto named = network::find_layout(text);
+        n = network::parse(named ? named->expression : text);
+      } else {
+        n = network::resolve(text, params.cast<network::Params>());
+      }
+    } else {
+      throw py::type_error(fmt::format("draw_network: network: expected a Network, a layout name or an expression, got {}",
+                                       py::str(py::type::of(net).attr("__name__")).cast<std::string>()));
+    }
+    return network::schematic_svg(n, {.values = true, .title = title});
+  }, py::arg("network"), py::arg("params") = py::none(), py::arg("title") = "",
+        "The network as a mechanical schematic: an SVG document (str) — springs, dampers and inerters between two "
+        "terminals, series left to right, parallel branches stacked, each element with its name and value (SI, in "
+        "kN/m, kN·s/m, kg). network: a Network, a layout name or an expression; params: element values.");
 
   py::class_<network::Rational>(m, "Rational", "Y(s) = P(s)/Q(s); coefficients in ascending powers of s.")
       .def_readonly("num", &network::Rational::num)

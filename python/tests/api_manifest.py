@@ -23,6 +23,7 @@ BOUND = {
     "network::rational_admittance": "rational_admittance",
     "network::realise": "realise",
     "network::resolve": "resolve",
+    "network::schematic_svg": "draw_network",
     "network::simplify": "simplify",
     "network::to_string": "to_string",
     "network::admittance_leaf": "admittance_leaf",
@@ -359,6 +360,7 @@ _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the 
 _ACCEPTANCE = "the verdict's parts; Python gets the whole table from inerta.acceptance (a NumPy structured array)"
 
 EXCLUDED = {
+    "network::SchematicOptions": "its fields are draw_network's keyword arguments (values are always drawn; title=)",
     "numerics::PhaseTimes": "process-wide timing table; Python users set INERTA_TIMINGS=1 (printed on stderr at exit)",
     "numerics::PhaseTimer": "an RAII scope timer used inside the library; see numerics::PhaseTimes",
     "numerics::Optimiser": "given by name in Python: model_search(optimiser='bobyqa'), Study.refine_optimiser",
