@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -25,11 +26,11 @@ namespace inerta::cli {
 void add_acceptance_options(CLI::App* app, AcceptanceArgs& a) {
   CLI::Option* acc =
       app->add_option("--acceptance", a.criteria,
-                      "Judge the run by an acceptance criteria set: a preset (en50367-ac, en50367-dc3) or a criteria file "
+                      "Judge the run by an acceptance criteria set: a preset (en50367-ac, en50367-ac15, en50367-dc3, en50367-dc1.5) or a criteria file "
                       "(docs/contact-quality.md); prints the verdict and writes OUT.acceptance.csv")
           ->check(CLI::Validator(
               [](std::string& s) {
-                return s.empty() ? std::string("an empty name: give a preset (en50367-ac, en50367-dc3) or a criteria file")
+                return s.empty() ? std::string("an empty name: give a preset (en50367-ac, en50367-ac15, en50367-dc3, en50367-dc1.5) or a criteria file")
                                  : std::string();
               },
               "PRESET|FILE"));
@@ -60,21 +61,44 @@ int report_acceptance(std::FILE* info, const analysis::AcceptanceCriteria& c, co
   fmt::print(info, "\nacceptance: {} ({}); force statistics over the analysis section, filtered: {:g} Hz low-pass of order {}\n",
              c.name, c.source, c.filter_cutoff, c.filter_order);
   const char* unit = kmh ? "km/h" : "m/s";
-  fmt::print(info, "  {:>8} {:>5}  {:<16} {:>12} {:>12} {:>12}  {}\n", fmt::format("v {}", unit), "panto", "criterion", "value",
+  fmt::print(info, "  {:>8} {:>5}  {:<26} {:>12} {:>12} {:>12}  {}\n", fmt::format("v {}", unit), "panto", "criterion", "value",
              "limit", "margin", "verdict");
+  // Each criterion's statistic and source, once (issue 53): [assumed] marks a number not verified publicly.
+  struct Sourced {
+    std::string criteria, statistic, source;
+    bool assumed;
+  };
+  std::vector<Sourced> sources;
   std::map<std::string, int> failed;  // criterion → rows that failed
   std::vector<std::string> failing_speeds;
   double last = NAN;
   for (const auto& x : rows) {
     const analysis::CriterionResult& r = x.result;
     const double v = kmh ? 3.6 * x.speed : x.speed;
-    fmt::print(info, "  {:>8.4g} {:>5}  {:<16} {:>12} {:>12} {:>12}  {}{}\n", v, x.pantograph, r.criterion, shown(r, r.value),
-               shown(r, r.limit), shown(r, r.margin), io::status_text(r), r.note.empty() ? "" : " (" + r.note + ")");
+    const bool judged = !r.statistic.empty();  // an entry of the set covers this speed
+    fmt::print(info, "  {:>8.4g} {:>5}  {:<26} {:>12} {:>12} {:>12}  {}{}\n", v, x.pantograph,
+               r.criterion + (judged && r.assumed ? " [assumed]" : ""), shown(r, r.value), shown(r, r.limit), shown(r, r.margin),
+               io::status_text(r), r.note.empty() ? "" : " (" + r.note + ")");
+    if (judged) {
+      auto same = [&](const Sourced& s) { return s.statistic == r.statistic && s.source == r.source && s.assumed == r.assumed; };
+      if (auto it = std::find_if(sources.begin(), sources.end(), same); it == sources.end())
+        sources.push_back({r.criterion, r.statistic, r.source, r.assumed});
+      else if (it->criteria.find(r.criterion) == std::string::npos)
+        it->criteria += ", " + r.criterion;
+    }
     if (r.assessed && !r.passed) {
       ++failed[r.criterion];
       if (last != x.speed) failing_speeds.push_back(fmt::format("{:.4g}", v)), last = x.speed;
     }
   }
+  if (!sources.empty()) {
+    fmt::print(info, "criteria, their statistic and source ([assumed]: not verified against a public source; check it against "
+                     "the standard before an approval):\n");
+    for (const Sourced& s : sources)
+      fmt::print(info, "  {}{} ({}): {}\n", s.criteria, s.assumed ? " [assumed]" : "", s.statistic,
+                 s.source.empty() ? "no source given" : s.source);
+  }
+  if (const std::string arcing = analysis::arcing_text(c); !arcing.empty()) fmt::print(info, "{}\n", arcing);
   const analysis::Verdict verdict = analysis::judge(rows);
   std::vector<std::string> which;
   for (const auto& [k, n] : failed) which.push_back(fmt::format("{} ({} row{})", k, n, n > 1 ? "s" : ""));
@@ -125,6 +149,9 @@ int aero_fit() {
   const pantograph::Pantograph p = io::load_pantograph(a.model, panto_sets);
   const io::CatenaryFile cat = io::load_catenary(a.catenary, cat_sets);
   const double k = a.unit == "kmh" ? 1 / 3.6 : 1.0;  // to m/s
+  if (!c.target.covers(a.speed * k * 3.6))  // the curve's source gives it over its speeds only (issue 53)
+    throw ModelError(fmt::format("{}: the mean-force target of '{}' at {:.4g} km/h: not assessed; its source gives it {} only",
+                                 c.source, c.name, a.speed * k * 3.6, analysis::range_text(c.target.speeds)));
   const double v = a.speed * k, target = c.target.at(v * 3.6);
   // A point model (lumped line, wire profile) has no 20 Hz statistics: its raw mean is used (and said).
   const analysis::Statistics stats = c.mean.empty() || !std::isfinite(cat.catenary->line_length())
@@ -214,7 +241,12 @@ int aero_fit() {
     fmt::print("  {:>8} {:>10} {:>10} {:>10}\n", "v km/h", "target N", "mean N", "diff N");
     for (const auto& r : rs) {
       const double m = stats == analysis::Statistics::Filtered && !r.filtered.empty() ? r.filtered.front().mean : r.stats.mean;
-      fmt::print("  {:>8.4g} {:>10.2f} {:>10.2f} {:>+10.2f}\n", r.speed * 3.6, c.target.at(r.speed * 3.6), m, m - c.target.at(r.speed * 3.6));
+      if (!c.target.covers(r.speed * 3.6))
+        fmt::print("  {:>8.4g} {:>10} {:>10.2f} {:>10}  (target not assessed: {})\n", r.speed * 3.6, "-", m, "-",
+                   analysis::range_text(c.target.speeds));
+      else
+        fmt::print("  {:>8.4g} {:>10.2f} {:>10.2f} {:>+10.2f}\n", r.speed * 3.6, c.target.at(r.speed * 3.6), m,
+                   m - c.target.at(r.speed * 3.6));
     }
   }
   return 0;
@@ -230,7 +262,7 @@ CLI::App* add_pantograph_command(CLI::App& app) {
   AeroFitArgs& a = aero_args;
   aero_cmd->add_option("model", a.model, "Pantograph model file (YAML)")->required();
   aero_cmd->add_option("--catenary", a.catenary, "Catenary file")->required();
-  aero_cmd->add_option("--acceptance", a.criteria, "Criteria set with a 'target' curve: en50367-ac, en50367-dc3 or a file")->required();
+  aero_cmd->add_option("--acceptance", a.criteria, "Criteria set with a 'target' curve: a preset (en50367-ac, …) or a file")->required();
   aero_cmd->add_option("--speed", a.speed, "Speed of the fit, in --unit")->required()->check(number_in(1e-3, 1e4, "0.001 … 1e4"));
   aero_cmd->add_option("--unit", a.unit, "Speed unit: ms (m/s) or kmh")->check(CLI::IsMember({"ms", "kmh"}))->capture_default_str();
   aero_cmd->add_option("--speeds", a.speeds, "Also print the mean force with the fitted a at V0:DV:V1 (in --unit)");

@@ -16,7 +16,7 @@ namespace inerta::cli {
 inline constexpr int exit_acceptance_failed = 6;
 
 struct AcceptanceArgs {
-  std::string criteria;  ///< a preset (en50367-ac, en50367-dc3) or a criteria file; empty: no verdict
+  std::string criteria;  ///< a preset (en50367-ac, en50367-ac15, en50367-dc3, en50367-dc1.5) or a criteria file; empty: no verdict
   bool strict = false;
 };
 

@@ -975,6 +975,7 @@ class SpeedResult:
     loss_runs: list[list[int]]
     sample_dt: float
     uplift_limit: float
+    uplift_limited: bool
 
 class SweepResult:
     def __init__(self, results: Sequence[SpeedResult], wall_s: float = 0.0, method: str = "time") -> None: ...
@@ -1027,7 +1028,11 @@ class AcceptanceCriteria:
     filter_cutoff: float
     filter_order: int
     has_target: bool
-    def target(self, speed: float) -> float: ...
+    def target(self, speed: float) -> float: ...  # InvalidArgument outside target_speeds
+    @property
+    def target_speeds(self) -> tuple[float, float]: ...  # km/h, to included
+    @property
+    def arcing_text(self) -> str: ...
 
 def load_acceptance(criteria: Union[str, os.PathLike[str]]) -> AcceptanceCriteria: ...
 def acceptance_presets() -> list[str]: ...

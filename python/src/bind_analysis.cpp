@@ -450,6 +450,8 @@ void bind_analysis(py::module_& m) {
                     "a finite line: per pantograph, the lengths (samples) of the section's runs of raw F <= 0")
       .def_readonly("sample_dt", &analysis::SpeedResult::sample_dt, "s, the sampling step of a finite line's run")
       .def_readonly("uplift_limit", &analysis::SpeedResult::uplift_limit, "m, the line's registration uplift limit (NaN: none)")
+      .def_readonly("uplift_limited", &analysis::SpeedResult::uplift_limited,
+                    "the line's registration.uplift_limited: a stop limits the uplift (support_uplift takes its limited factor)")
       .def_readonly("filtered", &analysis::SpeedResult::filtered,
                     "a finite line: each contact's statistics after the 20 Hz low-pass (EN 50317)")
       .def_readonly("overlap", &analysis::SpeedResult::overlap,
@@ -467,7 +469,8 @@ void bind_analysis(py::module_& m) {
       .def(py::pickle(
           [](const analysis::SpeedResult& s) {
             return py::make_tuple(s.speed, s.stats, s.contacts, s.spans, s.sigma_change, s.converged, s.floquet, s.t, s.F,
-                                  s.support_x, s.support_uplift, s.filtered, s.loss_runs, s.sample_dt, s.uplift_limit);
+                                  s.support_x, s.support_uplift, s.filtered, s.loss_runs, s.sample_dt, s.uplift_limit,
+                                  s.uplift_limited);
           },
           [](const py::tuple& t) {
             analysis::SpeedResult s;
@@ -479,6 +482,7 @@ void bind_analysis(py::module_& m) {
             s.filtered = t[11].cast<std::vector<analysis::ContactStatistics>>();
             s.loss_runs = t[12].cast<std::vector<std::vector<long>>>(), s.sample_dt = t[13].cast<double>();
             s.uplift_limit = t[14].cast<double>();
+            if (t.size() > 15) s.uplift_limited = t[15].cast<bool>();  // a result pickled before issue 53 has not
             return s;
           }));
 
@@ -792,10 +796,17 @@ void bind_analysis(py::module_& m) {
       .def("target", [](const analysis::AcceptanceCriteria& c, double v) {
         if (!c.has_target) throw py::value_error(fmt::format("the criteria set '{}' has no target curve", c.name));
         return c.target.at(v * 3.6);
-      }, py::arg("speed"), "the mean-force target at a speed in m/s, N")
+      }, py::arg("speed"), "the mean-force target at a speed in m/s, N; InvalidArgument outside target_speeds")
+      .def_property_readonly("target_speeds", [](const analysis::AcceptanceCriteria& c) {
+        if (!c.has_target) throw py::value_error(fmt::format("the criteria set '{}' has no target curve", c.name));
+        return py::make_tuple(c.target.speeds.from, c.target.speeds.to);
+      }, "(from, to) km/h: the speeds the target's source gives it for (to included); outside them it is not assessed")
+      .def_property_readonly("arcing_text", &analysis::arcing_text,
+                             "what a verdict says about contact loss: it stands in for the measured percentage of arcing "
+                             "(empty without contact_loss)")
       .def("__repr__", [](const analysis::AcceptanceCriteria& c) { return fmt::format("AcceptanceCriteria('{}', {})", c.name, c.source); });
   m.def("load_acceptance", [](const py::object& which) { return io::load_acceptance(path_arg(which)); }, py::arg("criteria"),
-        "An acceptance criteria set: a preset name (en50367-ac, en50367-dc3; inerta.acceptance_presets()) or a criteria "
+        "An acceptance criteria set: a preset name (en50367-ac, en50367-ac15, en50367-dc3, en50367-dc1.5; inerta.acceptance_presets()) or a criteria "
         "file. ModelError with file, line and key for a bad file.");
   m.def("acceptance_presets", &io::acceptance_presets, "The names of the shipped acceptance criteria presets.");
   // The verdict rows of a sweep or coupled result against a preset, file or AcceptanceCriteria.
@@ -831,11 +842,19 @@ void bind_analysis(py::module_& m) {
     py::list items;
     for (const auto& x : rows)
       items.append(py::make_tuple(x.speed, x.pantograph, x.result.criterion, x.result.unit, x.result.value, x.result.limit,
-                                  x.result.margin, x.result.passed, x.result.assessed));
+                                  x.result.margin, x.result.passed, x.result.assessed, x.result.statistic,
+                                  !x.result.statistic.empty() && x.result.assumed, x.result.source));
+    // The text columns as wide as their longest entry (a source may be long).
+    std::size_t stat = 1, src = 1;
+    for (const auto& x : rows)
+      stat = std::max(stat, py::str(x.result.statistic).attr("__len__")().cast<std::size_t>()),
+      src = std::max(src, py::str(x.result.source).attr("__len__")().cast<std::size_t>());
     py::list dtype;
+    const std::string stat_t = fmt::format("U{}", stat), src_t = fmt::format("U{}", src);
     for (const auto& [name, type] : std::vector<std::pair<const char*, const char*>>{
              {"speed", "f8"}, {"pantograph", "i4"}, {"criterion", "U16"}, {"unit", "U2"}, {"value", "f8"},
-             {"limit", "f8"}, {"margin", "f8"}, {"passed", "?"}, {"assessed", "?"}})
+             {"limit", "f8"}, {"margin", "f8"}, {"passed", "?"}, {"assessed", "?"}, {"statistic", stat_t.c_str()},
+             {"assumed", "?"}, {"source", src_t.c_str()}})
       dtype.append(py::make_tuple(name, type));
     return py::module_::import("numpy").attr("array")(items, py::arg("dtype") = dtype);
   }, py::arg("result"), py::arg("criteria"),
@@ -843,7 +862,9 @@ void bind_analysis(py::module_& m) {
         "CLI's --acceptance: a NumPy structured array, one row per speed, pantograph and criterion, with fields speed "
         "(m/s), pantograph (1 = the leading one), criterion, unit (N, %, m), value, limit, margin (positive: passes), "
         "passed, assessed (False: outside the criterion's speeds or without the data it needs; passed is then False "
-        "and the row does not decide the verdict). criteria: a preset name, a file or an AcceptanceCriteria. The runs "
+        "and the row does not decide the verdict), statistic (what the value is: 'filtered, F_m + 3σ', …; empty where "
+        "no entry covers the speed), assumed (the entry's number is not verified against a public source), source "
+        "(the document and public address the entry names). criteria: a preset name, a file or an AcceptanceCriteria. The runs "
         "give the 20 Hz statistics with their own filter (20 Hz, order 4 by default); a set with another filter needs "
         "runs made with it (RunOptions.filter_cutoff / filter_order).");
 

@@ -16,7 +16,8 @@ def test_a_sweep_verdict_has_every_speed_and_criterion_and_reads_the_run_statist
     m = inerta.load_model(model("pantograph-3mass.yaml"))
     r = inerta.sweep(m, short_line(), inerta.kmh([200.0, 300.0]))
     t = inerta.acceptance(r, "en50367-ac")
-    assert t.dtype.names == ("speed", "pantograph", "criterion", "unit", "value", "limit", "margin", "passed", "assessed")
+    assert t.dtype.names == ("speed", "pantograph", "criterion", "unit", "value", "limit", "margin", "passed", "assessed",
+                             "statistic", "assumed", "source")
     assert len(t) == 2 * 7
     sigma = t[t["criterion"] == "sigma"]
     # σ ≤ 0.3 F_m of the 20 Hz statistics, as the run gives them
@@ -26,11 +27,22 @@ def test_a_sweep_verdict_has_every_speed_and_criterion_and_reads_the_run_statist
         assert row["passed"] == (row["margin"] >= 0)
     lower = t[t["criterion"] == "mean_lower"]
     assert lower["limit"] == pytest.approx([0.00047 * 200**2 + 60, 0.00047 * 300**2 + 60])
+    # Each row says what it judged and where its number comes from (issue 53): the AC set's are unverified.
+    top = t[t["criterion"] == "max_force"]
+    assert list(top["statistic"]) == ["filtered, F_m + 3σ"] * 2 and top["assumed"].all()
+    assert list(top["limit"]) == [350.0, 350.0]  # from 200 km/h
+    for row, s in zip(top, r):
+        assert row["value"] == pytest.approx(s.filtered[0].mean + 3 * s.filtered[0].std, rel=1e-12)
+    assert all(len(str(x)) > 10 for x in t[t["assessed"]]["source"])
     uplift = t[t["criterion"] == "support_uplift"]
     assert not uplift["assessed"].any()  # the bundled line has no registration.uplift_limit
     # The same set given as an object, and the CLI's table of the same runs.
     c = inerta.load_acceptance("en50367-ac")
     assert c.name == "en50367-ac" and c.has_target and c.target(300 / 3.6) == pytest.approx(132.3)
+    assert c.target_speeds == (200.0, 320.0)
+    with pytest.raises(inerta.InvalidArgument, match="not assessed"):
+        c.target(150 / 3.6)  # the source's upper edge there, not a target
+    assert "stands in for the measured percentage of arcing" in c.arcing_text
     assert np.array_equal(inerta.acceptance(r, c)["passed"], t["passed"])
 
 
@@ -69,7 +81,7 @@ def test_the_verdict_line_never_passes_what_it_did_not_assess():
 def test_errors_name_what_is_wrong():
     with pytest.raises(inerta.ModelError, match="unknown preset 'nope'"):
         inerta.load_acceptance("nope")
-    assert inerta.acceptance_presets() == ["en50367-ac", "en50367-dc3"]
+    assert inerta.acceptance_presets() == ["en50367-ac", "en50367-ac15", "en50367-dc1.5", "en50367-dc3"]
     with pytest.raises(TypeError, match="expected the result of inerta.sweep"):
         inerta.acceptance(42, "en50367-ac")
 
@@ -93,14 +105,19 @@ def test_a_pickled_sweep_keeps_what_the_verdict_reads():
     import pickle
 
     m = inerta.load_model(model("pantograph-3mass.yaml"))
-    line = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 4, "registration.uplift_limit": 0.2})
+    line = inerta.load_catenary(model("catenary-fe.yaml"),
+                                {"line.spans": 4, "registration.uplift_limit": 0.2, "registration.uplift_limited": True})
     r = inerta.sweep(m, line, inerta.kmh([300.0]))
     s = pickle.loads(pickle.dumps(r[0]))
     assert s.loss_runs == r[0].loss_runs and s.sample_dt == r[0].sample_dt and s.uplift_limit == 0.2
+    assert r[0].uplift_limited and s.uplift_limited  # the stop (issue 53) travels too
     back = inerta.SweepResult([s])
     a, b = inerta.acceptance(r, "en50367-ac"), inerta.acceptance(back, "en50367-ac")
     assert np.array_equal(a["passed"], b["passed"]) and np.array_equal(a["value"], b["value"], equal_nan=True)
-    assert a[a["criterion"] == "support_uplift"]["assessed"].all()  # the line's limit: assessed now
+    up = a[a["criterion"] == "support_uplift"]
+    assert up["assessed"].all()  # the line's limit: assessed now
+    assert up["limit"][0] == pytest.approx(0.2 / 1.5)  # a stop limits the uplift: 1.5 S0
+    assert np.array_equal(b[b["criterion"] == "support_uplift"]["limit"], up["limit"])
 
 
 def test_commissioning_relaxes_trims_and_holds_the_static_force_over_the_working_range():

@@ -35,9 +35,44 @@ double counted_loss_pct(const std::vector<long>& runs, long samples, double dt, 
   return 100.0 * static_cast<double>(counted) / static_cast<double>(samples);
 }
 
+std::string range_text(const SpeedRange& r) {
+  if (r.from <= 0 && std::isinf(r.to)) return "at every speed";
+  return std::isinf(r.to) ? fmt::format("from {:g} km/h", r.from) : fmt::format("from {:g} to {:g} km/h", r.from, r.to);
+}
+
+double TargetCurve::at(double v_kmh) const {
+  if (!covers(v_kmh))
+    throw InvalidArgument(fmt::format("acceptance: the mean-force target curve at {:.4g} km/h: its source gives it {} only; "
+                                      "the target is not assessed outside that range (give a speed inside it, or a target of "
+                                      "your own)",
+                                      v_kmh, range_text(speeds)));
+  return SpeedCurve::at(v_kmh);
+}
+
+std::string arcing_text(const AcceptanceCriteria& c) {
+  if (c.contact_loss.empty()) return "";
+  std::string durations;
+  for (const auto& e : c.contact_loss) {
+    const std::string d = fmt::format("{:g} ms", 1e3 * e.min_duration);
+    if (durations.find(d) == std::string::npos) durations += (durations.empty() ? "" : " / ") + d;
+  }
+  return fmt::format("contact_loss: contact loss of the simulation (raw force <= 0 N for at least {}) stands in for the "
+                     "measured percentage of arcing of EN 50367 / EN 50317; arcing itself is not modelled",
+                     durations);
+}
+
 namespace {
 
 const ContactStatistics& pick(const VerdictInput& in, Statistics s) { return s == Statistics::Raw ? in.raw : in.filtered; }
+
+const char* stats_text(Statistics s) { return s == Statistics::Raw ? "raw" : "filtered"; }
+
+// The row's source and its statistic, from the entry that judged it.
+template <class Entry>
+CriterionResult& sourced(CriterionResult& r, const Entry& e, std::string statistic) {
+  r.source = e.source, r.assumed = e.assumed, r.statistic = std::move(statistic);
+  return r;
+}
 
 CriterionResult row(const char* name, const char* unit, double value, double limit, bool upper) {
   CriterionResult r;
@@ -56,11 +91,9 @@ CriterionResult not_assessed(const char* name, const char* unit, double value, s
   return r;
 }
 
-std::string range_text(const SpeedRange& r) {
-  return std::isinf(r.to) ? fmt::format("from {:g} km/h", r.from) : fmt::format("{:g} to below {:g} km/h", r.from, r.to);
-}
-
 // The entry of a criterion whose speed range holds v (km/h), or nullptr; `why` then says which ranges it has.
+// A speed at a band's upper end belongs to it when no band starts there (the top band is closed: a source's
+// "up to 320 km/h" holds at 320 km/h).
 template <class Entry>
 const Entry* entry_at(const std::vector<Entry>& list, double v, std::string& why) {
   std::string ranges;
@@ -68,7 +101,9 @@ const Entry* entry_at(const std::vector<Entry>& list, double v, std::string& why
     if (e.speeds.contains(v)) return &e;
     ranges += (ranges.empty() ? "" : ", ") + range_text(e.speeds);
   }
-  why = fmt::format("applies at {} only", ranges);
+  for (const Entry& e : list)
+    if (v == e.speeds.to) return &e;
+  why = fmt::format("applies {} only", ranges);
   return nullptr;
 }
 
@@ -88,8 +123,11 @@ std::vector<CriterionResult> assess(const AcceptanceCriteria& c, const VerdictIn
     const Entry* e = entry_at(list, v, why);
     if (!e) return rows.push_back(not_assessed(name, unit, NAN, why)), e;
     if constexpr (requires { e->statistics; })
-      if (e->statistics == Statistics::Filtered && !in.has_filtered)
-        return rows.push_back(not_assessed(name, unit, NAN, "needs the 20 Hz statistics of a finite line")), (const Entry*)nullptr;
+      if (e->statistics == Statistics::Filtered && !in.has_filtered) {
+        rows.push_back(not_assessed(name, unit, NAN, "needs the 20 Hz statistics of a finite line"));
+        sourced(rows.back(), *e, stats_text(e->statistics));
+        return (const Entry*)nullptr;
+      }
     return e;
   };
   if (!c.mean.empty()) {
@@ -97,27 +135,40 @@ std::vector<CriterionResult> assess(const AcceptanceCriteria& c, const VerdictIn
     if (const auto* e = entry_at(c.mean, v, w); !e) {
       rows.push_back(not_assessed("mean_lower", "N", NAN, w)), rows.push_back(not_assessed("mean_upper", "N", NAN, w));
     } else if (e->statistics == Statistics::Filtered && !in.has_filtered) {
-      for (const char* n : {"mean_lower", "mean_upper"})
+      for (const char* n : {"mean_lower", "mean_upper"}) {
         rows.push_back(not_assessed(n, "N", NAN, "needs the 20 Hz statistics of a finite line"));
+        sourced(rows.back(), *e, fmt::format("{}, F_m", stats_text(e->statistics)));
+      }
     } else {
       const double m = pick(in, e->statistics).mean;
-      rows.push_back(row("mean_lower", "N", m, e->lower.at(v), false));
-      rows.push_back(row("mean_upper", "N", m, e->upper.at(v), true));
+      const std::string what = fmt::format("{}, F_m", stats_text(e->statistics));
+      rows.push_back(row("mean_lower", "N", m, e->lower.at(v), false)), sourced(rows.back(), *e, what);
+      rows.push_back(row("mean_upper", "N", m, e->upper.at(v), true)), sourced(rows.back(), *e, what);
     }
   }
   if (!c.sigma.empty())  // σ ≤ ratio · F_m, both of the chosen statistics
     if (const auto* e = usable(c.sigma, "sigma", "N")) {
       const ContactStatistics& s = pick(in, e->statistics);
       rows.push_back(row("sigma", "N", s.std, e->ratio * s.mean, true));
+      sourced(rows.back(), *e, fmt::format("{}, σ against {:g} F_m", stats_text(e->statistics), e->ratio));
     }
   if (!c.statistical_min.empty())
-    if (const auto* e = usable(c.statistical_min, "statistical_min", "N"))
+    if (const auto* e = usable(c.statistical_min, "statistical_min", "N")) {
       rows.push_back(row("statistical_min", "N", pick(in, e->statistics).stat_min, e->min, false));
+      sourced(rows.back(), *e, fmt::format("{}, F_m − 3σ", stats_text(e->statistics)));
+    }
   if (!c.max_force.empty())
-    if (const auto* e = usable(c.max_force, "max_force", "N"))
-      rows.push_back(row("max_force", "N", pick(in, e->statistics).max, e->max, true));
+    if (const auto* e = usable(c.max_force, "max_force", "N")) {
+      const ContactStatistics& s = pick(in, e->statistics);
+      const bool stat = e->measure == ForceMeasure::StatisticalMax;
+      // F_m + 3σ (ContactStatistics::stat_max), or the largest sample of the section.
+      rows.push_back(row("max_force", "N", stat ? s.mean + 3 * s.std : s.max, e->max, true));
+      sourced(rows.back(), *e, fmt::format("{}, {}", stats_text(e->statistics), stat ? "F_m + 3σ" : "largest sample"));
+    }
   if (!c.contact_loss.empty())
     if (const auto* e = usable(c.contact_loss, "contact_loss", "%")) {
+      const std::string what = e->min_duration > 0 ? fmt::format("raw, F <= 0 for >= {:g} ms (stands in for arcing)", 1e3 * e->min_duration)
+                                                   : std::string("raw, F <= 0 (stands in for arcing)");
       if (!in.has_loss_runs && e->min_duration > 0) {
         rows.push_back(not_assessed("contact_loss", "%", in.raw.loss_pct,
                                     "a minimum event duration needs the loss events of a finite line"));
@@ -126,14 +177,23 @@ std::vector<CriterionResult> assess(const AcceptanceCriteria& c, const VerdictIn
                                              : in.raw.loss_pct;
         rows.push_back(row("contact_loss", "%", loss, e->max_pct, true));
       }
+      sourced(rows.back(), *e, what);
     }
-  if (!c.support_uplift.empty()) {  // EN 50119 practice: clearance_factor · uplift within the line's design limit
+  if (!c.support_uplift.empty()) {  // EN 50119 practice: factor · uplift within the line's design limit
+    std::string w;
+    const auto* e = entry_at(c.support_uplift, v, w);
     if (std::isnan(in.uplift_max))
       rows.push_back(not_assessed("support_uplift", "m", NAN, "needs a finite line"));
     else if (std::isnan(in.uplift_limit))
       rows.push_back(not_assessed("support_uplift", "m", in.uplift_max, "the line has no registration.uplift_limit"));
-    else if (const auto* e = usable(c.support_uplift, "support_uplift", "m"))
-      rows.push_back(row("support_uplift", "m", in.uplift_max, in.uplift_limit / e->clearance_factor, true));
+    else if (!e)
+      rows.push_back(not_assessed("support_uplift", "m", in.uplift_max, w));
+    else
+      rows.push_back(row("support_uplift", "m", in.uplift_max, in.uplift_limit / e->factor(in.uplift_limited), true));
+    if (e)
+      sourced(rows.back(), *e,
+              fmt::format("largest registration uplift × {:g}{}", e->factor(in.uplift_limited),
+                          in.uplift_limited && !std::isnan(e->limited_clearance_factor) ? " (uplift limited by a stop)" : ""));
   }
   return rows;
 }
@@ -157,6 +217,8 @@ std::vector<CriterionResult> assess_static(const AcceptanceCriteria& criteria, c
     CriterionResult r;
     r.criterion = upper ? "static_force_upper" : "static_force_lower";
     r.unit = "N";
+    r.statistic = "static force over the working range";
+    r.source = s.source, r.assumed = s.assumed;
     r.upper = upper;
     r.limit = upper ? hi : lo;
     r.value = upper ? c.range_max() : c.range_min();
@@ -204,6 +266,7 @@ std::vector<VerdictInput> verdict_inputs(const SpeedResult& r) {
     if (x.has_filtered)  // a finite line: its registrations in the section (0 if none is there)
       x.uplift_max = r.support_uplift.empty() ? 0.0 : *std::max_element(r.support_uplift.begin(), r.support_uplift.end());
     x.uplift_limit = r.uplift_limit;
+    x.uplift_limited = r.uplift_limited;
   }
   return in;
 }
@@ -219,6 +282,7 @@ std::vector<VerdictInput> verdict_inputs(const CoupledSimulation& r) {
     VerdictInput& x = in[k];
     x.speed = r.speed;
     x.uplift_limit = r.uplift_limit;
+    x.uplift_limited = r.uplift_limited;
     x.uplift_max = uplift;
     if (k < r.quality.size()) {
       const ContactQuality& q = r.quality[k];

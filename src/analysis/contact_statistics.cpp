@@ -227,6 +227,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
       SpeedResult r = run_speed(*sys, options);
       r.t.clear(), r.F.clear();  // keep sweeps light
       r.uplift_limit = catenary.uplift_limit();
+      r.uplift_limited = catenary.uplift_limited();
       results[i] = std::move(r);
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);

@@ -198,6 +198,7 @@ CoupledSimulation simulate_coupled(const std::vector<catenary::PantographOnLine>
     r.uplift = support_uplift(r.supports.t, r.support_x, rows, r.section.from, r.section.to);
   }
   r.uplift_limit = catenary.uplift_limit();
+  r.uplift_limited = catenary.uplift_limited();
   return r;
 }
 

@@ -28,8 +28,10 @@ constexpr double kBandCheckTo = 1000;
 std::string preset_dir() { return INERTA_CRITERIA_DIR; }
 
 bool is_preset_name(const std::string& s) {
-  if (s.empty() || s.ends_with(".yaml") || s.ends_with(".yml")) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
+  if (s.empty() || s.ends_with(".yaml") || s.ends_with(".yml") || s.front() == '.') return false;
+  // Letters, digits, '-', '_' and '.' (en50367-dc1.5), not first.
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'; });
 }
 
 void keys(const std::string& f, const YAML::Node& n, const std::string& section, const std::set<std::string>& allowed) {
@@ -55,8 +57,9 @@ double number_in(const std::string& f, const YAML::Node& sec, const std::string&
 
 // A force curve of speed: |F(v)| ≤ 1e6 N from 0 to kBandCheckTo km/h (its ends and vertex decide), so
 // that no absurd coefficient (1e300) passes as a limit.
-SpeedCurve curve(const std::string& f, const YAML::Node& sec, const std::string& section) {
-  keys(f, sec, section, {"v2", "v1", "v0"});
+SpeedCurve curve(const std::string& f, const YAML::Node& sec, const std::string& section,
+                 std::set<std::string> allowed = {"v2", "v1", "v0"}) {
+  keys(f, sec, section, allowed);
   const SpeedCurve c{number(f, sec, section, "v2"), number(f, sec, section, "v1"), number(f, sec, section, "v0")};
   std::vector<double> vs{0, kBandCheckTo};
   if (c.v2 != 0 && -c.v1 / (2 * c.v2) > 0 && -c.v1 / (2 * c.v2) < kBandCheckTo) vs.push_back(-c.v1 / (2 * c.v2));
@@ -87,6 +90,45 @@ SpeedRange speeds(const std::string& f, const YAML::Node& sec, const std::string
   r.to = inf ? INFINITY : yaml_number(f, v[1], key);
   if (!(r.from >= 0) || !(r.to > r.from)) yaml_fail(f, v, key, "expected 0 <= from < to (km/h)");
   return r;
+}
+
+// Where an entry's number comes from (issue 53): `source:` (text: the document and the public address it was
+// read at) and `assumed:` (true: not verified against a public source; the default, so a file claims a
+// verified number only by saying assumed: false).
+template <class Entry>
+void sourced(const std::string& f, const YAML::Node& sec, const std::string& section, Entry& e) {
+  if (const YAML::Node s = sec["source"]; s.IsDefined()) {
+    if (!s.IsScalar() || s.Scalar().empty())
+      yaml_fail(f, s, section + ".source", "expected a text: the document and the public address the number was read at");
+    e.source = s.Scalar();
+  }
+  if (const YAML::Node a = sec["assumed"]; a.IsDefined()) {
+    if (!a.IsScalar() || (a.Scalar() != "true" && a.Scalar() != "false"))
+      yaml_fail(f, a, section + ".assumed", fmt::format("'{}'; expected true (not verified against a public source) or false",
+                                                        a.IsScalar() ? a.Scalar() : "a list or map"));
+    e.assumed = a.Scalar() == "true";
+  }
+}
+
+// The speeds where two ranges both hold (the top end closed, as the verdict takes it); empty: from > to.
+SpeedRange common(const SpeedRange& a, const SpeedRange& b) {
+  SpeedRange r;
+  r.from = std::max(a.from, b.from), r.to = std::min(a.to, b.to);
+  return r;
+}
+
+// a(v) ≤ b(v) over [lo, hi]: the difference is a quadratic, so its ends and its vertex decide. The first speed
+// where it fails, or NaN.
+double first_above(const SpeedCurve& a, const SpeedCurve& b, double lo, double hi) {
+  const double d2 = b.v2 - a.v2, d1 = b.v1 - a.v1;
+  std::vector<double> vs{lo, hi};
+  if (d2 != 0) {
+    const double vertex = -d1 / (2 * d2);
+    if (vertex > lo && vertex < hi) vs.push_back(vertex);
+  }
+  for (double v : vs)
+    if (a.at(v) > b.at(v) + 1e-9 * std::max(1.0, std::abs(b.at(v)))) return v;
+  return NAN;
 }
 
 // lower(v) ≤ upper(v) over the range: the difference is a quadratic, so its ends and its vertex decide.
@@ -134,6 +176,11 @@ AcceptanceCriteria read(const std::string& f) {
   keys(f, root, "criteria",
        {"name", "filter", "mean_force", "sigma", "statistical_min", "max_force", "contact_loss", "support_uplift", "target",
         "static_contact_force"});
+  // Keys every criterion's entry may give besides its own (issue 53).
+  auto with_common = [](std::set<std::string> k) {
+    k.insert({"speeds", "source", "assumed"});
+    return k;
+  };
   AcceptanceCriteria c;
   c.source = f;
   if (!root["name"].IsDefined() || !root["name"].IsScalar()) yaml_fail(f, root, "name", "missing; expected the set's name");
@@ -146,43 +193,97 @@ AcceptanceCriteria read(const std::string& f) {
   c.filter_order = yaml_whole(f, filter["order"], "filter.order", 1, 8);
   using C = AcceptanceCriteria;
   c.mean = entries<C::MeanBand>(f, root, "mean_force", [&](const YAML::Node& s, const std::string& k) {
-    keys(f, s, k, {"lower", "upper", "statistics", "speeds"});
+    keys(f, s, k, with_common({"lower", "upper", "statistics"}));
     for (const char* e : {"lower", "upper"})
       if (!s[e].IsDefined()) yaml_fail(f, s, fmt::format("{}.{}", k, e), "missing; expected {v2, v1, v0} (N, v in km/h)");
-    C::MeanBand b{curve(f, s["lower"], k + ".lower"), curve(f, s["upper"], k + ".upper"), statistics(f, s, k), speeds(f, s, k)};
+    C::MeanBand b;
+    b.lower = curve(f, s["lower"], k + ".lower"), b.upper = curve(f, s["upper"], k + ".upper");
+    b.statistics = statistics(f, s, k), b.speeds = speeds(f, s, k);
+    sourced(f, s, k, b);
     check_band(f, s, k, b);
     return b;
   });
   c.sigma = entries<C::SigmaRatio>(f, root, "sigma", [&](const YAML::Node& s, const std::string& k) {
-    keys(f, s, k, {"max_ratio", "statistics", "speeds"});
-    return C::SigmaRatio{number_in(f, s, k, "max_ratio", 1e-6, 10, "> 0 (σ / F_m)"), statistics(f, s, k), speeds(f, s, k)};
+    keys(f, s, k, with_common({"max_ratio", "statistics"}));
+    C::SigmaRatio e;
+    e.ratio = number_in(f, s, k, "max_ratio", 1e-6, 10, "> 0 (σ / F_m)"), e.statistics = statistics(f, s, k), e.speeds = speeds(f, s, k);
+    sourced(f, s, k, e);
+    return e;
   });
   c.statistical_min = entries<C::StatisticalMin>(f, root, "statistical_min", [&](const YAML::Node& s, const std::string& k) {
-    keys(f, s, k, {"min", "statistics", "speeds"});
-    return C::StatisticalMin{number(f, s, k, "min"), statistics(f, s, k), speeds(f, s, k)};
+    keys(f, s, k, with_common({"min", "statistics"}));
+    C::StatisticalMin e;
+    e.min = number(f, s, k, "min"), e.statistics = statistics(f, s, k), e.speeds = speeds(f, s, k);
+    sourced(f, s, k, e);
+    return e;
   });
   c.max_force = entries<C::MaxForce>(f, root, "max_force", [&](const YAML::Node& s, const std::string& k) {
-    keys(f, s, k, {"max", "statistics", "speeds"});
-    return C::MaxForce{number_in(f, s, k, "max", 1e-6, 1e6, "> 0 (N)"), statistics(f, s, k), speeds(f, s, k)};
+    keys(f, s, k, with_common({"max", "statistics", "measure"}));
+    C::MaxForce e;
+    e.max = number_in(f, s, k, "max", 1e-6, 1e6, "> 0 (N)"), e.statistics = statistics(f, s, k), e.speeds = speeds(f, s, k);
+    sourced(f, s, k, e);
+    if (const YAML::Node m = s["measure"]; m.IsDefined()) {  // the largest sample (the default) or F_m + 3σ
+      if (m.IsScalar() && m.Scalar() == "statistical_max")
+        e.measure = analysis::ForceMeasure::StatisticalMax;
+      else if (!m.IsScalar() || m.Scalar() != "largest")
+        yaml_fail(f, m, k + ".measure",
+                  fmt::format("'{}'; expected largest (the largest sample) or statistical_max (F_m + 3σ)",
+                              m.IsScalar() ? m.Scalar() : "a list or map"));
+    }
+    return e;
   });
   c.contact_loss = entries<C::ContactLoss>(f, root, "contact_loss", [&](const YAML::Node& s, const std::string& k) {
-    keys(f, s, k, {"max_pct", "min_duration", "speeds"});
-    return C::ContactLoss{number_in(f, s, k, "max_pct", 0, 100, "a percentage from 0 to 100"),
-                          number_in(f, s, k, "min_duration", 0, 10, "0 to 10 s"), speeds(f, s, k)};
+    keys(f, s, k, with_common({"max_pct", "min_duration"}));
+    C::ContactLoss e;
+    e.max_pct = number_in(f, s, k, "max_pct", 0, 100, "a percentage from 0 to 100");
+    e.min_duration = number_in(f, s, k, "min_duration", 0, 10, "0 to 10 s"), e.speeds = speeds(f, s, k);
+    sourced(f, s, k, e);
+    return e;
   });
   c.support_uplift = entries<C::SupportUplift>(f, root, "support_uplift", [&](const YAML::Node& s, const std::string& k) {
-    keys(f, s, k, {"clearance_factor", "speeds"});
-    return C::SupportUplift{number_in(f, s, k, "clearance_factor", 1, 10, "1 to 10"), speeds(f, s, k)};
+    keys(f, s, k, with_common({"clearance_factor", "limited_clearance_factor"}));
+    C::SupportUplift e;
+    e.clearance_factor = number_in(f, s, k, "clearance_factor", 1, 10, "1 to 10"), e.speeds = speeds(f, s, k);
+    sourced(f, s, k, e);
+    if (s["limited_clearance_factor"].IsDefined()) {  // a line whose uplift a stop limits (registration.uplift_limited)
+      e.limited_clearance_factor = number_in(f, s, k, "limited_clearance_factor", 1, 10, "1 to 10");
+      if (e.limited_clearance_factor > e.clearance_factor)
+        yaml_fail(f, s["limited_clearance_factor"], k + ".limited_clearance_factor",
+                  fmt::format("{:g} is above clearance_factor ({:g}); expected at most it (a stop limits the uplift)",
+                              e.limited_clearance_factor, e.clearance_factor));
+    }
+    return e;
   });
-  if (const YAML::Node s = root["target"]; s.IsDefined()) {
+  if (const YAML::Node s = root["target"]; s.IsDefined()) {  // {v2, v1, v0, speeds, source, assumed}
     c.has_target = true;
-    c.target = curve(f, s, "target");
+    static_cast<SpeedCurve&>(c.target) = curve(f, s, "target", with_common({"v2", "v1", "v0"}));
+    c.target.speeds = speeds(f, s, "target");
+    sourced(f, s, "target", c.target);
+    // Inside every mean-force band where both hold: lower ≤ target ≤ upper (issue 53).
+    for (std::size_t i = 0; i < c.mean.size(); ++i) {
+      const auto& b = c.mean[i];
+      const SpeedRange r = common(b.speeds, c.target.speeds);
+      if (!(r.from <= r.to)) continue;
+      const double hi = std::isinf(r.to) ? std::max(kBandCheckTo, r.from) : r.to;
+      const std::string band = c.mean.size() > 1 ? fmt::format("mean_force[{}]", i) : std::string("mean_force");
+      if (const double v = first_above(b.lower, c.target, r.from, hi); !std::isnan(v))
+        yaml_fail(f, s, "target",
+                  fmt::format("{:.4g} N at {:.4g} km/h is below {}'s lower edge {:.4g} N; expected lower <= target <= upper "
+                              "where both hold (bound the target's speeds)",
+                              c.target.SpeedCurve::at(v), v, band, b.lower.at(v)));
+      if (const double v = first_above(c.target, b.upper, r.from, hi); !std::isnan(v))
+        yaml_fail(f, s, "target",
+                  fmt::format("{:.4g} N at {:.4g} km/h is above {}'s upper edge {:.4g} N; expected lower <= target <= upper "
+                              "where both hold (bound the target's speeds)",
+                              c.target.SpeedCurve::at(v), v, band, b.upper.at(v)));
+    }
   }
   if (const YAML::Node s = root["static_contact_force"]; s.IsDefined()) {  // {lower, upper, tolerance_pct} (issue 49)
     const std::string k = "static_contact_force";
     if (!s.IsMap()) yaml_fail(f, s, k, "expected {lower: N, upper: N, tolerance_pct: %} (at least one)");
-    keys(f, s, k, {"lower", "upper", "tolerance_pct"});
+    keys(f, s, k, {"lower", "upper", "tolerance_pct", "source", "assumed"});
     c.has_static_force = true;
+    sourced(f, s, k, c.static_force);
     if (s["lower"].IsDefined()) c.static_force.lower = number_in(f, s, k, "lower", 0, 1e4, "a force from 0 to 1e4 N");
     if (s["upper"].IsDefined()) c.static_force.upper = number_in(f, s, k, "upper", 0, 1e4, "a force from 0 to 1e4 N");
     if (s["tolerance_pct"].IsDefined())
@@ -226,11 +327,12 @@ const char* status_text(const analysis::CriterionResult& r) {
 }
 
 std::string acceptance_csv(const std::vector<analysis::VerdictRow>& rows) {
-  std::string out = "v_kmh,v_ms,pantograph,criterion,unit,value,limit,margin,status,note\n";
+  std::string out = "v_kmh,v_ms,pantograph,criterion,unit,value,limit,margin,status,note,statistic,assumed,source\n";
   for (const analysis::VerdictRow& x : rows) {
     const analysis::CriterionResult& r = x.result;
-    out += fmt::format("{:.6g},{:.6g},{},{},{},{:.6g},{:.6g},{:.6g},{},{}\n", x.speed * 3.6, x.speed, x.pantograph, r.criterion,
-                       r.unit, r.value, r.limit, r.margin, status_text(r), csv_field(r.note));
+    out += fmt::format("{:.6g},{:.6g},{},{},{},{:.6g},{:.6g},{:.6g},{},{},{},{},{}\n", x.speed * 3.6, x.speed, x.pantograph,
+                       r.criterion, r.unit, r.value, r.limit, r.margin, status_text(r), csv_field(r.note),
+                       csv_field(r.statistic), r.statistic.empty() ? "" : r.assumed ? "true" : "false", csv_field(r.source));
   }
   return out;
 }

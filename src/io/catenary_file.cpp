@@ -224,6 +224,7 @@ std::vector<std::string> fe_keys(const std::string& section) {
   if (section == "droppers") k = {"x", "presag", "nominal_length"};
   if (section == "section") k = {"spans"};
   if (section == "solver") k = {"type"};
+  if (section == "registration") k = {"uplift_limited"};
   if (section == "stitch") k = {"enabled", "length", "tension", "mass_per_length", "EI", "clamp_mass", "droppers"};
   if (section == "irregularity")
     k = {"dropper_length_std", "seed", "dropper_length_errors", "height_errors", "point_masses", "exact_dropper_dynamics"};
@@ -458,6 +459,8 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
     }
     *fe_list(d, k) = fe_numbers(rd, n, k);
   }
+  if (const YAML::Node rg = root["registration"]; rg.IsMap() && rg["uplift_limited"].IsDefined())  // a stop (issue 53)
+    d.registration_uplift_limited = rd.boolean(rg["uplift_limited"], "uplift_limited");
   if (const YAML::Node st = root["stitch"]; st.IsDefined() && !st.IsNull()) read_fe_stitch(rd, st, d.stitch);
   if (const YAML::Node ir = root["irregularity"]; ir.IsDefined() && !ir.IsNull()) read_fe_irregularity(rd, ir, d);
   if (const YAML::Node sec = root["section"]; sec.IsDefined() && !sec.IsNull()) {
@@ -657,6 +660,12 @@ bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string
     d.solver = value == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
     return true;
   }
+  if (section == "registration" && key == "uplift_limited") {
+    if (value != "true" && value != "false")
+      throw ModelError(fmt::format("--set '{}': expected registration.uplift_limited=true or false", o));
+    d.registration_uplift_limited = value == "true";
+    return true;
+  }
   if (section == "stitch") {
     catenary::FeStitch& st = d.stitch;
     if (key == "enabled") {
@@ -728,7 +737,7 @@ std::string fe_override_help() {
   return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, solver.type=modal|direct, "
              "stitch.enabled=true|false, stitch.length, stitch.tension, stitch.mass_per_length, stitch.EI, stitch.clamp_mass, "
              "stitch.droppers.EA, irregularity.dropper_length_std, irregularity.seed, irregularity.height_errors=CSV, "
-             "irregularity.exact_dropper_dynamics=true|false, ";
+             "irregularity.exact_dropper_dynamics=true|false, registration.uplift_limited=true|false, ";
 }
 
 void apply_override(Parsed& c, const std::string& o) {

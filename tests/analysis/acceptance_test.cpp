@@ -44,15 +44,48 @@ analysis::VerdictInput input(double v_kmh) {
   return in;
 }
 
+using C = AcceptanceCriteria;
+C::MeanBand band(analysis::SpeedCurve lower, analysis::SpeedCurve upper, Statistics s, analysis::SpeedRange r = {}) {
+  C::MeanBand b;
+  b.lower = lower, b.upper = upper, b.statistics = s, b.speeds = r;
+  return b;
+}
+C::SigmaRatio sigma(double ratio, Statistics s) {
+  C::SigmaRatio e;
+  e.ratio = ratio, e.statistics = s;
+  return e;
+}
+C::StatisticalMin stat_min(double min, Statistics s) {
+  C::StatisticalMin e;
+  e.min = min, e.statistics = s;
+  return e;
+}
+C::MaxForce max_force(double max, Statistics s, analysis::SpeedRange r = {},
+                      analysis::ForceMeasure m = analysis::ForceMeasure::Largest) {
+  C::MaxForce e;
+  e.max = max, e.statistics = s, e.speeds = r, e.measure = m;
+  return e;
+}
+C::ContactLoss loss(double pct, double min_duration, analysis::SpeedRange r = {}) {
+  C::ContactLoss e;
+  e.max_pct = pct, e.min_duration = min_duration, e.speeds = r;
+  return e;
+}
+C::SupportUplift uplift(double factor, double limited = NAN) {
+  C::SupportUplift e;
+  e.clearance_factor = factor, e.limited_clearance_factor = limited;
+  return e;
+}
+
 // Raw statistics throughout, so each number above is the value a criterion reads.
 AcceptanceCriteria raw_criteria() {
   AcceptanceCriteria c;
   c.name = "hand";
-  c.mean.push_back({{0, 0, 110}, {0, 0, 130}, Statistics::Raw, {}});
-  c.sigma.push_back({0.1, Statistics::Raw, {}});
-  c.statistical_min.push_back({0, Statistics::Raw, {}});
-  c.max_force.push_back({250, Statistics::Raw, {}});
-  c.contact_loss.push_back({1.0, 0.005, {}});
+  c.mean.push_back(band({0, 0, 110}, {0, 0, 130}, Statistics::Raw));
+  c.sigma.push_back(sigma(0.1, Statistics::Raw));
+  c.statistical_min.push_back(stat_min(0, Statistics::Raw));
+  c.max_force.push_back(max_force(250, Statistics::Raw));
+  c.contact_loss.push_back(loss(1.0, 0.005));
   return c;
 }
 
@@ -106,21 +139,24 @@ TEST(Acceptance, LossEventsAreMaximalRunsAndTheirDurationIsSamplesTimesTheStep) 
 
 TEST(Acceptance, ASpeedBandPicksItsEntryAndOutsideEveryBandTheCriterionIsNotAssessed) {
   AcceptanceCriteria c;
-  c.contact_loss.push_back({0.1, 0, {0, 250}});
-  c.contact_loss.push_back({2.0, 0, {250, 320}});
+  c.contact_loss.push_back(loss(0.1, 0, {0, 250}));
+  c.contact_loss.push_back(loss(2.0, 0, {250, 320}));
   // 1.1 % of loss: above 0.1 % below 250 km/h, within 2 % from 250 km/h (from ≤ v < to).
   EXPECT_FALSE(find(analysis::assess(c, input(249)), "contact_loss").passed);
   EXPECT_TRUE(find(analysis::assess(c, input(250)), "contact_loss").passed);
-  const CriterionResult& out = find(analysis::assess(c, input(330)), "contact_loss");
+  const CriterionResult out = find(analysis::assess(c, input(330)), "contact_loss");
   EXPECT_FALSE(out.assessed);
-  EXPECT_NE(out.note.find("250 to below 320 km/h"), std::string::npos) << out.note;
+  EXPECT_NE(out.note.find("from 250 to 320 km/h"), std::string::npos) << out.note;
   EXPECT_TRUE(analysis::passed(analysis::assess(c, input(330))));  // not assessed does not decide
+  // The top band holds at its end ("up to 320 km/h"); a band's end where the next starts belongs to the next.
+  EXPECT_TRUE(find(analysis::assess(c, input(320)), "contact_loss").assessed);
+  EXPECT_EQ(find(analysis::assess(c, input(320)), "contact_loss").limit, 2.0);
 }
 
 TEST(Acceptance, FilteredStatisticsAndSupportUpliftNeedAFiniteLineAndItsLimit) {
   AcceptanceCriteria c;
-  c.sigma.push_back({0.3, Statistics::Filtered, {}});
-  c.support_uplift.push_back({2.0, {}});
+  c.sigma.push_back(sigma(0.3, Statistics::Filtered));
+  c.support_uplift.push_back(uplift(2.0));
   analysis::VerdictInput in = input(200);  // a lumped line: no 20 Hz statistics, no registrations
   auto rows = analysis::assess(c, in);
   EXPECT_FALSE(find(rows, "sigma").assessed);
@@ -163,6 +199,97 @@ TEST(Acceptance, TheBindingCriterionHasTheLeastMarginRelativeToItsLimit) {
   EXPECT_EQ(analysis::binding(rows), 0u);
 }
 
+// Issue 53: the maximum force on the statistical maximum F_m + 3σ, banded in speed.
+TEST(Acceptance, TheMaximumForceOnFmPlus3SigmaPicksItsSpeedBand) {
+  AcceptanceCriteria c;
+  c.max_force.push_back(max_force(300, Statistics::Filtered, {0, 200}, analysis::ForceMeasure::StatisticalMax));
+  c.max_force.push_back(max_force(350, Statistics::Filtered, {200, INFINITY}, analysis::ForceMeasure::StatisticalMax));
+  c.max_force[0].source = "below", c.max_force[1].source = "above", c.max_force[1].assumed = false;
+  analysis::VerdictInput in = input(200);
+  // Known filtered statistics: F_m = 150 N, σ = 50 N, so F_m + 3σ = 300 N by hand (the largest sample, 900 N,
+  // is not what this measure reads).
+  in.has_filtered = true;
+  in.filtered.mean = 150, in.filtered.std = 50, in.filtered.max = 900;
+  for (const double v : {199.999, 200.001}) {
+    in.speed = v / 3.6;
+    const CriterionResult r = find(analysis::assess(c, in), "max_force");
+    ASSERT_TRUE(r.assessed) << v;
+    EXPECT_DOUBLE_EQ(r.value, 150 + 3 * 50) << v;
+    EXPECT_EQ(r.limit, v < 200 ? 300 : 350) << v;
+    EXPECT_DOUBLE_EQ(r.margin, (v < 200 ? 300 : 350) - 300.0) << v;
+    EXPECT_TRUE(r.passed) << v;  // 300 N against 300 N passes (margin 0)
+    EXPECT_EQ(r.statistic, "filtered, F_m + 3σ");
+    EXPECT_EQ(r.source, v < 200 ? "below" : "above");
+    EXPECT_EQ(r.assumed, v < 200);
+  }
+  in.filtered.std = 50.001;  // just above 300 N: fails below 200 km/h, passes above
+  in.speed = 199.999 / 3.6;
+  EXPECT_FALSE(find(analysis::assess(c, in), "max_force").passed);
+  in.speed = 200.001 / 3.6;
+  EXPECT_TRUE(find(analysis::assess(c, in), "max_force").passed);
+  // The largest sample, as before: 900 N.
+  c.max_force[1].measure = analysis::ForceMeasure::Largest;
+  const CriterionResult largest = find(analysis::assess(c, in), "max_force");
+  EXPECT_EQ(largest.value, 900);
+  EXPECT_EQ(largest.statistic, "filtered, largest sample");
+}
+
+// Issue 53: a bounded target curve refuses a speed outside its range; every row carries its source.
+TEST(Acceptance, ATargetOutsideItsSpeedsIsNotAssessedAndRowsCarryTheirSource) {
+  analysis::TargetCurve t;
+  t.v2 = 0.00047, t.v0 = 90, t.speeds = {200, 320};
+  EXPECT_NEAR(t.at(300), 132.3, 1e-9);
+  EXPECT_NEAR(t.at(320), 0.00047 * 320 * 320 + 90, 1e-9);  // the end of the range holds
+  EXPECT_FALSE(t.covers(199.9));
+  try {
+    t.at(150);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("not assessed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("from 200 to 320 km/h"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(t.at(320.1), InvalidArgument);
+  // A bounded mean band: outside it both rows are not assessed, with a note naming its speeds.
+  AcceptanceCriteria c = raw_criteria();
+  c.mean[0].speeds = {200, 320};
+  c.mean[0].source = "a document, https://example.org/x";
+  auto rows = analysis::assess(c, input(150));
+  EXPECT_FALSE(find(rows, "mean_lower").assessed);
+  EXPECT_NE(find(rows, "mean_upper").note.find("from 200 to 320 km/h"), std::string::npos) << find(rows, "mean_upper").note;
+  EXPECT_TRUE(find(rows, "mean_upper").statistic.empty());  // no entry judged it
+  rows = analysis::assess(c, input(250));
+  EXPECT_EQ(find(rows, "mean_lower").source, "a document, https://example.org/x");
+  EXPECT_EQ(find(rows, "mean_lower").statistic, "raw, F_m");
+  EXPECT_TRUE(find(rows, "mean_lower").assumed);  // the default: not verified
+  EXPECT_EQ(find(rows, "contact_loss").statistic, "raw, F <= 0 for >= 5 ms (stands in for arcing)");
+  // The verdict's line on arcing.
+  EXPECT_NE(analysis::arcing_text(c).find("stands in for the measured percentage of arcing"), std::string::npos);
+  EXPECT_NE(analysis::arcing_text(c).find("5 ms"), std::string::npos) << analysis::arcing_text(c);
+  EXPECT_EQ(analysis::arcing_text(AcceptanceCriteria{}), "");
+}
+
+// Issue 53: where a stop limits the registration's uplift, the clearance is 1.5 S₀, else 2 S₀.
+TEST(Acceptance, ALimitedSupportUpliftTakesTheLimitedClearanceFactor) {
+  AcceptanceCriteria c;
+  c.support_uplift.push_back(uplift(2.0, 1.5));
+  analysis::VerdictInput in = input(200);
+  in.has_filtered = true, in.filtered = in.raw;
+  in.uplift_max = 0.05, in.uplift_limit = 0.09;
+  CriterionResult r = find(analysis::assess(c, in), "support_uplift");
+  EXPECT_NEAR(r.limit, 0.045, 1e-15);  // 2 · 50 mm > 90 mm
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.statistic, "largest registration uplift × 2");
+  in.uplift_limited = true;  // 1.5 · 50 mm = 75 mm ≤ 90 mm
+  r = find(analysis::assess(c, in), "support_uplift");
+  EXPECT_NEAR(r.limit, 0.06, 1e-15);
+  EXPECT_NEAR(r.margin, 0.01, 1e-15);
+  EXPECT_TRUE(r.passed);
+  EXPECT_EQ(r.statistic, "largest registration uplift × 1.5 (uplift limited by a stop)");
+  // Without a limited factor the set's clearance factor holds on a limited line too.
+  c.support_uplift[0].limited_clearance_factor = NAN;
+  EXPECT_NEAR(find(analysis::assess(c, in), "support_uplift").limit, 0.045, 1e-15);
+}
+
 TEST(Acceptance, BadInputIsRefused) {
   analysis::VerdictInput in = input(200);
   in.sample_dt = 0;
@@ -177,7 +304,7 @@ TEST(Acceptance, BadInputIsRefused) {
 TEST(Acceptance, AsAStudyLimitADesignAtTheEdgePassesOnOneSideAndFailsOnTheOther) {
   auto c = std::make_shared<AcceptanceCriteria>();
   c->name = "edge";
-  c->sigma.push_back({0.3, Statistics::Filtered, {}});
+  c->sigma.push_back(sigma(0.3, Statistics::Filtered));
   optim::Study study;
   study.limits.acceptance = c;
   auto sweep = [](double sigma) {

@@ -30,11 +30,24 @@ std::vector<std::map<std::string, std::string>> csv_rows(const std::string& text
     for (std::string h; std::getline(hs, h, ',');) head.push_back(h);
   }
   std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(ss, line)) {
-    std::stringstream ls(line);
+  while (std::getline(ss, line)) {  // a field may be quoted ("a, b"; "" for a quote): notes, statistics, sources
     std::map<std::string, std::string> row;
     std::size_t i = 0;
-    for (std::string f; std::getline(ls, f, ',') && i < head.size(); ++i) row[head[i]] = f;
+    std::string f;
+    bool quoted = false;
+    for (std::size_t k = 0; k <= line.size(); ++k) {
+      const char ch = k < line.size() ? line[k] : ',';
+      if (quoted && ch == '"' && k + 1 < line.size() && line[k + 1] == '"') {
+        f += '"', ++k;
+      } else if (ch == '"') {
+        quoted = !quoted;
+      } else if (ch == ',' && !quoted) {
+        if (i < head.size()) row[head[i]] = f;
+        ++i, f.clear();
+      } else {
+        f += ch;
+      }
+    }
     rows.push_back(row);
   }
   return rows;
@@ -62,17 +75,26 @@ TEST_F(AcceptanceCli, TheSweepVerdictIsTheOneItsCsvStatisticsGive) {
     auto num = [&](const char* k) { return std::stod(s.at(k)); };
     const std::string& crit = row.at("criterion");
     std::string expect;
-    if (crit == "mean_lower") expect = num("f_mean") >= c.mean[0].lower.at(v) ? "PASS" : "FAIL";
-    if (crit == "mean_upper") expect = num("f_mean") <= c.mean[0].upper.at(v) ? "PASS" : "FAIL";
+    const auto& band = c.mean[v < 200 ? 0 : 1];  // the F_m band: 0 … 200 and 200 … 320 km/h
+    if (crit == "mean_lower") expect = num("f_mean") >= band.lower.at(v) ? "PASS" : "FAIL";
+    if (crit == "mean_upper") expect = num("f_mean") <= band.upper.at(v) ? "PASS" : "FAIL";
     if (crit == "sigma") expect = num("f_std") <= 0.3 * num("f_mean") ? "PASS" : "FAIL";
     if (crit == "statistical_min") expect = num("f_stat_min") >= 0 ? "PASS" : "FAIL";
-    if (crit == "max_force") expect = num("f_max") <= 350 ? "PASS" : "FAIL";
-    if (crit == "contact_loss") expect = num("loss_counted_pct") <= (v < 250 ? 0.1 : 0.2) ? "PASS" : "FAIL";
+    // The statistical maximum F_m + 3σ: 300 N below 200 km/h, 350 N from 200 km/h (issue 53).
+    if (crit == "max_force") expect = num("f_stat_max") <= (v < 200 ? 300 : 350) ? "PASS" : "FAIL";
+    if (crit == "contact_loss") expect = num("loss_counted_pct") <= (v < 200 ? 0.1 : 0.2) ? "PASS" : "FAIL";
+    if (crit != "support_uplift") {  // the AC set's numbers are unverified
+      EXPECT_EQ(row.at("assumed"), "true") << crit;
+    }
     if (crit == "support_uplift") expect = "not assessed";  // catenary-fe.yaml has no registration.uplift_limit
     EXPECT_EQ(row.at("status"), expect) << crit << " at " << v;
     ++checked;
   }
   EXPECT_EQ(checked, 2 * 7);
+  // The verdict says which numbers are assumed and what stands in for arcing (issue 53).
+  EXPECT_TRUE(contains(r.out, "max_force [assumed]")) << r.out;
+  EXPECT_TRUE(contains(r.out, "(filtered, F_m + 3σ)")) << r.out;
+  EXPECT_TRUE(contains(r.out, "stands in for the measured percentage of arcing")) << r.out;
   r = run("sweep " + model("pantograph-3mass.yaml") + " --catenary " + kLine +
           " --speeds 200:100:300 --unit kmh --acceptance en50367-ac --strict --out " + quote(path("s.csv").string()));
   EXPECT_EQ(r.code, 6) << r.out << r.err;
@@ -185,13 +207,18 @@ TEST_F(AcceptanceCli, AeroFitBringsTheMeanForceToTheTarget) {
     EXPECT_EQ(r.code, 105) << w << r.err;
     EXPECT_TRUE(contains(r.err, "--working-range")) << w << r.err;
   }
-  r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + kLine + " --acceptance en50367-ac --speed 300 --param k=1");
+  r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + kLine + " --acceptance en50367-ac --speed 300 --unit kmh --param k=1");
   EXPECT_EQ(r.code, 105) << r.err;
   EXPECT_TRUE(contains(r.err, "--param")) << r.err;
   r = run("pantograph aero-fit " + model("hsx.yaml") + " --catenary " + kLine +
-          " --acceptance en50367-ac --speed 300 --suspension 'k-q'");
+          " --acceptance en50367-ac --speed 300 --unit kmh --suspension 'k-q'");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_TRUE(contains(r.err, "--suspension 'k-q'")) << r.err;
+  // Outside the speeds its source gives the target for (issue 53): refused, naming them.
+  r = run("pantograph aero-fit " + model("pantograph-3mass.yaml") + " --catenary " + kLine +
+          " --acceptance en50367-ac --speed 150 --unit kmh");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(contains(r.err, "not assessed; its source gives it from 200 to 320 km/h only")) << r.err;
 }
 
 }  // namespace test_apps_acceptance_cli

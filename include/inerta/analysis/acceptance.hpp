@@ -15,7 +15,11 @@
 // - Contact loss (the proxy for arcing): the share, in %, of the analysis section's samples whose
 //   raw force is ≤ 0 and that belong to a loss event (a maximal run of consecutive such samples)
 //   lasting at least min_duration; a run of n samples lasts n·Δt. With min_duration 0 it is the
-//   EN 50317 statistic loss_pct.
+//   EN 50317 statistic loss_pct. It stands in for the measured percentage of arcing of the standards
+//   (arcing_text() says so, for a verdict's output).
+// - Every entry carries where its number comes from (`source`: the document and the public address it
+//   was read at) and whether it stays unverified (`assumed`); each row copies both, with the statistic
+//   it judged (issue 53), so that a report shows them beside the verdict.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -36,10 +40,30 @@ struct SpeedCurve {
 /// Which statistics a criterion reads: the raw section force or the 20 Hz low-passed one.
 enum class Statistics { Raw, Filtered };
 
-/// A speed range in km/h, from ≤ v < to (so [0, 250] and [250, ∞] meet without overlapping).
+/// A speed range in km/h, from ≤ v < to (so [0, 250] and [250, ∞] meet without overlapping); a criterion's
+/// top band also holds at its `to` (no band starts there: "up to 320 km/h" includes 320 km/h).
 struct SpeedRange {
   double from = 0, to = std::numeric_limits<double>::infinity();
   bool contains(double v_kmh) const { return v_kmh >= from && v_kmh < to; }
+};
+
+/// "from 0 to 200 km/h", "from 200 km/h" (the whole range: "at every speed").
+std::string range_text(const SpeedRange& r);
+
+/// What the largest force is judged on: the largest sample of the section, or the statistical maximum
+/// F_m + 3σ (EN 50367 / TSI practice for the maximum contact force of a simulation).
+enum class ForceMeasure { Largest, StatisticalMax };
+
+/// The mean-force target curve over the speeds its source gives it for (issue 53): at() refuses
+/// (InvalidArgument naming the range) a speed outside them, so that no caller fits to an extrapolation.
+struct TargetCurve : SpeedCurve {
+  SpeedRange speeds;
+  std::string source;   ///< the document and public address the curve was read at
+  bool assumed = true;  ///< not verified against a public source
+  /// from ≤ v ≤ to: the curve holds at the end of its range ("up to 320 km/h").
+  bool covers(double v_kmh) const { return speeds.contains(v_kmh) || v_kmh == speeds.to; }
+  /// F(v), N; InvalidArgument outside `speeds`.
+  double at(double v_kmh) const;
 };
 
 struct AcceptanceCriteria {
@@ -55,40 +79,61 @@ struct AcceptanceCriteria {
     SpeedCurve lower, upper;
     Statistics statistics = Statistics::Filtered;
     SpeedRange speeds;
+    std::string source;   ///< the document and public address the number was read at
+    bool assumed = true;  ///< not verified against a public source: the verdict marks it [assumed]
   };
   std::vector<MeanBand> mean;
   struct SigmaRatio {  ///< σ ≤ ratio · F_m
     double ratio = 0.3;
     Statistics statistics = Statistics::Filtered;
     SpeedRange speeds;
+    std::string source;
+    bool assumed = true;
   };
   std::vector<SigmaRatio> sigma;
   struct StatisticalMin {  ///< F_m − 3σ ≥ min
     double min = 0;  ///< N
     Statistics statistics = Statistics::Filtered;
     SpeedRange speeds;
+    std::string source;
+    bool assumed = true;
   };
   std::vector<StatisticalMin> statistical_min;
-  struct MaxForce {  ///< the largest section force ≤ max
+  struct MaxForce {  ///< the largest section force (the largest sample, or F_m + 3σ) ≤ max
     double max = 0;  ///< N
     Statistics statistics = Statistics::Filtered;
     SpeedRange speeds;
+    std::string source;
+    bool assumed = true;
+    ForceMeasure measure = ForceMeasure::Largest;  ///< `measure: largest | statistical_max`
   };
   std::vector<MaxForce> max_force;
   struct ContactLoss {  ///< counted loss (see above) ≤ max_pct
     double max_pct = 0;       ///< %
     double min_duration = 0;  ///< s
     SpeedRange speeds;
+    std::string source;
+    bool assumed = true;
   };
   std::vector<ContactLoss> contact_loss;
-  struct SupportUplift {  ///< clearance_factor · max registration uplift ≤ the line's uplift_limit
+  /// factor · max registration uplift ≤ the line's uplift_limit; the factor is limited_clearance_factor
+  /// on a line whose registrations' uplift is physically limited (a stop: `registration.uplift_limited`),
+  /// else clearance_factor (EN 50119 practice: 2 S₀ for a simulated uplift, 1.5 S₀ where it is limited).
+  struct SupportUplift {
     double clearance_factor = 1;
     SpeedRange speeds;
+    std::string source;
+    bool assumed = true;
+    double limited_clearance_factor = NAN;  ///< NaN: clearance_factor also where the uplift is limited
+    /// The factor on a line whose uplift is (or is not) physically limited.
+    double factor(bool uplift_limited) const {
+      return uplift_limited && !std::isnan(limited_clearance_factor) ? limited_clearance_factor : clearance_factor;
+    }
   };
   std::vector<SupportUplift> support_uplift;
 
   bool has_target = false;  ///< the mean-force target curve (aero-fit), F(v) with v in km/h
-  SpeedCurve target;
+  TargetCurve target;       ///< at() refuses a speed outside target.speeds
 
   /// The static contact force at standstill over the working range (issue 49; EN 50206-1, TSI
   /// LOC&PAS): every height's force F(h) within [lower, upper] and within ± tolerance_pct % of the force
@@ -96,6 +141,8 @@ struct AcceptanceCriteria {
   struct StaticForce {
     double lower = NAN, upper = NAN;  ///< N
     double tolerance_pct = NAN;       ///< %
+    std::string source;
+    bool assumed = true;
   };
   bool has_static_force = false;
   StaticForce static_force;
@@ -114,6 +161,7 @@ struct VerdictInput {
   double sample_dt = 0;  ///< s, the sampling step (loss-event durations)
   double uplift_max = NAN;    ///< m: the largest registration uplift in the section (NaN: no finite line)
   double uplift_limit = NAN;  ///< m: the line's registration.uplift_limit (NaN: not given)
+  bool uplift_limited = false;  ///< the line's registration.uplift_limited: a stop limits the uplift physically
 };
 
 /// One row of the verdict.
@@ -124,7 +172,16 @@ struct CriterionResult {
   bool upper = true;  ///< the limit is an upper one
   bool assessed = false, passed = false;
   std::string note;  ///< why a row is not assessed
+  /// What the value is: "filtered, F_m", "filtered, largest sample", "filtered, F_m + 3σ", "raw, F ≤ 0 for
+  /// ≥ 5 ms", "largest registration uplift × 2", …
+  std::string statistic;
+  std::string source;   ///< of the entry that judged the row (empty: no entry covers its speed)
+  bool assumed = true;  ///< the entry's number is not verified against a public source
 };
+
+/// The line a verdict's output gives about contact loss: that it stands in for the measured percentage of
+/// arcing (force ≤ 0 for at least the set's min_duration). Empty for a set without contact_loss.
+std::string arcing_text(const AcceptanceCriteria& criteria);
 
 /// The criteria in their fixed order, each one row (the mean band gives two: mean_lower, mean_upper).
 /// InvalidArgument for a negative or non-finite speed or a sample step that is not > 0 with loss runs.

@@ -86,6 +86,7 @@ struct SpeedResult {
   std::vector<std::vector<long>> loss_runs;
   double sample_dt = 0;
   double uplift_limit = NAN;  ///< m: the line's registration uplift limit (Catenary::uplift_limit), set by sweep
+  bool uplift_limited = false;  ///< a stop limits that uplift (Catenary::uplift_limited), set by sweep
   /// A line with overlaps (Coupled::overlaps): each contact's statistics over the overlap spans in
   /// the section alone, raw and after the low-pass; empty otherwise.
   std::vector<ContactStatistics> overlap, overlap_filtered;

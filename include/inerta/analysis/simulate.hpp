@@ -109,6 +109,7 @@ struct CoupledSimulation {
   std::vector<PartStatistics> overlap_quality;
   std::vector<SupportUplift> uplift;    ///< the supports in the section: max uplift and when
   double uplift_limit = NAN;            ///< m: the line's registration uplift limit (Catenary::uplift_limit)
+  bool uplift_limited = false;          ///< a stop limits that uplift (Catenary::uplift_limited)
 };
 
 /// Couples the pantographs to the catenary at `speed` (m/s), starts from the static equilibrium

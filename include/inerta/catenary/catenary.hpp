@@ -124,6 +124,9 @@ class Catenary {
   /// m: the line's design limit of the contact wire's uplift at its registrations (acceptance
   /// criterion support_uplift, analysis/acceptance.hpp); NaN: none given.
   virtual double uplift_limit() const { return std::numeric_limits<double>::quiet_NaN(); }
+  /// Whether a stop limits the registrations' uplift physically (registration.uplift_limited): the
+  /// criterion support_uplift then takes its limited clearance factor (EN 50119 practice: 1.5 S₀).
+  virtual bool uplift_limited() const { return false; }
   /// The catenary without its variation along the line (for modes about a static equilibrium).
   virtual std::shared_ptr<const Catenary> mean() const = 0;
   /// The point model with time-periodic coefficients (eq. 7.1), if the catenary is one: the

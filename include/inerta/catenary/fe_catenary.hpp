@@ -123,6 +123,9 @@ struct FeCatenaryData {
   /// m, the design limit of the contact wire's uplift at a registration (steady arm); NaN: not given
   /// (the acceptance criterion support_uplift is then not assessed). Not part of the dynamics.
   double registration_uplift_limit = NAN;
+  /// A stop limits the registration's uplift physically (registration.uplift_limited: true): the acceptance
+  /// criterion support_uplift takes its limited_clearance_factor (1.5 S₀) in place of 2 S₀. Not part of the dynamics.
+  bool registration_uplift_limited = false;
   double element_length = 0.25;              ///< m, largest element; nodes at every dropper and mast
   double rayleigh_mass = 0.0125;             ///< a, 1/s
   double rayleigh_stiffness = 1e-4;          ///< b, s
@@ -450,6 +453,7 @@ class FeCatenary final : public Catenary {
   double wave_speed() const override { return data_.contact_wire.wave_speed(); }
   Section section() const override;
   double uplift_limit() const override { return line_->data().registration_uplift_limit; }
+  bool uplift_limited() const override { return line_->data().registration_uplift_limited; }
   std::shared_ptr<const Catenary> mean() const override;
   /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep
   /// or a study decomposes a window once); nullptr with solver: direct.
