@@ -10,14 +10,18 @@
 #include "identify.hpp"
 #include "linear.hpp"
 #include "networks.hpp"
+#include "report.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/files.hpp"
+#include "inerta/report/provenance.hpp"
 
 using namespace inerta;
 
 int main(int argc, char** argv) {
   io::remove_partial_outputs_on_signal();  // Ctrl-C leaves no half-written file (io/files.hpp)
   io::protect_inputs();                     // no output replaces a file the command read
+  report::record_inputs();                  // each input's SHA-256 for a report's provenance
+  cli::set_command_line(argc, argv);
   CLI::App app{"Inerta — inerter-based vibration suppression for multibody systems (docs/cli.md)"};
   app.require_subcommand(1);
   const std::vector<cli::Command> commands{
@@ -34,6 +38,7 @@ int main(int argc, char** argv) {
       {cli::add_networks_command(app), cli::run_networks},   // networks.cpp
       {cli::add_pantograph_command(app), cli::run_pantograph},  // acceptance.cpp
       cli::add_optimise_command(app),
+      {cli::add_verify_report_command(app), cli::run_verify_report},  // report.cpp
   };
   try {
     app.parse(argc, argv);

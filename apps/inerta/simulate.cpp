@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "acceptance.hpp"
+#include "report.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -36,6 +37,7 @@
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
+#include "inerta/report/run_reports.hpp"
 #include "inerta/io/acceptance_file.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/lumped_fit_file.hpp"
@@ -72,6 +74,7 @@ struct SimulateArgs {
   int spans = 12;
   cli::AcceptanceArgs acceptance;
   double max_seconds = analysis::default_max_seconds;
+  std::string report;  ///< --report FILE.html (a run under a catenary)
 };
 
 // "0,200.5" → {0, 200.5}: positions along the line, m.
@@ -234,6 +237,7 @@ int cmd_simulate(const SimulateArgs& a) {
     std::optional<analysis::AcceptanceCriteria> criteria;
     if (!a.acceptance.criteria.empty()) criteria = io::load_acceptance(a.acceptance.criteria);
     io::check_output_path(cli::acceptance_path(a.out), {a.model, a.cat.catenary, a.out});
+    io::check_output_path(a.report, {a.model, a.cat.catenary, a.out});
     const double v = to_ms(a.speed, a.cat.unit);
     const std::vector<double> x0s = a.positions.empty() ? std::vector<double>{0.0} : parse_positions(a.positions);
     auto [panto, cat] = pantograph_setup(a.model, a.cat, a.no_centripetal,
@@ -260,6 +264,7 @@ int cmd_simulate(const SimulateArgs& a) {
       for (const std::string& o : {a.out, cli::acceptance_path(a.out), line_file_stem(a.out) + ".supports.csv",
                                    line_file_stem(a.out) + ".psd.csv"})
         io::check_output_path(o);
+    io::check_output_path(a.report);
     std::vector<catenary::PantographOnLine> train;
     for (double x0 : x0s) train.push_back({panto, x0, cat.contact});
     analysis::CoupledOptions co;
@@ -301,12 +306,28 @@ int cmd_simulate(const SimulateArgs& a) {
                    c.lost_samples, r.histories[k].t.size(), c.first_loss_t, c.first_loss_x);
     }
     if (!a.out.empty()) fmt::print(info, "wrote {}\n", a.out);
-    if (criteria)
-      return cli::report_acceptance(info, *criteria, analysis::verdict(*criteria, r), a.out, a.acceptance.strict,
-                                    a.cat.unit == "kmh");
-    return 0;
+    std::vector<analysis::VerdictRow> verdict;
+    if (criteria) verdict = analysis::verdict(*criteria, r);
+    const int code = criteria ? cli::report_acceptance(info, *criteria, verdict, a.out, a.acceptance.strict, a.cat.unit == "kmh") : 0;
+    if (!a.report.empty()) {
+      report::RunContext ctx;
+      ctx.provenance = run_provenance(
+          {{"integrator", fmt::format("{} (rtol {:g}, atol {:g}, max step {:g} s)", solve::method_name(opt.method), opt.rtol, opt.atol, opt.max_step)},
+           {"overrides", a.cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(a.cat.sets, "; "))},
+           {"suspension", a.cat.suspension.empty() ? "from the model" : a.cat.suspension},
+           {"pantographs at x0, m", fmt::format("{}", fmt::join(x0s, ", "))},
+           {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
+      ctx.model = a.model + (a.cat.suspension.empty() ? "" : ", suspension " + a.cat.suspension);
+      ctx.line = cat.catenary->describe();
+      ctx.kmh = a.cat.unit == "kmh";
+      if (criteria) ctx.criteria = &*criteria, ctx.verdict = verdict;
+      report::Record record;
+      write_report(a.report, report::simulate_report(ctx, r, cat.catenary->features(), record));
+    }
+    return code;
   }
   if (!a.acceptance.criteria.empty()) throw CLI::ValidationError("--acceptance", "needs --catenary FILE");
+  if (!a.report.empty()) throw CLI::ValidationError("--report", "needs --catenary FILE (a report of a run under a line)");
   if (a.speed > 0) throw CLI::ValidationError("--speed", "needs --catenary FILE");
   if (!a.positions.empty()) throw CLI::ValidationError("--positions", "needs --catenary FILE");
   mbs::Model model = io::load_model(a.model, a.cat.sets);
@@ -370,6 +391,7 @@ Command add_simulate_command(CLI::App& app) {
           },
           "X,..."));
   cli::add_acceptance_options(sim, sa.acceptance);
+  add_report_option(sim, sa.report);
   sim->add_option("--max-seconds", sa.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
       ->check(number_rule(analysis::max_seconds_rule));
   return {sim, [] { return cmd_simulate(sa); }};

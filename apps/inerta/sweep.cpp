@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "acceptance.hpp"
+#include "report.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -55,6 +56,7 @@
 #include "inerta/optim/report.hpp"
 #include "inerta/optim/study.hpp"
 #include "inerta/pantograph/suspension.hpp"
+#include "inerta/report/run_reports.hpp"
 #include "inerta/solve/integrator.hpp"
 
 namespace inerta::cli {
@@ -73,6 +75,7 @@ struct SweepArgs {
   bool no_centripetal = false;
   cli::AcceptanceArgs acceptance;
   double max_seconds = analysis::default_max_seconds;
+  std::string report;  ///< --report FILE.html
 };
 
 int cmd_sweep(const SweepArgs& a) {
@@ -82,6 +85,7 @@ int cmd_sweep(const SweepArgs& a) {
     criteria = io::load_acceptance(a.acceptance.criteria);
     io::check_output_path(cli::acceptance_path(a.out), {a.model, a.cat.catenary, a.out});
   }
+  io::check_output_path(a.report, {a.model, a.cat.catenary, a.out});
   std::vector<double> v_user = frequency_range(a.speeds, "--speeds"), v;
   for (double s : v_user) {
     if (const std::string e = analysis::speed_rule.check(s, fmt::format("{:g}", s)); !e.empty())
@@ -107,6 +111,7 @@ int cmd_sweep(const SweepArgs& a) {
   for (const auto& note : panto.model.notes) fmt::print("note: {}\n", note);
   if (!a.out.empty())  // every input is read now (the line's CSV files too): no output may replace one
     for (const std::string& out : {a.out, cli::acceptance_path(a.out)}) io::check_output_path(out);
+  io::check_output_path(a.report);
   analysis::RunOptions o;
   o.integrator.method = solve::parse_method(a.integrator);
   o.integrator.rtol = a.rtol;
@@ -204,6 +209,20 @@ int cmd_sweep(const SweepArgs& a) {
                unstable.empty() ? "" : " (over the stable speeds)");
   const int verdict_code =
       criteria ? cli::report_acceptance(a.out.empty() ? stderr : stdout, *criteria, verdict, a.out, a.acceptance.strict, a.cat.unit == "kmh") : 0;
+  if (!a.report.empty()) {
+    report::RunContext ctx;
+    ctx.provenance = run_provenance({{"method", periodic ? fmt::format("periodic, {} harmonics", a.harmonics)
+                                                         : fmt::format("time ({} integrator, rtol {:g}, atol {:g})", a.integrator, a.rtol, a.atol)},
+                                     {"overrides", a.cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(a.cat.sets, "; "))},
+                                     {"suspension", a.cat.suspension.empty() ? "from the model" : a.cat.suspension},
+                                     {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
+    ctx.model = a.model + (a.cat.suspension.empty() ? "" : ", suspension " + a.cat.suspension);
+    ctx.line = cat.catenary->describe();
+    ctx.kmh = a.cat.unit == "kmh";
+    if (criteria) ctx.criteria = &*criteria, ctx.verdict = verdict;
+    report::Record record;
+    write_report(a.report, report::sweep_report(ctx, results, record));
+  }
   if (!unstable.empty()) {
     fmt::print(stderr,
                "unstable: the periodic solution is unstable at {} {} (largest Floquet multiplier ≥ 1: parametric "
@@ -239,6 +258,7 @@ Command add_sweep_command(CLI::App& app) {
       ->capture_default_str()
       ->check(count_rule(analysis::harmonics_rule));
   cli::add_acceptance_options(swp, wa.acceptance);
+  add_report_option(swp, wa.report);
   swp->add_option("--max-seconds", wa.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
       ->check(number_rule(analysis::max_seconds_rule));
   return {swp, [] { return cmd_sweep(wa); }};

@@ -267,5 +267,6 @@ void bind_fe(py::module_& m);
 void bind_linear(py::module_& m);
 void bind_structure(py::module_& m);
 void bind_study_run(py::module_& m);
+void bind_report(py::module_& m);
 
 }  // namespace inerta::python

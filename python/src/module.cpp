@@ -88,4 +88,5 @@ PYBIND11_MODULE(_inerta, m) {
   bind_structure(m);
   bind_study_run(m);
   bind_identification(m);
+  bind_report(m);
 }

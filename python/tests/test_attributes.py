@@ -163,6 +163,14 @@ search: {{starts: 1, seed: 1, min_step: 0.05}}
     m3 = inerta.load_model(model("pantograph-3mass.yaml"))
     out += [inerta.verdict(inerta.sweep(m3, inerta.load_catenary(model("wire-profile.yaml")), [80.0]), "en50367-ac"),
             inerta.estimated_study_seconds(inerta.load_study(fe_all))]
+    # Reports (issue 53): a report's record, its inputs, the differences between two, the build.
+    from conftest import run_cli
+    rp = tmp_path_factory.mktemp("reports")
+    for v in ("200", "250"):
+        run_cli("sweep", model("pantograph-3mass.yaml"), "--catenary", model("catenary-fe.yaml"), "--set", "line.spans=3",
+                "--speeds", f"{v}:1:{v}", "--unit", "kmh", "--out", rp / f"{v}.csv", "--report", rp / f"{v}.html")
+    r200, r250 = inerta.read_report(str(rp / "200.html")), inerta.read_report(str(rp / "250.html"))
+    out += [r200, inerta.compare_reports(r200, r250)[0], inerta.build_info()]
     return out
 
 

@@ -655,3 +655,24 @@ std::unique_ptr<Coupled> FeCatenary::make_coupled(const std::vector<PantographOn
 }
 
 }  // namespace inerta::catenary
+
+namespace inerta::catenary {
+
+std::vector<LineFeature> FeCatenary::features() const {
+  using K = LineFeature::Kind;
+  std::vector<LineFeature> f;
+  for (const FeSectionLine& s : sections()) {
+    const FeLine& line = *s.line;
+    const FeCatenaryData& d = line.data();
+    for (int m = 0; m <= d.spans; ++m) f.push_back({K::Mast, s.start + m * d.span, s.start + m * d.span});
+    for (const FeLine::Dropper& dr : line.droppers())
+      f.push_back({dr.kind == FeLine::Dropper::Kind::Stitch ? K::StitchDropper : K::Dropper, s.start + dr.x, s.start + dr.x});
+    if (d.stitch.present && d.stitch.enabled)
+      for (double x : line.support_x()) f.push_back({K::StitchWire, s.start + x - d.stitch.length / 2, s.start + x + d.stitch.length / 2});
+  }
+  for (const Section& o : overlaps()) f.push_back({K::Overlap, o.from, o.to});
+  std::sort(f.begin(), f.end(), [](const LineFeature& a, const LineFeature& b) { return a.from < b.from; });
+  return f;
+}
+
+}  // namespace inerta::catenary

@@ -82,6 +82,16 @@ void refuse_input(const std::string& out) {
 
 }  // namespace
 
+InputObserver& input_observer() {
+  static InputObserver observer;
+  return observer;
+}
+
+void observe_inputs(InputObserver observer) {
+  std::lock_guard lock(inputs_mutex);
+  input_observer() = std::move(observer);
+}
+
 void protect_inputs() {
   std::lock_guard lock(inputs_mutex);
   protecting = true;
@@ -119,6 +129,12 @@ std::string read_input_text(const std::string& path, const std::string& what) {
   // parsed into a YAML error quoting its bytes.
   if (const auto nul = text.find('\0'); nul != std::string::npos)
     throw ModelError(fmt::format("{}: a binary file (a NUL byte at offset {}), not the {} (YAML text)", path, nul, what));
+  InputObserver observer;
+  {
+    std::lock_guard lock(inputs_mutex);
+    observer = input_observer();
+  }
+  if (observer) observer(path, what, text);
   return text;
 }
 

@@ -37,6 +37,13 @@ struct Section {
   double from = 0, to = 0;
 };
 
+/// Something along a finite line, for drawings (reports): a mast, a dropper, a stitch dropper (a
+/// point: from = to), a stitch wire or an overlap (a stretch). m along the line.
+struct LineFeature {
+  enum class Kind { Mast, Dropper, StitchDropper, StitchWire, Overlap } kind = Kind::Mast;
+  double from = 0, to = 0;
+};
+
 /// Typed handle of one contact of a coupled system (pantograph k of the list given to couple).
 struct ContactId {
   int index = -1;
@@ -127,6 +134,8 @@ class Catenary {
   /// Whether a stop limits the registrations' uplift physically (registration.uplift_limited): the
   /// criterion support_uplift then takes its limited clearance factor (EN 50119 practice: 1.5 S₀).
   virtual bool uplift_limited() const { return false; }
+  /// The line's masts, droppers, stitch wires and overlaps in order along it (empty: a point model).
+  virtual std::vector<LineFeature> features() const { return {}; }
   /// The catenary without its variation along the line (for modes about a static equilibrium).
   virtual std::shared_ptr<const Catenary> mean() const = 0;
   /// The point model with time-periodic coefficients (eq. 7.1), if the catenary is one: the

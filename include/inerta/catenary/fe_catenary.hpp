@@ -451,9 +451,10 @@ class FeCatenary final : public Catenary {
   /// The overlaps of a line of tension sections: from the incoming section's anchor to the outgoing one's.
   std::vector<Section> overlaps() const;
   double wave_speed() const override { return data_.contact_wire.wave_speed(); }
+  std::vector<LineFeature> features() const override;
   Section section() const override;
   double uplift_limit() const override { return line_->data().registration_uplift_limit; }
-  bool uplift_limited() const override { return line_->data().registration_uplift_limited; }
+  bool uplift_limited() const override { return data_.registration_uplift_limited; }
   std::shared_ptr<const Catenary> mean() const override;
   /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep
   /// or a study decomposes a window once); nullptr with solver: direct.

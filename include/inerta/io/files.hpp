@@ -7,6 +7,7 @@
 // write errors are reported the same way.
 #include <cstddef>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -25,6 +26,11 @@ void check_output_path(const std::string& out, const std::vector<std::string>& i
 
 /// Largest input file read, bytes (models, catenaries, studies, CSV tables).
 inline constexpr std::size_t max_input_bytes = 256u << 20;
+
+/// Called with each input's path, its `what` and its whole text once read_input_text has read it (the
+/// report layer hashes it: report/provenance.hpp). One observer; a new one replaces the last.
+using InputObserver = std::function<void(const std::string& path, const std::string& what, const std::string& text)>;
+void observe_inputs(InputObserver observer);
 
 /// The whole text of the input file `path`: ModelError "path: cannot open the <what>" if it cannot be
 /// opened, "path: not a regular file (...)" for a folder, a device such as /dev/zero or a FIFO, and
