@@ -8,6 +8,7 @@
 #include <string>
 
 #include "inerta/error.hpp"
+#include "inerta/io/catenary_file.hpp"
 #include "support/temp.hpp"
 
 // One namespace a file: a unity build compiles several test files as one unit.
@@ -156,6 +157,39 @@ TEST(AcceptanceFile, AFileWithSpeedBandsIsRead) {
   ASSERT_EQ(c.contact_loss.size(), 2u);
   EXPECT_TRUE(std::isinf(c.contact_loss[1].speeds.to));
   EXPECT_FALSE(c.has_target);
+}
+
+// Issue 53: the line says whether a stop limits its registrations' uplift (registration.uplift_limited).
+TEST(AcceptanceFile, TheLineSaysWhetherAStopLimitsItsUplift) {
+  const std::string line = std::string(INERTA_SOURCE_DIR) + "/models/catenary-fe.yaml";
+  EXPECT_FALSE(io::load_catenary(line).catenary->uplift_limited());
+  EXPECT_TRUE(io::load_catenary(line, {"registration.uplift_limited=true"}).catenary->uplift_limited());
+  std::string text;
+  {
+    std::ifstream in(line);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::string at = "  mass: 0                 # kg\nmesh:";
+  ASSERT_NE(text.find(at), std::string::npos);
+  const auto write_line = [&](const std::string& name, const std::string& value) {
+    std::string t = text;
+    t.replace(t.find(at), at.size(), "  mass: 0\n  uplift_limited: " + value + "\nmesh:");
+    return write(name, t);
+  };
+  EXPECT_TRUE(io::load_catenary(write_line("limited.yaml", "true")).catenary->uplift_limited());
+  const std::string bad = write_line("limited_bad.yaml", "2");
+  try {
+    io::load_catenary(bad);
+    ADD_FAILURE() << "no error";
+  } catch (const ModelError& e) {
+    EXPECT_TRUE(contains(e.what(), bad + ":37: 'uplift_limited'")) << e.what();
+  }
+  try {
+    io::load_catenary(line, {"registration.uplift_limited=1"});
+    ADD_FAILURE() << "no error";
+  } catch (const ModelError& e) {
+    EXPECT_TRUE(contains(e.what(), "expected registration.uplift_limited=true or false")) << e.what();
+  }
 }
 
 TEST(AcceptanceFile, BadFilesAreRefusedNamingFileLineAndKey) {
