@@ -2,6 +2,8 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "report.hpp"
+#include "inerta/report/run_reports.hpp"
 #include "acceptance.hpp"
 
 #include <fmt/format.h>
@@ -122,6 +124,7 @@ struct CheckReductionArgs {
   double tolerance = 1.0;
   std::string acceptance;
   double max_seconds = analysis::default_max_seconds;
+  std::string report;  ///< --report FILE.html
 };
 
 // The finite-element line's modal solve against its direct solve (docs/catenary-fe.md "Modal solver"):
@@ -139,6 +142,7 @@ int cmd_check_reduction(CheckReductionArgs a) {
   if (!probe.fe) throw ModelError(fmt::format("{}: check-reduction needs a finite-element catenary (type: finite_element)", a.cat.catenary));
   std::optional<analysis::AcceptanceCriteria> criteria;
   if (!a.acceptance.empty()) criteria = io::load_acceptance(a.acceptance);
+  io::check_output_path(a.report, {a.model, a.cat.catenary});
   {  // both solves at every speed, each line built and (modal) decomposed once
     double total = 0, bytes = 0;
     for (const auto solver : {catenary::FeCatenaryData::Solver::Direct, catenary::FeCatenaryData::Solver::Modal}) {
@@ -216,6 +220,28 @@ int cmd_check_reduction(CheckReductionArgs a) {
     }
   }
   fmt::print("\nlargest difference of sigma (raw or 20 Hz): {:.3f} % (tolerance {:g} %)\n", worst, a.tolerance);
+  if (!a.report.empty()) {
+    report::RunContext ctx;
+    ctx.provenance = run_provenance({{"overrides", a.cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(a.cat.sets, "; "))},
+                                     {"reference", "direct solve (solver.type=direct)"},
+                                     {"candidate", "modal solve (solver.type=modal)"},
+                                     {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
+    ctx.model = a.model;
+    ctx.line = cand.catenary->describe();
+    ctx.kmh = a.cat.unit == "kmh";
+    std::vector<analysis::VerdictRow> vm;
+    if (criteria) {
+      ctx.criteria = &*criteria;
+      for (const auto& r : rows) {
+        auto d = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{r.reference});
+        auto m = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{r.candidate});
+        ctx.verdict.insert(ctx.verdict.end(), d.begin(), d.end());
+        vm.insert(vm.end(), m.begin(), m.end());
+      }
+    }
+    report::Record record;
+    write_report(a.report, report::reduction_report(ctx, rows, vm, a.tolerance, record));
+  }
   if (worst > a.tolerance) {
     fmt::print(stderr, "check-reduction: the modal solve differs from the direct one by {:.3f} % in sigma, more than "
                        "--tolerance {:g} %: raise solver.cutoff or the window (solver.window_behind / window_ahead)\n",
@@ -312,6 +338,7 @@ Command add_catenary_commands(CLI::App& app) {
       ->check(number_in(0, 1e6, "a percentage"));
   crd->add_option("--acceptance", cra.acceptance,
                   "Also say whether both solves reach the same acceptance verdict (a preset or a criteria file)");
+  add_report_option(crd, cra.report);
   crd->add_option("--max-seconds", cra.max_seconds, "Refuse (exit 2) a run whose estimated wall time on a 2-core machine is above S seconds (default 600; docs/cli.md \"Long runs\")")
       ->check(number_rule(analysis::max_seconds_rule));
   cat_cmd->require_subcommand(1);

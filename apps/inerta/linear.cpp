@@ -27,6 +27,8 @@
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
+#include "inerta/report/study_report.hpp"
+#include "report.hpp"
 
 namespace inerta::cli {
 
@@ -314,7 +316,8 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
   options.report = !out.empty();  // the figures: what --out writes
   const optim::StudyOutcome run = optim::run_study(study, options, &printer);
   if (out.empty()) return 0;
-  const auto written = io::write_study_outcome(out, run);
+  auto written = io::write_study_outcome(out, run);
+  written.push_back(report::write_study_report(out, run_provenance({{"study", path}}), run));
   fmt::print("wrote");
   for (const auto& w : written) fmt::print(" {}", std::filesystem::path(w).filename().string());
   fmt::print(" in {}\n", out);

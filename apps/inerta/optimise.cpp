@@ -47,6 +47,8 @@
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/study_file.hpp"
 #include "inerta/io/structure_results.hpp"
+#include "inerta/report/study_report.hpp"
+#include "report.hpp"
 #include "inerta/io/study_report.hpp"
 #include "inerta/io/study_results.hpp"
 #include "inerta/io/files.hpp"
@@ -346,7 +348,8 @@ int cmd_optimise(const OptimiseArgs& a) {
   Printer printer(study, tty);
   const optim::StudyOutcome o = optim::run_study(study, options, &printer);
   if (!a.out.empty()) {
-    const auto files = io::write_study_outcome(a.out, o);
+    auto files = io::write_study_outcome(a.out, o);
+    files.push_back(report::write_study_report(a.out, run_provenance({{"study", a.study}}), o));
     fmt::print("wrote");
     for (const auto& f : files) fmt::print(" {}", std::filesystem::path(f).filename().string());
     fmt::print(" in {}\n", a.out);

@@ -128,11 +128,15 @@ int run_verify_report() {
     if (output_option(x) && i + 1 < args.size()) {
       const std::string opt = x.substr(2);
       std::string& v = args[i + 1];
-      const std::string name = (dir / (opt + fs::path(v).extension().string())).string();
+      const std::string name = (dir / (opt + (reported.command == "optimise" ? std::string() : fs::path(v).extension().string()))).string();
       if (opt == "report") new_report = name;
       v = name;
       ++i;
     }
+  }
+  if (reported.command == "optimise") {  // a study's report is DIR/report.html of its --out DIR
+    for (std::size_t i = 1; i + 1 < args.size(); ++i)
+      if (args[i] == "--out") new_report = (fs::path(args[i + 1]) / "report.html").string();
   }
   if (new_report.empty()) throw ModelError(fmt::format("{}: its command line has no --report: cannot re-run it", a.file));
   args[0] = "/proc/self/exe";

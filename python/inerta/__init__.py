@@ -97,6 +97,7 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
                                 executor=executor)
     if out is not None:
         _inerta.write_study_outcome(outcome, out)
+        _inerta.write_study_report(outcome, out)
     return outcome
 
 

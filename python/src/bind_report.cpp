@@ -5,6 +5,7 @@
 #include "inerta/io/files.hpp"
 #include "inerta/report/provenance.hpp"
 #include "inerta/report/record.hpp"
+#include "inerta/report/study_report.hpp"
 
 namespace inerta::python {
 
@@ -45,6 +46,15 @@ void bind_report(py::module_& m) {
       .def_readonly("missing", &Difference::missing);
   m.def("compare_reports", &compare, py::arg("a"), py::arg("b"), py::arg("rtol") = 0.0,
         "The numbers of b that differ from a's (or are only in one), key by key; equal within rtol relative.");
+  record_inputs();  // the module's inputs (models, lines, studies) with their SHA-256, for a study's report.html
+  m.def("write_study_report", [](const optim::StudyOutcome& o, const std::string& dir) {
+    const py::list argv = py::module_::import("sys").attr("argv");
+    std::vector<std::string> args{"python3"};
+    for (const auto& a : argv) args.push_back(py::str(a));
+    return write_study_report(dir, current_provenance(args), o);
+  }, py::arg("outcome"), py::arg("dir"),
+        "Writes DIR/report.html of a study's outcome (as `inerta optimise --out` does): the recommendation, the ranking with "
+        "margins, the networks drawn, σ(v), the provenance (this Python's command line and every input read); returns its path.");
   m.def("sha256", &sha256_hex, py::arg("data"), "SHA-256 of a str (UTF-8 bytes) as lowercase hex, as reports give their inputs'.");
 }
 

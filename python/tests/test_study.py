@@ -100,8 +100,16 @@ def test_one_call_runs_the_whole_study_as_the_cli(study_file, study, cli_out, tm
     # the files are the outcome's, written again the same
     files = {f.name: f.read_bytes() for f in (tmp_path / "o").iterdir()}
     written = inerta.write_study_outcome(o, str(tmp_path / "again"))
+    written.append(inerta.write_study_report(o, str(tmp_path / "again")))
     assert sorted(p.split("/")[-1] for p in written) == sorted(files)
-    assert all((tmp_path / "again" / n).read_bytes() == b for n, b in files.items())
+    assert all((tmp_path / "again" / n).read_bytes() == b for n, b in files.items() if n != "report.html")
+    # report.html: its date differs, its numbers do not; the ranking's networks are drawn
+    first, again = inerta.read_report(str(tmp_path / "o" / "report.html")), inerta.read_report(str(tmp_path / "again" / "report.html"))
+    assert first.command == "optimise" and inerta.compare_reports(first, again) == []
+    assert first.numbers["best/J"] == o.best.J2
+    page = (tmp_path / "o" / "report.html").read_text(encoding="utf-8")
+    assert page.count('class="schematic"') >= 1 + len(o.results) or page.count("<svg") >= 1 + len(o.results)
+    assert any(f.path.endswith(".yaml") for f in first.inputs)
     # a model study through the same call
     mo = inerta.optimise(inerta.load_model_study(f"{SRC}/studies/tmd.yaml"))
     assert mo.model is not None and mo.study is None

@@ -232,7 +232,7 @@ const std::vector<std::string>& study_output_names() {
       "contact.csv",   "contact.png",    "map.csv",    "map.png",    "j2_map.csv",     "j2_map.png",
       "centripetal.csv", "centripetal.png", "report.json", "structure.csv", "structure.json", "pareto.csv",
       "pareto.png",    "admittance.csv", "admittance.json", "recheck.csv", "refined.csv", "acceptance_margins.csv", "acceptance.png",
-      "checkpoint.pkl"};
+      "checkpoint.pkl", "report.html"};
   return names;
 }
 

@@ -38,7 +38,7 @@ optim::ContactLimits read_limits(const std::string& path, const YAML::Node& n) {
     } else if (k == "support_uplift") {
       l.uplift_max = yaml_number_in(path, v, k, 1e-6, 10, "> 0 (m)");
     } else if (k == "acceptance") {  // a preset, or a criteria file relative to the study file
-      if (!v.IsScalar()) yaml_fail(path, v, k, "expected a preset (en50367-ac, en50367-dc3) or a criteria file");
+      if (!v.IsScalar()) yaml_fail(path, v, k, "expected a preset (en50367-ac, en50367-ac15, en50367-dc3, en50367-dc1.5) or a criteria file");
       std::string what = v.Scalar();
       const bool file = what.find('/') != std::string::npos || what.ends_with(".yaml") || what.ends_with(".yml");
       if (file && std::filesystem::path(what).is_relative())

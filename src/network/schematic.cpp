@@ -191,11 +191,13 @@ std::string schematic_svg(const Network& net, const SchematicOptions& options) {
   const double x0 = 0.5 * (w - b.w), y0 = kMargin + kTitle;
   Painter p(options);
   p.svg = fmt::format(
-      R"(<svg xmlns="http://www.w3.org/2000/svg" width="{0:.0f}" height="{1:.0f}" viewBox="0 0 {0:.0f} {1:.0f}" role="img">)"
+      R"(<svg xmlns="http://www.w3.org/2000/svg" width="{0:.0f}" height="{1:.0f}" viewBox="0 0 {0:.0f} {1:.0f}" role="img" class="schematic">)"
       "\n<title>{2}</title>\n"
-      "<style>line,polyline,rect,circle{{stroke:#222;stroke-width:1.6;fill:none}} circle.flywheel{{fill:#222}} "
-      "circle.terminal{{fill:#fff}} text{{font-family:sans-serif;font-size:11px;text-anchor:middle;fill:#222}} "
-      "text.title{{font-size:13px;font-weight:bold}} text.note{{fill:#777}}</style>\n",
+      // scoped to the schematic: inlined in a report, the page's other drawings keep their own style
+      "<style>svg.schematic line,svg.schematic polyline,svg.schematic rect,svg.schematic circle{{stroke:#222;"
+      "stroke-width:1.6;fill:none}} svg.schematic circle.flywheel{{fill:#222}} svg.schematic circle.terminal{{fill:#fff}} "
+      "svg.schematic text{{font-family:sans-serif;font-size:11px;text-anchor:middle;fill:#222}} "
+      "svg.schematic text.title{{font-size:13px;font-weight:bold}} svg.schematic text.note{{fill:#777}}</style>\n",
       w, h, escape(title));
   p.text(0.5 * w, kMargin, title, "title");
   const double a = y0 + b.axis;

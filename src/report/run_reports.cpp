@@ -276,4 +276,83 @@ std::string simulate_report(const RunContext& c, const analysis::CoupledSimulati
   return doc.html(record);
 }
 
+std::string reduction_report(const RunContext& c, const std::vector<analysis::RunComparison>& rows,
+                             const std::vector<analysis::VerdictRow>& modal_verdict, double tolerance_pct, Record& record) {
+  record.command = "check-reduction";
+  record.provenance = c.provenance;
+  Document doc("Inerta check-reduction: the modal solve against the direct one");
+  auto pct = [](double a, double b) { return a != 0 ? 100 * (b - a) / std::abs(a) : 0.0; };
+  double worst = 0;
+  for (const auto& r : rows)
+    worst = std::max({worst, std::abs(pct(r.reference.stats.std, r.candidate.stats.std)),
+                      std::abs(pct(r.reference.filtered[0].std, r.candidate.filtered[0].std))});
+  std::vector<std::string> lines{fmt::format("Largest difference of σ (raw or 20 Hz): {:.3f} % (tolerance {:g} %).", worst, tolerance_pct)};
+  if (c.criteria) {
+    const auto vd = analysis::judge(c.verdict), vm = analysis::judge(modal_verdict);
+    lines.push_back(fmt::format("Acceptance {}: direct {}, modal {}.", c.criteria->name, vd.text(), vm.text()));
+    record.verdict = fmt::format("direct {}, modal {}", vd.text(), vm.text());
+  }
+  doc.verdict(worst <= tolerance_pct ? "AGREE" : "DIFFER", lines);
+  doc.heading("Run");
+  doc.paragraph("Pantograph: " + c.model);
+  doc.paragraph("Line: " + c.line);
+  doc.heading("Both solves side by side (analysis section, EN 50317)");
+  Table t;
+  t.id = "comparison";
+  t.header = {c.kmh ? "v km/h" : "v m/s", "quantity", "direct", "modal", "difference"};
+  for (const auto& r : rows) {
+    const auto &d = r.reference, &m = r.candidate;
+    const std::string v = fmt::format("{:.6g}", c.kmh ? 3.6 * r.speed : r.speed), key = speed_key(r.speed, c.kmh);
+    const double up_d = d.support_uplift.empty() ? 0 : *std::max_element(d.support_uplift.begin(), d.support_uplift.end());
+    const double up_m = m.support_uplift.empty() ? 0 : *std::max_element(m.support_uplift.begin(), m.support_uplift.end());
+    auto row = [&](const std::string& q, double x, double y, bool relative) {
+      t.rows.push_back({v, q, fmt::format("{:.4f}", x), fmt::format("{:.4f}", y),
+                        relative ? fmt::format("{:+.3f} %", pct(x, y)) : fmt::format("{:+.4f}", y - x)});
+      t.row_class.push_back("");
+      record.add(key + "/direct/" + q, x);
+      record.add(key + "/modal/" + q, y);
+    };
+    row("mean, N", d.stats.mean, m.stats.mean, true);
+    row("σ, N", d.stats.std, m.stats.std, true);
+    row("σ 20 Hz, N", d.filtered[0].std, m.filtered[0].std, true);
+    row("max, N", d.stats.max, m.stats.max, true);
+    row("min, N", d.stats.min, m.stats.min, false);
+    row("min 20 Hz, N", d.filtered[0].min, m.filtered[0].min, false);
+    row("loss, %", d.stats.loss_pct, m.stats.loss_pct, false);
+    row("uplift max, mm", 1e3 * up_d, 1e3 * up_m, true);
+    t.rows.push_back({v, "wall, s", fmt::format("{:.2f}", r.reference_s), fmt::format("{:.2f}", r.candidate_s), ""});
+    t.row_class.push_back("na");
+  }
+  doc.table(t);
+  Plot p("σ(v) of both solves", "speed, km/h", "σ, N");
+  PlotSeries sd("direct, raw", "#1f5fa8", false, true), sm("modal, raw", "#c0392b", true, true);
+  PlotSeries fd("direct, 20 Hz", "#2e8b3e", false, true), fm("modal, 20 Hz", "#8e44ad", true, true);
+  for (const auto& r : rows) {
+    const double v = 3.6 * r.speed;
+    sd.x.push_back(v), sd.y.push_back(r.reference.stats.std), sm.x.push_back(v), sm.y.push_back(r.candidate.stats.std);
+    fd.x.push_back(v), fd.y.push_back(r.reference.filtered[0].std), fm.x.push_back(v), fm.y.push_back(r.candidate.filtered[0].std);
+  }
+  p.series = {sd, sm, fd, fm};
+  doc.figure(svg_plot(p), "σ of the leading pantograph's contact force by the direct (solid) and the modal solve (dashed).");
+  if (c.criteria) {
+    doc.heading("Verdict of each solve");
+    Table v;
+    v.id = "verdicts";
+    v.header = {c.kmh ? "v km/h" : "v m/s", "criterion", "direct value", "direct", "modal value", "modal", "same"};
+    for (std::size_t i = 0; i < c.verdict.size() && i < modal_verdict.size(); ++i) {
+      const auto &a = c.verdict[i].result, &b = modal_verdict[i].result;
+      auto st = [](const analysis::CriterionResult& r) { return !r.assessed ? "not assessed" : r.passed ? "PASS" : "FAIL"; };
+      const bool same = std::string(st(a)) == st(b);
+      v.rows.push_back({fmt::format("{:.6g}", c.kmh ? 3.6 * c.verdict[i].speed : c.verdict[i].speed), a.criterion + (a.assumed ? " [assumed]" : ""),
+                        shown(a, a.value), st(a), shown(b, b.value), st(b), same ? "yes" : "NO"});
+      v.row_class.push_back(same ? "" : "fail");
+      record.add(fmt::format("verdict/{}/{}/direct", speed_key(c.verdict[i].speed, c.kmh), a.criterion), a.value);
+      record.add(fmt::format("verdict/{}/{}/modal", speed_key(c.verdict[i].speed, c.kmh), b.criterion), b.value);
+    }
+    doc.table(v);
+  }
+  doc.provenance(c.provenance);
+  return doc.html(record);
+}
+
 }  // namespace inerta::report

@@ -21,6 +21,11 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string source(const std::string& rel) { return std::string(INERTA_SOURCE_DIR) + "/" + rel; }
+std::string fmt_fixed4(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.4f", x);
+  return b;
+}
 class ReportCli : public inerta::testing::CliTest {
  protected:
   // a copy of the 4-span line and the 3-mass model in the test's folder (so that an input can change)
@@ -164,6 +169,67 @@ TEST_F(ReportCli, AReportNeedsALineAndNeverReplacesAnInput) {
   EXPECT_EQ(read_file(path("line.yaml")), read_file(source("models/catenary-fe.yaml")));
   r = run(sweep("--report ''"));
   EXPECT_EQ(r.code, 105) << r.err;
+}
+
+}  // namespace test_apps_report_cli
+
+namespace test_apps_report_cli {
+
+// A study's report.html: the recommendation first, the ranking with its J, each network drawn with
+// its values, the study file among the inputs; verify-report re-runs the study into a folder of its own.
+TEST_F(ReportCli, AStudysReportRanksDrawsAndReproduces) {
+  const std::string study = write("tiny.yaml", "name: tiny\nmodel: " + source("models/hsx.yaml") + "\ncatenary: " +
+                                                   source("models/catenary.yaml") +
+                                                   "\nspeeds: {from: 150, to: 200, step: 50, unit: kmh}\n"
+                                                   "search: {starts: 1, seed: 1, min_step: 0.1}\nlayouts: [b|k]\n");
+  const auto r = run("optimise " + quote(study) + " --out " + quote(path("out").string()) + " --map 0 --no-plots");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_TRUE(contains(r.out, "report.html")) << r.out;
+  const std::string html = read_file(path("out/report.html"));
+  const auto rec = inerta::report::read_record(html, "report.html");
+  EXPECT_EQ(rec.command, "optimise");
+  EXPECT_LT(html.find("class=\"verdict"), html.find("<h2>"));
+  EXPECT_TRUE(contains(html, "<table id=\"ranking\">"));
+  EXPECT_GE(std::count(html.begin(), html.end(), '\n'), 20);
+  std::size_t drawings = 0;
+  for (std::size_t at = 0; (at = html.find("class=\"schematic\"", at)) != std::string::npos; ++at) ++drawings;
+  EXPECT_GE(drawings, 2u) << "the default and the design";
+  EXPECT_TRUE(contains(html, "kN/m"));
+  bool study_input = false;
+  for (const auto& f : rec.provenance.inputs) study_input = study_input || f.path == study;
+  EXPECT_TRUE(study_input);
+  // results.json's J of the design is the report's
+  const std::string results = read_file(path("out/results.json"));
+  EXPECT_TRUE(contains(results, "\"b|k\"")) << results.substr(0, 300);
+  const auto v = run("verify-report " + quote(path("out/report.html").string()));
+  EXPECT_EQ(v.code, 0) << v.out << v.err;
+  EXPECT_TRUE(contains(v.out, "reproduced: all")) << v.out;
+  // --force of the folder replaces the report too (it is the study's own file)
+  EXPECT_EQ(run("optimise " + quote(study) + " --out " + quote(path("out").string()) + " --map 0 --no-plots --force").code, 0);
+}
+
+}  // namespace test_apps_report_cli
+
+namespace test_apps_report_cli {
+
+// check-reduction --report: both solves side by side (the printed numbers), both verdicts; reproduced.
+TEST_F(ReportCli, TheReductionChecksReportSetsBothSolvesSideBySide) {
+  const auto r = run("catenary check-reduction " + quote(path("line.yaml").string()) + " --model " + quote(path("p.yaml").string()) +
+                     " --set line.spans=4 --speed 250 --unit kmh --acceptance en50367-ac --report " + quote(path("c.html").string()));
+  ASSERT_LE(r.code, 1) << r.err;  // 1: beyond the σ tolerance (the report is written either way)
+  const std::string html = read_file(path("c.html"));
+  const auto n = numbers("c.html");
+  // the printed table's σ of each solve is the report's (4 decimals)
+  for (const char* solve : {"direct", "modal"}) {
+    const std::string key = std::string("v=250 km/h/") + solve + "/σ, N";
+    ASSERT_TRUE(n.count(key)) << key;
+    EXPECT_TRUE(contains(r.out, fmt_fixed4(n.at(key)))) << key << " " << r.out;
+  }
+  EXPECT_TRUE(contains(html, "<table id=\"comparison\">"));
+  EXPECT_TRUE(contains(html, "<table id=\"verdicts\">"));
+  EXPECT_TRUE(contains(html, r.code == 0 ? "<span class=\"status\">AGREE</span>" : "<span class=\"status\">DIFFER</span>"));
+  const auto v = run("verify-report " + quote(path("c.html").string()));
+  EXPECT_EQ(v.code, 0) << v.out << v.err;
 }
 
 }  // namespace test_apps_report_cli

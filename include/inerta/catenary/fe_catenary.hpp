@@ -453,7 +453,7 @@ class FeCatenary final : public Catenary {
   double wave_speed() const override { return data_.contact_wire.wave_speed(); }
   std::vector<LineFeature> features() const override;
   Section section() const override;
-  double uplift_limit() const override { return line_->data().registration_uplift_limit; }
+  double uplift_limit() const override { return data_.registration_uplift_limit; }  // the file's: no build needed
   bool uplift_limited() const override { return data_.registration_uplift_limited; }
   std::shared_ptr<const Catenary> mean() const override;
   /// The modes of the line's windows (computed when first needed, kept for every later run: a sweep

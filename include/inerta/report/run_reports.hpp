@@ -35,4 +35,10 @@ std::string sweep_report(const RunContext& context, const std::vector<analysis::
 std::string simulate_report(const RunContext& context, const analysis::CoupledSimulation& simulation,
                             const std::vector<catenary::LineFeature>& features, Record& record);
 
+/// The report of `catenary check-reduction`: the direct and the modal solve side by side at each speed
+/// (statistics, their difference, the wall times), both verdicts with the criteria that differ, σ(v) of
+/// both. `context.verdict` is the direct solve's; `modal_verdict` the modal one's.
+std::string reduction_report(const RunContext& context, const std::vector<analysis::RunComparison>& rows,
+                             const std::vector<analysis::VerdictRow>& modal_verdict, double tolerance_pct, Record& record);
+
 }  // namespace inerta::report
