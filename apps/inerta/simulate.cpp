@@ -318,6 +318,7 @@ int cmd_simulate(const SimulateArgs& a) {
            {"pantographs at x0, m", fmt::format("{}", fmt::join(x0s, ", "))},
            {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
       ctx.model = a.model + (a.cat.suspension.empty() ? "" : ", suspension " + a.cat.suspension);
+    if (!a.cat.suspension.empty()) ctx.suspension = network::resolve(a.cat.suspension, parse_params(a.cat.params));
       ctx.line = cat.catenary->describe();
       ctx.kmh = a.cat.unit == "kmh";
       if (criteria) ctx.criteria = &*criteria, ctx.verdict = verdict;

@@ -217,6 +217,7 @@ int cmd_sweep(const SweepArgs& a) {
                                      {"suspension", a.cat.suspension.empty() ? "from the model" : a.cat.suspension},
                                      {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
     ctx.model = a.model + (a.cat.suspension.empty() ? "" : ", suspension " + a.cat.suspension);
+    if (!a.cat.suspension.empty()) ctx.suspension = network::resolve(a.cat.suspension, parse_params(a.cat.params));
     ctx.line = cat.catenary->describe();
     ctx.kmh = a.cat.unit == "kmh";
     if (criteria) ctx.criteria = &*criteria, ctx.verdict = verdict;

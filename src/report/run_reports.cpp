@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "inerta/report/html.hpp"
+#include "inerta/network/schematic.hpp"
 #include "inerta/report/svg_plot.hpp"
 
 namespace inerta::report {
@@ -119,6 +120,16 @@ void feature_marks(const std::vector<catenary::LineFeature>& features, double fr
   }
 }
 
+// The run's pantograph and line, and its suspension drawn when it replaces the model's.
+void run_section(Document& doc, const RunContext& c) {
+  doc.heading("Run");
+  doc.paragraph("Pantograph: " + c.model);
+  if (c.suspension)
+    doc.figure(network::schematic_svg(network::simplify(*c.suspension), {.values = true, .title = "suspension: " + network::to_string(*c.suspension, true)}),
+               "The suspension network of this run (--suspension), in place of the model's own.");
+  doc.paragraph("Line: " + c.line);
+}
+
 }  // namespace
 
 std::string sweep_report(const RunContext& c, const std::vector<analysis::SpeedResult>& results, Record& record) {
@@ -126,9 +137,7 @@ std::string sweep_report(const RunContext& c, const std::vector<analysis::SpeedR
   record.provenance = c.provenance;
   Document doc("Inerta sweep: contact force over speeds");
   verdict_section(doc, record, c);
-  doc.heading("Run");
-  doc.paragraph("Pantograph: " + c.model);
-  doc.paragraph("Line: " + c.line);
+  run_section(doc, c);
   const bool line = !results.empty() && !results.front().filtered.empty();
   std::vector<double> v_shown, v_kmh;
   for (const auto& r : results) v_shown.push_back(c.kmh ? 3.6 * r.speed : r.speed), v_kmh.push_back(3.6 * r.speed);
@@ -209,9 +218,7 @@ std::string simulate_report(const RunContext& c, const analysis::CoupledSimulati
   record.provenance = c.provenance;
   Document doc(fmt::format("Inerta simulate: {:.4g} km/h", 3.6 * sim.speed));
   verdict_section(doc, record, c);
-  doc.heading("Run");
-  doc.paragraph("Pantograph: " + c.model);
-  doc.paragraph("Line: " + c.line);
+  run_section(doc, c);
   doc.paragraph(fmt::format("Speed {:.4g} km/h ({:.4g} m/s); analysis section {:g}–{:g} m.", 3.6 * sim.speed, sim.speed,
                             sim.section.from, sim.section.to));
   const bool line = !sim.quality.empty();

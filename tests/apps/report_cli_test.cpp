@@ -149,7 +149,9 @@ TEST_F(ReportCli, ASimulationsReportMarksTheLineAndLeadsWithTheVerdict) {
     for (std::string x; std::getline(ls, x, ',');) f.push_back(x);
     const std::string key = "verdict/v=250 km/h/panto 1/" + f[3] + "/value";
     ASSERT_TRUE(n.count(key)) << key;
-    if (f[5] != "nan") EXPECT_NEAR(n.at(key), std::stod(f[5]), 5e-6 * std::abs(std::stod(f[5])) + 1e-12) << key;
+    if (f[5] != "nan") {
+      EXPECT_NEAR(n.at(key), std::stod(f[5]), 5e-6 * std::abs(std::stod(f[5])) + 1e-12) << key;
+    }
     ++rows;
   }
   EXPECT_GE(rows, 6);
@@ -230,6 +232,23 @@ TEST_F(ReportCli, TheReductionChecksReportSetsBothSolvesSideBySide) {
   EXPECT_TRUE(contains(html, r.code == 0 ? "<span class=\"status\">AGREE</span>" : "<span class=\"status\">DIFFER</span>"));
   const auto v = run("verify-report " + quote(path("c.html").string()));
   EXPECT_EQ(v.code, 0) << v.out << v.err;
+}
+
+}  // namespace test_apps_report_cli
+
+namespace test_apps_report_cli {
+
+// A run with --suspension draws that network in its report, with its values.
+TEST_F(ReportCli, ARunsSuspensionIsDrawnInItsReport) {
+  fs::copy_file(source("models/hsx.yaml"), path("hsx.yaml"));
+  const auto r = run("sweep " + quote(path("hsx.yaml").string()) + " --catenary " + quote(path("line.yaml").string()) +
+                     " --set line.spans=3 --speeds 200:1:200 --unit kmh --suspension 'k|c' --param k=1.4e5 --param c=1e4 --report " +
+                     quote(path("r.html").string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string html = read_file(path("r.html"));
+  EXPECT_TRUE(contains(html, "class=\"schematic\""));
+  EXPECT_TRUE(contains(html, "k = 140 kN/m")) << html.substr(0, 2000);
+  EXPECT_TRUE(contains(html, "c = 10 kN·s/m"));
 }
 
 }  // namespace test_apps_report_cli

@@ -206,8 +206,12 @@ TEST(FeSections, TheBundledOverlapHasBothWiresAtTheRunningHeightOverHalfItsMiddl
   EXPECT_EQ(common, 2 * 5);  // the five span droppers of the middle span, on each wire
   for (double s = 0; s <= 3 * span; s += 2.5) {
     const double za = a.static_height(o0 + s), zb = b.static_height(s);
-    if (s < 1.25 * span) EXPECT_GT(zb, za - 1e-9) << s;  // the incoming wire out of running before
-    if (s > 1.75 * span) EXPECT_GT(za, zb - 1e-9) << s;  // the outgoing one after
+    if (s < 1.25 * span) {
+      EXPECT_GT(zb, za - 1e-9) << s;  // the incoming wire out of running before
+    }
+    if (s > 1.75 * span) {
+      EXPECT_GT(za, zb - 1e-9) << s;  // the outgoing one after
+    }
   }
   // Through the overlap (two 6-span sections, the 3-mass at 250 km/h, direct solve): the force passes
   // from wire 1 to wire 2 with both loaded over the whole common stretch, their sum the force.
@@ -217,8 +221,12 @@ TEST(FeSections, TheBundledOverlapHasBothWiresAtTheRunningHeightOverHalfItsMiddl
   double first_both = INFINITY, last_both = -INFINITY;
   for (std::size_t i = 0; i < F.size(); ++i) {
     EXPECT_NEAR(f1[i] + f2[i], F[i], 1e-9 * std::max(1.0, std::abs(F[i]))) << x[i];
-    if (x[i] < 3 * span) EXPECT_EQ(f2[i], 0.0) << x[i];
-    if (x[i] > 6 * span) EXPECT_EQ(f1[i], 0.0) << x[i];
+    if (x[i] < 3 * span) {
+      EXPECT_EQ(f2[i], 0.0) << x[i];
+    }
+    if (x[i] > 6 * span) {
+      EXPECT_EQ(f1[i], 0.0) << x[i];
+    }
     if (f1[i] > 0 && f2[i] > 0) first_both = std::min(first_both, x[i]), last_both = std::max(last_both, x[i]);
   }
   std::fprintf(stderr, "bundled overlap: both wires loaded over %.2f … %.2f m (common stretch %.2f … %.2f m)\n", first_both,
@@ -308,10 +316,11 @@ TEST(FeSectionsErrors, NameTheFileAndKey) {
         const std::string what = e.what();
         EXPECT_NE(what.find(path + ":"), std::string::npos) << what;
         EXPECT_NE(what.find(c.key), std::string::npos) << what;
-        if (list.data() == profile_cases)  // at the line edited
+        if (list.data() == profile_cases) {  // at the line edited
           EXPECT_NE(what.find(fmt::format("{}:{}:", path, 1 + std::count(t.begin(), t.begin() + static_cast<long>(at), '\n'))),
                     std::string::npos)
               << what;
+        }
       }
       std::filesystem::remove_all(dir);
     }

@@ -2,6 +2,7 @@
 // The HTML reports of the commands (issue 53, docs/cli.md "Reports"): a sweep, a coupled simulation,
 // the reduction check, a study. Each is one self-contained page — the verdict first (when criteria
 // were given), tables with margins, inline SVG figures, the provenance — and its numbers record.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/simulate.hpp"
 #include "inerta/catenary/catenary.hpp"
+#include "inerta/network/network.hpp"
 #include "inerta/report/provenance.hpp"
 #include "inerta/report/record.hpp"
 
@@ -18,6 +20,8 @@ namespace inerta::report {
 struct RunContext {
   Provenance provenance;
   std::string model;  ///< the pantograph model (path and suspension)
+  /// The suspension network replacing the model's own (--suspension), drawn as a schematic; none: the model's.
+  std::optional<network::Network> suspension;
   std::string line;   ///< the catenary's describe()
   bool kmh = true;    ///< speeds shown in km/h (else m/s)
   const analysis::AcceptanceCriteria* criteria = nullptr;  ///< the verdict's criteria; nullptr: none
