@@ -106,8 +106,14 @@ std::string svg_plot(const Plot& p) {
     svg += fmt::format("<polygon class=\"band\" points=\"{}\" fill=\"{}\" opacity=\"0.18\" stroke=\"{}\"><title>{}</title></polygon>\n",
                        pts, b.color, b.color, escape(b.name));
   }
-  // curves, split at NaN
+  // curves, split at NaN; the legend on a white box over the top right corner
   int legend = 0;
+  const std::size_t entries = p.series.size() + p.bands.size();
+  std::string legend_box = entries == 0 ? std::string()
+                                        : fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"172\" height=\"{:.1f}\" fill=\"#fff\" "
+                                                      "opacity=\"0.85\" stroke=\"#ccc\"/>\n",
+                                                      left + pw - 176, top + 3, 14.0 * static_cast<double>(entries) + 6);
+  std::string legend_items;
   for (const auto& s : p.series) {
     std::string path;
     bool pen = false;
@@ -127,18 +133,18 @@ std::string svg_plot(const Plot& p) {
           svg += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"3\" fill=\"{}\"><title>{}: {:g}, {:.4g}</title></circle>\n",
                              X(s.x[i]), Y(s.y[i]), s.color, escape(s.name), s.x[i], s.y[i]);
     const double ly = top + 12 + 14 * legend++;
-    svg += fmt::format("<line x1=\"{0:.1f}\" x2=\"{1:.1f}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>"
+    legend_items += fmt::format("<line x1=\"{0:.1f}\" x2=\"{1:.1f}\" y1=\"{2:.1f}\" y2=\"{2:.1f}\" stroke=\"{3}\" stroke-width=\"2\"{4}/>"
                        "<text x=\"{5:.1f}\" y=\"{6:.1f}\">{7}</text>\n",
                        left + pw - 170, left + pw - 150, ly, s.color, s.dashed ? " stroke-dasharray=\"6 4\"" : "", left + pw - 146,
                        ly + 4, escape(s.name));
   }
   for (const auto& b : p.bands) {
     const double ly = top + 12 + 14 * legend++;
-    svg += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"20\" height=\"8\" fill=\"{}\" opacity=\"0.3\"/>"
+    legend_items += fmt::format("<rect x=\"{:.1f}\" y=\"{:.1f}\" width=\"20\" height=\"8\" fill=\"{}\" opacity=\"0.3\"/>"
                        "<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n",
                        left + pw - 170, ly - 4, b.color, left + pw - 146, ly + 4, escape(b.name));
   }
-  svg += "</svg>\n";
+  svg += legend_box + legend_items + "</svg>\n";
   return svg;
 }
 
