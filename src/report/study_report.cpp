@@ -61,9 +61,14 @@ void j2_study(Document& doc, Record& rec, const optim::StudyOutcome& o) {
   if (o.report && !o.report->margins.empty()) {
     // the verdict of the best design over the acceptance margins (every variant, speed and pantograph)
     bool any = false, fail = false;
-    std::vector<std::string> failed;
+    std::vector<std::string> failed, not_assessed;
     for (const auto& m : o.report->margins) {
-      if (m.design != o.report->best.label || !m.result.assessed) continue;
+      if (m.design != o.report->best.label) continue;
+      if (!m.result.assessed) {
+        if (std::find(not_assessed.begin(), not_assessed.end(), m.result.criterion) == not_assessed.end())
+          not_assessed.push_back(m.result.criterion);
+        continue;
+      }
       any = true;
       if (!m.result.passed) {
         fail = true;
@@ -72,15 +77,16 @@ void j2_study(Document& doc, Record& rec, const optim::StudyOutcome& o) {
     }
     status = !any ? "NOT ASSESSED" : fail ? "FAIL" : "PASS";
     rec.verdict = status;
-    lines.push_back(fmt::format("Acceptance ({}) of the recommended design over every line variant and speed: {}{}.",
-                                o.report->acceptance, status, failed.empty() ? "" : fmt::format(" ({})", fmt::join(failed, ", "))));
+    lines.push_back(fmt::format("Acceptance ({}) of the recommended design over every line variant and speed: {}{}{}.",
+                                o.report->acceptance, status, failed.empty() ? "" : fmt::format(" ({})", fmt::join(failed, ", ")),
+                                not_assessed.empty() ? "" : fmt::format("; not assessed: {}", fmt::join(not_assessed, ", "))));
   }
   doc.verdict(status, lines);
   rec.add("default/J", ref);
   rec.add("best/J", best.J);
   doc.heading("Study");
-  doc.paragraph(fmt::format("{}: {} catenary variant(s), {} speeds ({:.0f}–{:.0f} km/h), {}.", s.name, s.catenaries.size(),
-                            s.speeds.size(), 3.6 * s.speeds.front(), 3.6 * s.speeds.back(),
+  doc.paragraph(fmt::format("{}: {} catenary variant(s), {} speeds{}, {}.", s.name, s.catenaries.size(), s.speeds.size(),
+                            s.speeds.empty() ? "" : fmt::format(" ({:.0f}–{:.0f} km/h)", 3.6 * s.speeds.front(), 3.6 * s.speeds.back()),
                             time ? "time domain" : "periodic fast path (harmonic balance)"));
   // the ranking: each design with its J, against the default, its binding criterion
   doc.heading("Ranking");

@@ -159,3 +159,55 @@ TEST(Report, APlotDrawsEachSeriesBandAndMark) {
 }
 
 }  // namespace test_report
+
+#include "inerta/network/network.hpp"
+#include "inerta/report/study_report.hpp"
+
+namespace test_report {
+
+// A study's page: the recommended design's acceptance over its margins — a PASS names the criteria it could
+// not assess; a failing margin makes it FAIL; every ranked design is drawn as built.
+TEST(Report, AStudysVerdictNamesWhatItCouldNotAssess) {
+  using namespace inerta;
+  optim::StudyOutcome o;
+  o.study = optim::Study{};
+  o.study->name = "synthetic";
+  o.baseline = network::parse("k-c");
+  o.default_cost.J = 10;
+  optim::LayoutResult r;
+  r.layout = r.expression = "k|c";
+  r.values = {{"k", 1e5}, {"c", 0}};
+  r.cost.J = 8;
+  o.results = {r};
+  o.best.layout = o.best.expression = "k|c";
+  o.best.J = 8;
+  o.report = optim::Report{};
+  o.report->best.label = "best (k|c)";
+  o.report->acceptance = "en50367-ac";
+  auto row = [](const char* criterion, bool assessed, bool passed) {
+    optim::MarginRow m;
+    m.design = "best (k|c)";
+    m.catenary = "line";
+    m.speed = 250 / 3.6;
+    m.result.criterion = criterion;
+    m.result.assessed = assessed, m.result.passed = passed;
+    m.result.value = 1, m.result.limit = 2, m.result.margin = 1;
+    return m;
+  };
+  o.report->margins = {row("sigma", true, true), row("support_uplift", false, false)};
+  Record rec;
+  std::string html = study_report({}, o, rec);
+  EXPECT_EQ(rec.verdict, "PASS");
+  EXPECT_NE(html.find("PASS; not assessed: support_uplift."), std::string::npos);
+  EXPECT_NE(html.find("k = 100 kN/m"), std::string::npos) << "drawn with its value";
+  EXPECT_EQ(html.find("data-name=\"c\""), std::string::npos) << "c = 0 is open: left out of the drawing as built";
+  o.report->margins.push_back(row("max_force", true, false));
+  html = study_report({}, o, rec = Record{});
+  EXPECT_EQ(rec.verdict, "FAIL");
+  EXPECT_NE(html.find("FAIL (max_force); not assessed: support_uplift."), std::string::npos);
+  o.report->margins = {row("support_uplift", false, false)};
+  study_report({}, o, rec = Record{});
+  EXPECT_EQ(rec.verdict, "NOT ASSESSED");
+}
+
+}  // namespace test_report
