@@ -21,6 +21,7 @@
 #include "inerta/analysis/simulate.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
+#include "inerta/report/run_reports.hpp"
 #include "inerta/io/json.hpp"
 #include "inerta/io/linear_model_file.hpp"
 #include "inerta/mbs/linearisation.hpp"
@@ -832,6 +833,41 @@ void bind_analysis(py::module_& m) {
       .def("__repr__", [](const analysis::Verdict& v) {
         return fmt::format("Verdict({}, failed=[{}], not_assessed=[{}])", v.text(), fmt::join(v.failed, ", "), fmt::join(v.not_assessed, ", "));
       });
+  m.def("report_html", [](const py::object& result, const py::object& criteria, const py::object& catenary,
+                          const std::string& model) {
+    report::RunContext ctx;
+    std::vector<std::string> args{"python3"};
+    for (const auto& a : py::module_::import("sys").attr("argv").cast<py::list>()) args.push_back(py::str(a));
+    ctx.provenance = report::current_provenance(args);  // this Python's command line and the inputs the module read
+    ctx.model = model;
+    std::shared_ptr<const catenary::Catenary> cat;
+    if (py::isinstance<io::CatenaryFile>(catenary))
+      cat = catenary.cast<const io::CatenaryFile&>().catenary;
+    else if (py::isinstance<catenary::Catenary>(catenary))
+      cat = catenary.cast<std::shared_ptr<catenary::Catenary>>();
+    else if (!catenary.is_none())
+      throw py::type_error(fmt::format("report_html: catenary: expected the run's Catenary or CatenaryFile, got {}",
+                                       py::str(py::type::of(catenary)).cast<std::string>()));
+    if (cat) ctx.line = cat->describe();
+    analysis::AcceptanceCriteria loaded;
+    if (!criteria.is_none()) {
+      loaded = py::isinstance<analysis::AcceptanceCriteria>(criteria) ? criteria.cast<analysis::AcceptanceCriteria>()
+                                                                      : io::load_acceptance(path_arg(criteria));
+      ctx.criteria = &loaded;
+      ctx.verdict = verdict_rows(result, py::cast(loaded), "report_html");
+    }
+    report::Record record;
+    if (py::isinstance<SweepResult>(result)) return report::sweep_report(ctx, result.cast<const SweepResult&>().r, record);
+    if (py::isinstance<CoupledResult>(result))
+      return report::simulate_report(ctx, *result.cast<const CoupledResult&>().sim,
+                                     cat ? cat->features() : std::vector<catenary::LineFeature>{}, record);
+    throw py::type_error(fmt::format("report_html: result: expected the result of inerta.sweep or inerta.simulate_coupled, got {}",
+                                     py::str(py::type::of(result)).cast<std::string>()));
+  }, py::arg("result"), py::arg("criteria") = py::none(), py::arg("catenary") = py::none(), py::arg("model") = "",
+        "The HTML report of a sweep or a coupled simulation, as the CLI's --report writes it (docs/cli.md \"Reports\"): "
+        "the verdict first when criteria (a preset, a file or AcceptanceCriteria) are given, the statistics, the figures "
+        "as inline SVG, the line's masts, droppers, stitch wires and overlaps (give the run's catenary), the provenance "
+        "(this Python's command line and every input the module read, with SHA-256). Returns the page (str).");
   m.def("verdict", [](const py::object& result, const py::object& criteria) {
     return analysis::judge(verdict_rows(result, criteria, "verdict"));
   }, py::arg("result"), py::arg("criteria"),

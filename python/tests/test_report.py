@@ -126,3 +126,26 @@ def test_read_report_refuses_what_is_not_one(tmp_path):
     p.write_text("<html></html>")
     with pytest.raises(inerta.ModelError, match="not an Inerta report"):
         inerta.read_report(str(p))
+
+
+def test_python_writes_the_same_report_as_the_cli(cli, tmp_path):
+    """inerta.report_html of a sweep: the numbers the CLI's --report gives for the same run; of a coupled
+    simulation with its catenary: the line's masts and droppers marked."""
+    m3 = inerta.load_model(model("pantograph-3mass.yaml"))
+    line = inerta.load_catenary(model("catenary-fe.yaml"), {"line.spans": 4})
+    speeds = inerta.kmh([200.0, 250.0])
+    page = inerta.report_html(inerta.sweep(m3, line, speeds), "en50367-ac", catenary=line, model="3-mass")
+    (tmp_path / "py.html").write_text(page, encoding="utf-8")
+    cli("sweep", model("pantograph-3mass.yaml"), "--catenary", model("catenary-fe.yaml"), "--set", "line.spans=4",
+        "--speeds", "200:50:250", "--unit", "kmh", "--acceptance", "en50367-ac", "--out", tmp_path / "s.csv",
+        "--report", tmp_path / "cli.html")
+    py, c = inerta.read_report(str(tmp_path / "py.html")), inerta.read_report(str(tmp_path / "cli.html"))
+    assert py.verdict == c.verdict and py.argv[0] == "python3"
+    assert inerta.compare_reports(c, py, rtol=1e-12) == []
+    run = inerta.simulate_coupled(m3, line, inerta.kmh(250.0))
+    page = inerta.report_html(run, catenary=line)
+    assert 'class="mark mast"' in page and 'class="mark dropper"' in page and "NO CRITERIA" in page
+    with pytest.raises(TypeError, match="catenary"):
+        inerta.report_html(run, catenary="line.yaml")
+    with pytest.raises(TypeError, match="result"):
+        inerta.report_html(3)
