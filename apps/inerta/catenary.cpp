@@ -221,17 +221,11 @@ int cmd_check_reduction(CheckReductionArgs a) {
   }
   fmt::print("\nlargest difference of sigma (raw or 20 Hz): {:.3f} % (tolerance {:g} %)\n", worst, a.tolerance);
   if (!a.report.empty()) {
-    report::RunContext ctx;
-    ctx.provenance = run_provenance({{"overrides", a.cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(a.cat.sets, "; "))},
-                                     {"reference", "direct solve (solver.type=direct)"},
-                                     {"candidate", "modal solve (solver.type=modal)"},
-                                     {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
-    ctx.model = a.model;
-    ctx.line = cand.catenary->describe();
-    ctx.kmh = a.cat.unit == "kmh";
+    report::RunContext ctx = line_run_context(a.model, a.cat, *cand.catenary, criteria ? &*criteria : nullptr, {},
+                                              {{"reference", "direct solve (solver.type=direct)"},
+                                               {"candidate", "modal solve (solver.type=modal)"}});
     std::vector<analysis::VerdictRow> vm;
     if (criteria) {
-      ctx.criteria = &*criteria;
       for (const auto& r : rows) {
         auto d = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{r.reference});
         auto m = analysis::verdict(*criteria, std::vector<analysis::SpeedResult>{r.candidate});

@@ -32,6 +32,8 @@ network::Params parse_params(const std::vector<std::string>& list) {
     for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
     if (lower == "inf" || lower == ".inf")
       value = INFINITY;
+    else if (lower.find("0x") != std::string::npos)  // strtod reads hex; a value in SI is never written so
+      throw CLI::ValidationError("--param", "a hexadecimal number in '" + p + "': give the value in decimal, SI units");
     else if (!CLI::detail::lexical_cast(v, value))
       throw CLI::ValidationError("--param", "not a number in '" + p + "'");
     params[name] = value;

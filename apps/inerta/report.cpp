@@ -2,6 +2,7 @@
 #include "report.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -13,6 +14,7 @@
 #include <fstream>
 
 #include "inerta/error.hpp"
+#include "inerta/network/layouts.hpp"
 #include "inerta/io/files.hpp"
 #include "inerta/report/record.hpp"
 
@@ -50,6 +52,23 @@ report::Provenance run_provenance(std::vector<std::pair<std::string, std::string
   return p;
 }
 
+report::RunContext line_run_context(const std::string& model, const CatenaryArgs& cat, const catenary::Catenary& line,
+                                    const analysis::AcceptanceCriteria* criteria,
+                                    const std::vector<analysis::VerdictRow>& verdict,
+                                    std::vector<std::pair<std::string, std::string>> settings) {
+  settings.emplace_back("overrides", cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(cat.sets, "; ")));
+  settings.emplace_back("suspension", cat.suspension.empty() ? "from the model" : cat.suspension);
+  settings.emplace_back("criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none");
+  report::RunContext ctx;
+  ctx.provenance = run_provenance(std::move(settings));
+  ctx.model = model + (cat.suspension.empty() ? "" : ", suspension " + cat.suspension);
+  if (!cat.suspension.empty()) ctx.suspension = network::resolve(cat.suspension, parse_params(cat.params));
+  ctx.line = line.describe();
+  ctx.kmh = cat.unit == "kmh";
+  if (criteria) ctx.criteria = criteria, ctx.verdict = verdict;
+  return ctx;
+}
+
 void write_report(const std::string& path, const std::string& html) {
   io::OutputFile f(path);
   std::fputs(html.c_str(), f.get());
@@ -63,7 +82,13 @@ CLI::App* add_verify_report_command(CLI::App& app) {
                                   "Re-run the command of a report (--report) and say whether every reported number is reproduced");
   verify_cmd->add_option("report", a.file, "The report (HTML) to verify")->required();
   verify_cmd->add_option("--rtol", a.rtol, "Numbers equal within this relative difference (default 0: exactly)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            double x = NAN;
+            return CLI::detail::lexical_cast(s, x) && x >= 0 && x <= 1 ? std::string()
+                                                                        : "a relative difference in [0, 1], got '" + s + "'";
+          },
+          "X in [0, 1]"));
   verify_cmd->add_flag("--keep", a.keep, "Keep the re-run's folder (its report, CSV and log) and print where it is");
   return verify_cmd;
 }

@@ -310,18 +310,11 @@ int cmd_simulate(const SimulateArgs& a) {
     if (criteria) verdict = analysis::verdict(*criteria, r);
     const int code = criteria ? cli::report_acceptance(info, *criteria, verdict, a.out, a.acceptance.strict, a.cat.unit == "kmh") : 0;
     if (!a.report.empty()) {
-      report::RunContext ctx;
-      ctx.provenance = run_provenance(
-          {{"integrator", fmt::format("{} (rtol {:g}, atol {:g}, max step {:g} s)", solve::method_name(opt.method), opt.rtol, opt.atol, opt.max_step)},
-           {"overrides", a.cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(a.cat.sets, "; "))},
-           {"suspension", a.cat.suspension.empty() ? "from the model" : a.cat.suspension},
-           {"pantographs at x0, m", fmt::format("{}", fmt::join(x0s, ", "))},
-           {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
-      ctx.model = a.model + (a.cat.suspension.empty() ? "" : ", suspension " + a.cat.suspension);
-    if (!a.cat.suspension.empty()) ctx.suspension = network::resolve(a.cat.suspension, parse_params(a.cat.params));
-      ctx.line = cat.catenary->describe();
-      ctx.kmh = a.cat.unit == "kmh";
-      if (criteria) ctx.criteria = &*criteria, ctx.verdict = verdict;
+      const report::RunContext ctx = line_run_context(
+          a.model, a.cat, *cat.catenary, criteria ? &*criteria : nullptr, verdict,
+          {{"integrator", fmt::format("{} (rtol {:g}, atol {:g}, max step {:g} s)", solve::method_name(opt.method), opt.rtol,
+                                      opt.atol, opt.max_step)},
+           {"pantographs at x0, m", fmt::format("{}", fmt::join(x0s, ", "))}});
       report::Record record;
       write_report(a.report, report::simulate_report(ctx, r, cat.catenary->features(), record));
     }

@@ -210,17 +210,10 @@ int cmd_sweep(const SweepArgs& a) {
   const int verdict_code =
       criteria ? cli::report_acceptance(a.out.empty() ? stderr : stdout, *criteria, verdict, a.out, a.acceptance.strict, a.cat.unit == "kmh") : 0;
   if (!a.report.empty()) {
-    report::RunContext ctx;
-    ctx.provenance = run_provenance({{"method", periodic ? fmt::format("periodic, {} harmonics", a.harmonics)
-                                                         : fmt::format("time ({} integrator, rtol {:g}, atol {:g})", a.integrator, a.rtol, a.atol)},
-                                     {"overrides", a.cat.sets.empty() ? "none" : fmt::format("{}", fmt::join(a.cat.sets, "; "))},
-                                     {"suspension", a.cat.suspension.empty() ? "from the model" : a.cat.suspension},
-                                     {"criteria", criteria ? criteria->name + " (" + criteria->source + ")" : "none"}});
-    ctx.model = a.model + (a.cat.suspension.empty() ? "" : ", suspension " + a.cat.suspension);
-    if (!a.cat.suspension.empty()) ctx.suspension = network::resolve(a.cat.suspension, parse_params(a.cat.params));
-    ctx.line = cat.catenary->describe();
-    ctx.kmh = a.cat.unit == "kmh";
-    if (criteria) ctx.criteria = &*criteria, ctx.verdict = verdict;
+    const report::RunContext ctx = line_run_context(
+        a.model, a.cat, *cat.catenary, criteria ? &*criteria : nullptr, verdict,
+        {{"method", periodic ? fmt::format("periodic, {} harmonics", a.harmonics)
+                             : fmt::format("time ({} integrator, rtol {:g}, atol {:g})", a.integrator, a.rtol, a.atol)}});
     report::Record record;
     write_report(a.report, report::sweep_report(ctx, results, record));
   }

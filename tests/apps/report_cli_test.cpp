@@ -252,3 +252,24 @@ TEST_F(ReportCli, ARunsSuspensionIsDrawnInItsReport) {
 }
 
 }  // namespace test_apps_report_cli
+
+namespace test_apps_report_cli {
+
+// Hostile options: a NaN or out-of-range tolerance, a hexadecimal element value, a report that is a device.
+TEST_F(ReportCli, HostileOptionsAreUsageErrorsThatSayWhatIsExpected) {
+  for (const char* rtol : {"nan", "-1", "2", "inf"}) {
+    const auto r = run(std::string("verify-report x.html --rtol ") + rtol);
+    EXPECT_EQ(r.code, 105) << rtol << ": " << r.err;
+    EXPECT_TRUE(contains(r.err, "a relative difference in [0, 1]")) << r.err;
+  }
+  auto r = run("networks draw 'k|c' --param k=0x10 --param c=1");
+  EXPECT_EQ(r.code, 105) << r.err;
+  EXPECT_TRUE(contains(r.err, "hexadecimal")) << r.err;
+  r = run("admittance 'k|c' --param k=0X1p4 --param c=1 --freq 1:1:2");
+  EXPECT_EQ(r.code, 105) << r.err;
+  r = run("verify-report /dev/zero");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(contains(r.err, "not a regular file")) << r.err;
+}
+
+}  // namespace test_apps_report_cli
