@@ -150,6 +150,12 @@ class Printer : public optim::StudyEvents {
     std::fflush(stdout);
   }
   void network(const optim::StructureProgress& p) override { structure_(p); }
+  void screening(const std::vector<std::size_t>& entries) override {
+    fmt::print("\nscreening the best {} distinct reduced networks of the coarse search on this study, each at its coarse "
+               "optimum (one evaluation each: {} catenaries × {} speeds); the best {} by that are refined\n",
+               entries.size(), study_.catenaries.size(), study_.speeds.size(), study_.refine_networks);
+    std::fflush(stdout);
+  }
   void refining(const std::vector<std::size_t>& entries) override {
     fmt::print("\nrefining the best {} distinct reduced networks of the coarse search on this study ({} catenaries × {} "
                "speeds, {}; at most {} evaluations each):\n",
@@ -239,6 +245,17 @@ class Printer : public optim::StudyEvents {
   void print_refined(const optim::StudyOutcome& o) const {
     const char* J = optim::objective_name(study_);
     const std::string unit = *optim::objective_unit(study_) ? fmt::format(" [{}]", optim::objective_unit(study_)) : "";
+    if (!o.screened.empty()) {
+      fmt::print("\nthe screen: the best {} distinct reduced networks of the coarse search, each at its coarse optimum here, "
+                 "ranked by this study's {}:\n", o.screened.size(), J);
+      fmt::print("  {:>4} {:<44} {:>10} {:>6} {:>10}  {}\n", "rank", "network", "coarse", "c.rank", J, "");
+      for (std::size_t k = 0; k < o.screened.size(); ++k) {
+        const optim::Screened& c = o.screened[k];
+        fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10.4f}  {}{}\n", k + 1, o.entries[c.entry].reduced, o.entries[c.entry].J,
+                   c.coarse_rank, c.cost.J, c.refined ? "refined" : "",
+                   !c.failure.empty() ? "failed: " + c.failure : c.cost.feasible ? "" : "; outside: " + c.cost.violation);
+      }
+    }
     fmt::print("\nthe refined networks{}, ranked by this study's {} (default {:.4f}{}):\n",
                study_.commissioned() ? " and the stock suspension, each commissioned on the reference line" : "", J,
                o.default_cost.J, unit);
@@ -262,7 +279,11 @@ class Printer : public optim::StudyEvents {
                    o.entries[o.refinements[k].entry].J, o.refinements[k].coarse_rank, r.coarse_here.J, r.cost.J,
                    100 * (r.cost.J - o.default_cost.J) / o.default_cost.J, limits);
     }
-    if (!std::isnan(o.rank_agreement))
+    if (!o.screened.empty() && !std::isnan(o.rank_agreement))
+      fmt::print("  rank agreement with this study's order of the refined networks (Spearman): the screen's {:.3f}, "
+                 "the coarse search's {:.3f}\n",
+                 o.rank_agreement, o.coarse_rank_agreement);
+    else if (!std::isnan(o.rank_agreement))
       fmt::print("  rank agreement of the coarse stage and this study over the refined networks (Spearman): {:.3f}\n",
                  o.rank_agreement);
     if (o.stock_best) {
@@ -304,10 +325,14 @@ int cmd_optimise(const OptimiseArgs& a) {
   const bool tty = isatty(STDOUT_FILENO);
   if (study.all && study.coarse)
     fmt::print("study {}: every network of up to {} elements ({} networks) searched on the coarse study ({} catenaries, {} "
-               "speeds, {}), then the best {} distinct reduced networks refined here ({} catenaries, {} speeds, {})\n",
+               "speeds, {}), then the best {} refined here ({} catenaries, {} speeds, {})\n",
                study.name, study.all->max_elements, study.layouts.size(), study.coarse->catenaries.size(),
                study.coarse->speeds.size(),
-               study.coarse->method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study.refine_networks,
+               study.coarse->method == optim::Study::Method::Time ? "time domain" : "periodic fast path",
+               study.refine_screen > study.refine_networks
+                   ? fmt::format("{} distinct reduced networks screened here at their coarse optima and the best {} of them",
+                                 study.refine_screen, study.refine_networks)
+                   : fmt::format("{} distinct reduced networks", study.refine_networks),
                study.catenaries.size(), study.speeds.size(),
                study.method == optim::Study::Method::Time ? "time domain" : "periodic fast path");
   else if (study.all)

@@ -1264,6 +1264,7 @@ class Study:
     worst_speed_first: bool
     refine_candidates: int
     refine_networks: int
+    refine_screen: int
     @property
     def refine_optimiser(self) -> str: ...
     @property
@@ -1790,6 +1791,14 @@ class Recheck:
 class Refinement:
     entry: int
     coarse_rank: int
+    screen_rank: int
+
+class Screened:
+    entry: int
+    coarse_rank: int
+    cost: StudyCost
+    failure: str
+    refined: bool
 
 class BestDesign:
     index: int
@@ -1820,9 +1829,12 @@ class StudyOutcome:
     best: BestDesign
     seconds: float
     rank_agreement: float
+    coarse_rank_agreement: float
+    screened: list[Screened]
     stock_best: bool
     def recheck_csv(self) -> str: ...
     def refined_csv(self) -> str: ...
+    def screened_csv(self) -> str: ...
 
 def run_study(study: Union[Study, ModelStudy], options: Optional[StudyOptions] = None, *,
               progress: Optional[Callable[..., None]] = None,

@@ -311,6 +311,9 @@ def _main(argv=None):
                       f"{r.evaluations} evaluations", flush=True)
             elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
                 print(f"  [{values[0]}/{values[1]}] networks, best {objective} so far {values[2]:.4f}{unit}", flush=True)
+            elif event == "screening":
+                print(f"\n  screening the best {len(values[0])} distinct reduced networks of the coarse search on this study "
+                      f"(each at its coarse optimum); the best {study.refine_networks} by that are refined", flush=True)
             elif event == "refining":
                 print(f"\n  refining the best {len(values[0])} distinct reduced networks of the coarse search on this study:",
                       flush=True)
@@ -329,9 +332,13 @@ def _main(argv=None):
                                   + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
                             continue
                         e = o.entries[f.entry]
-                        print(f"    {r.expression:<28} coarse {e.J:.4f}{unit} (#{f.coarse_rank}), start {r.coarse_here.J:.4f}{unit}, "
+                        print(f"    {r.expression:<28} coarse {e.J:.4f}{unit} (#{f.coarse_rank}"
+                              + (f", screen #{f.screen_rank}" if f.screen_rank else "") + f"), start {r.coarse_here.J:.4f}{unit}, "
                               f"refined {r.cost.J:.4f}{unit}" + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
-                    if o.rank_agreement == o.rank_agreement:
+                    if o.screened and o.rank_agreement == o.rank_agreement:
+                        print(f"    rank agreement with this study's order (Spearman): the screen's {o.rank_agreement:.3f}, "
+                              f"the coarse search's {o.coarse_rank_agreement:.3f}")
+                    elif o.rank_agreement == o.rank_agreement:
                         print(f"    rank agreement of the coarse and the fine stage (Spearman): {o.rank_agreement:.3f}")
                 elif study.all_networks:
                     print("\n  best networks (periodic fast path):")

@@ -130,6 +130,8 @@ void bind_optim(py::module_& m) {
                     "multi-fidelity: the refinement starts from this many best coarse end points")
       .def_readonly("refine_networks", &Study::refine_networks,
                     "multi-fidelity layouts: all (refine: {best_networks: K}): the K best distinct reduced networks refined")
+      .def_readonly("refine_screen", &Study::refine_screen,
+                    "refine: {screen: N}: the N best distinct reduced networks evaluated here first (0: no screen)")
       .def_property_readonly("refine_optimiser", [](const Study& s) { return numerics::optimiser_name(s.refine_optimiser); },
                              "multi-fidelity: the refinement's optimiser, 'pattern', 'bobyqa' or 'cobyla'")
       .def_property_readonly("all_networks", [](const Study& s) { return s.all.has_value(); },

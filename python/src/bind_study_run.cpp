@@ -42,6 +42,9 @@ class PyEvents : public optim::StudyEvents {
   void network(const optim::StructureProgress& p) override {
     call_.post([done = p.done, total = p.total, b = p.best_J](const py::object& cb) { cb("network", done, total, b); });
   }
+  void screening(const std::vector<std::size_t>& entries) override {
+    call_.post([entries](const py::object& cb) { cb("screening", entries); });
+  }
   void refining(const std::vector<std::size_t>& entries) override {
     call_.post([entries](const py::object& cb) { cb("refining", entries); });
   }
@@ -148,7 +151,15 @@ void bind_study_run(py::module_& m) {
       .def_readonly("settling_spans", &optim::Recheck::settling_spans);
   py::class_<optim::Refinement>(m, "Refinement", "Multi-fidelity layouts: all: where a refined network came from.")
       .def_readonly("entry", &optim::Refinement::entry, "index in StudyOutcome.entries (the coarse search's)")
-      .def_readonly("coarse_rank", &optim::Refinement::coarse_rank, "its rank among the refined by the coarse search");
+      .def_readonly("coarse_rank", &optim::Refinement::coarse_rank,
+                    "its rank among the refined (with a screen: the screened) by the coarse search")
+      .def_readonly("screen_rank", &optim::Refinement::screen_rank, "with a screen: its rank by the screen's cost; else 0");
+  py::class_<optim::Screened>(m, "Screened", "Multi-fidelity layouts: all, refine: {screen: N}: a network evaluated at its coarse optimum.")
+      .def_readonly("entry", &optim::Screened::entry, "index in StudyOutcome.entries")
+      .def_readonly("coarse_rank", &optim::Screened::coarse_rank, "its rank among the screened by the coarse search")
+      .def_readonly("cost", &optim::Screened::cost, "on this study at its coarse optimum")
+      .def_readonly("failure", &optim::Screened::failure)
+      .def_readonly("refined", &optim::Screened::refined);
   py::class_<optim::BestDesign>(m, "BestDesign", "The design a study recommends.")
       .def_readonly("index", &optim::BestDesign::index, "in StudyOutcome.results (a model study: model.results)")
       .def_readonly("layout", &optim::BestDesign::layout)
@@ -185,10 +196,14 @@ void bind_study_run(py::module_& m) {
       .def_readonly("seconds", &optim::StudyOutcome::seconds, "wall time of the default and the searches, s")
       .def_readonly("rank_agreement", &optim::StudyOutcome::rank_agreement,
                     "multi-fidelity layouts: all: Spearman's ρ of the coarse and this study's ranking of the refined networks")
+      .def_readonly("coarse_rank_agreement", &optim::StudyOutcome::coarse_rank_agreement,
+                    "with a screen: Spearman's ρ of the coarse search's own order of the refined networks and this study's")
+      .def_readonly("screened", &optim::StudyOutcome::screened, "refine: {screen: N}: by their cost here, best first")
       .def_readonly("stock_best", &optim::StudyOutcome::stock_best,
                     "the recommendation is the stock suspension (a commissioned study: nothing ranked ahead of it)")
       .def("recheck_csv", &optim::StudyOutcome::recheck_csv)
-      .def("refined_csv", &optim::StudyOutcome::refined_csv);
+      .def("refined_csv", &optim::StudyOutcome::refined_csv)
+      .def("screened_csv", &optim::StudyOutcome::screened_csv);
   m.def("run_study", [](const py::object& study, const py::object& options, const py::object& progress,
                         optim::StudyExecutor* executor) {
     // Arguments checked by name (issue 52): not "Unable to cast" or an error from inside the study.
@@ -219,7 +234,7 @@ void bind_study_run(py::module_& m) {
   }, py::arg("study"), py::arg("options") = py::none(), py::kw_only(), py::arg("progress") = py::none(),
         py::arg("executor") = nullptr,
         "A whole study in one call (optim::run_study): a Study or a ModelStudy. progress(event, *values): "
-        "('searching', i, start, evaluations, best), ('searched', i, result), ('network', done, total, best J), ('refining', [entry]), ('refined', k, result), "
+        "('searching', i, start, evaluations, best), ('searched', i, result), ('network', done, total, best J), ('screening', [entry]), ('refining', [entry]), ('refined', k, result), "
         "('searches_done', outcome), ('bound', AdmittanceBound), ('report', step, steps, what, done, total). "
         "executor: a StudyExecutor (default: this process). inerta.optimise is the convenient form.");
   m.def("write_study_outcome", [](const optim::StudyOutcome& o, const std::string& dir) {

@@ -231,7 +231,7 @@ const std::vector<std::string>& study_output_names() {
       "results.csv",   "results.json",   "sigma.csv",  "sigma.png",  "frf.csv",        "frf.png",
       "contact.csv",   "contact.png",    "map.csv",    "map.png",    "j2_map.csv",     "j2_map.png",
       "centripetal.csv", "centripetal.png", "report.json", "structure.csv", "structure.json", "pareto.csv",
-      "pareto.png",    "admittance.csv", "admittance.json", "recheck.csv", "refined.csv", "acceptance_margins.csv", "acceptance.png",
+      "pareto.png",    "admittance.csv", "admittance.json", "recheck.csv", "refined.csv", "screened.csv", "acceptance_margins.csv", "acceptance.png",
       "checkpoint.pkl", "report.html"};
   return names;
 }

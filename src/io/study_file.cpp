@@ -103,6 +103,10 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
       if (!s.all) yaml_fail(path, it->first, k, "refines the best networks of layouts: all; this study names its layouts");
       s.refine_networks = static_cast<int>(yaml_integer(path, v, k, 1, 1000));
     }
+    else if (k == "screen" && refine) {
+      if (!s.all) yaml_fail(path, it->first, k, "screens the best networks of layouts: all; this study names its layouts");
+      s.refine_screen = static_cast<int>(yaml_integer(path, v, k, 1, 1000));
+    }
     else if (k == "initial_step" && refine)
       o.initial_step = yaml_number_in(path, v, k, 1e-9, 10, "a mesh size from 1e-9 to 10 (decades)");
     else if (k == "min_step")
@@ -112,10 +116,14 @@ void read_search(const std::string& path, const YAML::Node& se, optim::Study& s,
     else
       yaml_fail(path, it->first, k,
                 refine ? "unknown key in refine; expected optimiser, initial_step, min_step, max_evaluations, worst_speed_first, "
-                         "candidates, best_networks"
+                         "candidates, best_networks, screen"
                        : "unknown key in search; expected starts, seed, lo, hi, min_step, max_evaluations");
   }
   if (!refine && (!(s.lo > 0) || !(s.hi > s.lo))) yaml_fail(path, se, "search", "expected 0 < lo < hi (SI units)");
+  if (refine && s.refine_screen > 0 && s.refine_screen < s.refine_networks)
+    yaml_fail(path, se["screen"], "refine.screen",
+              fmt::format("screens {} networks but refines {} (best_networks): expected screen >= best_networks", s.refine_screen,
+                          s.refine_networks));
   if (o.initial_step < o.min_step) {
     if (refine) yaml_fail(path, se, "refine", "expected min_step <= initial_step (decades)");
     o.initial_step = o.min_step;

@@ -24,6 +24,10 @@ std::vector<std::string> write_study_outcome(const std::string& dir, const optim
     write_text_file(dir + name, study.coarse ? o.refined_csv() : o.recheck_csv());
     files.push_back(dir + name);
   }
+  if (!o.screened.empty()) {
+    write_text_file(dir + "/screened.csv", o.screened_csv());
+    files.push_back(dir + "/screened.csv");
+  }
   if (!o.admittance.empty()) add(write_admittance_results(dir, o.admittance, o.default_cost.J));
   if (study.all)  // a multi-fidelity study's entries are of its coarse study: compared with the default there
     add(write_structure_results(dir, study.name, "J2", "N", study.coarse ? o.coarse_default_cost.J : o.default_cost.J,

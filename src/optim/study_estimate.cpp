@@ -48,6 +48,8 @@ StudyEstimate estimated_study_seconds(const Study& study) {
     const long refined = static_cast<long>(study.all ? std::min<std::size_t>(static_cast<std::size_t>(study.refine_networks), study.layouts.size())
                                                      : study.layouts.size());
     e.refine_evaluations = static_cast<long>(study.refine.max_evaluations) * study.refine_candidates * refined;
+    if (study.all && study.refine_screen > study.refine_networks)  // the screen: one evaluation a network
+      e.refine_evaluations += std::min<long>(study.refine_screen, static_cast<long>(study.layouts.size()));
     e.refine_seconds = evaluation_seconds(study) * static_cast<double>(e.refine_evaluations);
   }
   return e;

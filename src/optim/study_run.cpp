@@ -67,6 +67,17 @@ std::string StudyOutcome::recheck_csv() const {
   return csv;
 }
 
+std::string StudyOutcome::screened_csv() const {
+  std::string csv = "screen_rank,network,reduced,coarse_rank,J_coarse,J,feasible,violation,refined,failure\n";
+  for (std::size_t k = 0; k < screened.size(); ++k) {
+    const Screened& c = screened[k];
+    const StructureEntry& e = entries[c.entry];
+    csv += fmt::format("{},\"{}\",\"{}\",{},{:.10g},{:.10g},{},\"{}\",{},\"{}\"\n", k + 1, e.expression, e.reduced, c.coarse_rank,
+                       e.J, c.cost.J, c.cost.feasible ? 1 : 0, c.cost.violation, c.refined ? 1 : 0, c.failure);
+  }
+  return csv;
+}
+
 std::string StudyOutcome::refined_csv() const {
   // A commissioned study (issue 49): the stock suspension ranked with the refined designs, the objective's
   // σ and F_m, and what commissioning set (a, G(0), the static force and its range).
@@ -74,6 +85,7 @@ std::string StudyOutcome::refined_csv() const {
   std::string csv =
       "rank,network,coarse_network,coarse_rank,J2_coarse,J2_start,J2,vs_default_pct,feasible,violation,binding,"
       "binding_margin,evaluations,budget_exhausted,values";
+  if (!screened.empty()) csv += ",screen_rank";
   csv += commissioned ? ",design,objective,sigma_N,mean_N,a,static_stiffness,static_force,static_force_min,static_force_max\n" : "\n";
   for (std::size_t k = 0; k < results.size() && k < refinements.size(); ++k) {
     const LayoutResult& r = results[k];
@@ -86,6 +98,7 @@ std::string StudyOutcome::refined_csv() const {
                        stock ? r.cost.J : r.coarse_here.J, r.cost.J, 100 * (r.cost.J - default_cost.J) / default_cost.J,
                        r.cost.feasible ? 1 : 0, r.cost.violation, r.cost.binding, r.cost.binding_margin, r.evaluations,
                        r.budget_exhausted ? 1 : 0, values);
+    if (!screened.empty()) csv += fmt::format(",{}", refinements[k].screen_rank);
     if (commissioned) {
       const analysis::Commissioning c = r.cost.commissioning.value_or(analysis::Commissioning{});
       csv += fmt::format(",{},{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g}\n", stock ? "default" : "refined",
@@ -149,14 +162,14 @@ std::vector<double> ranks(const std::vector<double>& x) {
   return r;
 }
 
-// Spearman's ρ of the coarse stage's ranking (the refinement order: 1 … n) and this study's (by the
-// refined costs, penalised) over the refined networks.
-double spearman(const std::vector<LayoutResult>& refined) {
+// Spearman's ρ of two orders of the refined networks: `chosen[k]` (a rank: the order they were chosen in,
+// or the coarse search's) and this study's (by the refined costs, penalised).
+double spearman(const std::vector<LayoutResult>& refined, const std::vector<double>& chosen) {
   const std::size_t n = refined.size();
   if (n < 2) return NAN;
-  std::vector<double> coarse(n), fine(n);
-  for (std::size_t k = 0; k < n; ++k) coarse[k] = static_cast<double>(k), fine[k] = refined[k].cost.penalised();
-  const std::vector<double> a = ranks(coarse), b = ranks(fine);
+  std::vector<double> fine(n);
+  for (std::size_t k = 0; k < n; ++k) fine[k] = refined[k].cost.penalised();
+  const std::vector<double> a = ranks(chosen), b = ranks(fine);
   const double mean = 0.5 * static_cast<double>(n + 1);
   double sab = 0, saa = 0, sbb = 0;
   for (std::size_t k = 0; k < n; ++k) sab += (a[k] - mean) * (b[k] - mean), saa += (a[k] - mean) * (a[k] - mean), sbb += (b[k] - mean) * (b[k] - mean);
@@ -182,20 +195,59 @@ LayoutResult stock_result(const network::Network& baseline, const StudyCost& cos
 // search (feasible first, by the coarse ranking), each refined here from its coarse optimum; ranked by the
 // cost here (penalised: within the limits first), ties by the coarse rank. Sets o.refinements.
 std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, StudyExecutor& ex, StudyEvents& events) {
+  // The candidates: the best distinct reduced networks of the coarse search (screen of them, or
+  // refine_networks without a screen), each at its coarse optimum.
+  struct Candidate {
+    std::size_t entry;
+    std::string layout;
+    network::Params values;
+  };
+  const bool screen = study.refine_screen > study.refine_networks;
+  const std::size_t wanted = static_cast<std::size_t>(screen ? study.refine_screen : study.refine_networks);
   std::vector<std::string> seen;
-  std::vector<SearchTask> tasks;
-  std::vector<Refinement> from;
+  std::vector<Candidate> cands;
   for (std::size_t i : o.order) {
-    if (static_cast<int>(tasks.size()) == study.refine_networks) break;
+    if (cands.size() == wanted) break;
     const StructureEntry& e = o.entries[i];
     if (!std::isfinite(e.J)) continue;
     const auto design = reduced_design(e);
     if (!design || std::find(seen.begin(), seen.end(), e.reduced_structure) != seen.end()) continue;
     seen.push_back(e.reduced_structure);
+    cands.push_back({i, design->first, design->second});
+  }
+  // The screen: each candidate evaluated here at its coarse optimum; the best refine_networks by that
+  // cost (penalised: within the limits first; ties by the coarse rank) are refined, in that order.
+  std::vector<std::size_t> pick(cands.size());
+  for (std::size_t k = 0; k < pick.size(); ++k) pick[k] = k;
+  std::vector<int> screen_rank(cands.size(), 0);
+  if (screen && cands.size() > static_cast<std::size_t>(study.refine_networks)) {
+    std::vector<std::size_t> entries;
+    std::vector<CheckTask> checks;
+    for (const Candidate& c : cands) entries.push_back(c.entry), checks.push_back({c.layout, c.values, false});
+    events.screening(entries);
+    const std::vector<CheckResult> got = ex.check(study, checks);
+    std::stable_sort(pick.begin(), pick.end(), [&](std::size_t a, std::size_t b) {
+      return got[a].cost.penalised() < got[b].cost.penalised();
+    });
+    for (std::size_t r = 0; r < pick.size(); ++r) {
+      const std::size_t k = pick[r];
+      screen_rank[k] = static_cast<int>(r) + 1;
+      Screened sc;
+      sc.entry = cands[k].entry, sc.coarse_rank = static_cast<int>(k) + 1, sc.cost = got[k].cost, sc.failure = got[k].failure;
+      sc.refined = r < static_cast<std::size_t>(study.refine_networks);
+      o.screened.push_back(std::move(sc));
+    }
+    pick.resize(static_cast<std::size_t>(study.refine_networks));
+  }
+  std::vector<SearchTask> tasks;
+  std::vector<Refinement> from;
+  for (std::size_t k : pick) {
     SearchTask t;
-    t.layout = design->first, t.warm = {design->second}, t.refine = true;
+    t.layout = cands[k].layout, t.warm = {cands[k].values}, t.refine = true;
     tasks.push_back(std::move(t));
-    from.push_back({i, static_cast<int>(from.size()) + 1});
+    Refinement f;
+    f.entry = cands[k].entry, f.coarse_rank = static_cast<int>(k) + 1, f.screen_rank = screen_rank[k];
+    from.push_back(f);
   }
   std::vector<std::size_t> entries;
   for (const auto& f : from) entries.push_back(f.entry);
@@ -207,7 +259,12 @@ std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, S
     LayoutResult& r = refined[k];
     r.coarse_cost.J = e.J, r.coarse_cost.feasible = e.feasible, r.coarse_evaluations = e.evaluations;
   }
-  o.rank_agreement = spearman(refined);
+  {  // the order they were chosen in (the screen's, else the coarse search's) and the coarse search's own
+    std::vector<double> chosen(refined.size()), coarse(refined.size());
+    for (std::size_t k = 0; k < refined.size(); ++k) chosen[k] = static_cast<double>(k), coarse[k] = from[k].coarse_rank;
+    o.rank_agreement = spearman(refined, chosen);
+    o.coarse_rank_agreement = spearman(refined, coarse);
+  }
   // A commissioned study: the stock suspension competes in the final ranking (issue 49), commissioned and
   // judged as every refined design; ahead of a design it ties with.
   if (study.commissioned()) refined.push_back(stock_result(o.baseline, o.default_cost)), from.push_back({Refinement::kStock, 0});

@@ -126,6 +126,70 @@ TEST(StudyFeAll, TheRefinedRankingEqualsABruteForceEvaluationOfTheSameCandidates
   EXPECT_NE(csv.find("1,\"" + brute.front().expression + "\""), std::string::npos);
 }
 
+TEST(StudyFeAll, TheScreenRefinesTheBestOfTheCoarseCandidatesByTheFineStage) {
+  // The best four distinct reduced networks of the coarse search, each evaluated on the FE line at its
+  // coarse optimum; the best two by that refined (issue 49: the fine stage chooses what it refines).
+  std::string text = kAll;
+  const std::string old_refine = "refine: {best_networks: 3, initial_step: 0.3, min_step: 0.1, max_evaluations: 5}\n";
+  text.replace(text.find(old_refine), old_refine.size(),
+               "refine: {best_networks: 2, screen: 4, initial_step: 0.3, min_step: 0.1, max_evaluations: 2}\n");
+  const optim::Study s = io::load_study(write_study("fe_screen.yaml", text));
+  ASSERT_EQ(s.refine_screen, 4);
+  const optim::StudyOutcome o = optim::run_study(s);
+  // The candidates, as the coarse search ranks them; each evaluated here by hand.
+  std::vector<std::string> structures;
+  std::vector<std::pair<std::size_t, std::pair<std::string, network::Params>>> candidates;
+  for (std::size_t i : o.order) {
+    if (candidates.size() == 4) break;
+    const auto d = optim::reduced_design(o.entries[i]);
+    if (!std::isfinite(o.entries[i].J) || !d ||
+        std::find(structures.begin(), structures.end(), o.entries[i].reduced_structure) != structures.end())
+      continue;
+    structures.push_back(o.entries[i].reduced_structure);
+    candidates.push_back({i, *d});
+  }
+  ASSERT_EQ(candidates.size(), 4u);
+  ASSERT_EQ(o.screened.size(), 4u);
+  for (std::size_t k = 0; k < o.screened.size(); ++k) {
+    const optim::Screened& c = o.screened[k];
+    ASSERT_GE(c.coarse_rank, 1);
+    const auto& [entry, design] = candidates[static_cast<std::size_t>(c.coarse_rank - 1)];
+    EXPECT_EQ(c.entry, entry);
+    const optim::StudyCost here = optim::evaluate(s, optim::design_network(design.first, design.second));
+    EXPECT_EQ(c.cost.J, here.J) << design.first;  // the same design on the same line: bit for bit
+    EXPECT_EQ(c.refined, k < 2);
+    if (k > 0) {
+      EXPECT_LE(o.screened[k - 1].cost.penalised(), c.cost.penalised());  // best first
+    }
+  }
+  // The refined networks are the screen's best two, each refined from the point the screen evaluated.
+  ASSERT_EQ(o.results.size(), 2u);
+  std::vector<std::size_t> refined_entries;
+  for (std::size_t k = 0; k < o.results.size(); ++k) {
+    const optim::Refinement& f = o.refinements[k];
+    refined_entries.push_back(f.entry);
+    ASSERT_GE(f.screen_rank, 1);
+    ASSERT_LE(f.screen_rank, 2);
+    const optim::Screened& c = o.screened[static_cast<std::size_t>(f.screen_rank - 1)];
+    EXPECT_EQ(c.entry, f.entry);
+    EXPECT_EQ(c.coarse_rank, f.coarse_rank);
+    EXPECT_NEAR(o.results[k].coarse_here.J, c.cost.J, 1e-9 * c.cost.J) << o.results[k].expression;
+  }
+  std::sort(refined_entries.begin(), refined_entries.end());
+  std::vector<std::size_t> best_two{o.screened[0].entry, o.screened[1].entry};
+  std::sort(best_two.begin(), best_two.end());
+  EXPECT_EQ(refined_entries, best_two);
+  // Two networks: Spearman's ρ is ±1 — +1 if the fine stage keeps the order they were chosen in.
+  const bool kept = (o.refinements[0].screen_rank < o.refinements[1].screen_rank) ==
+                    (o.results[0].cost.penalised() <= o.results[1].cost.penalised());
+  EXPECT_EQ(o.rank_agreement, kept ? 1.0 : -1.0);
+  EXPECT_TRUE(o.coarse_rank_agreement == 1.0 || o.coarse_rank_agreement == -1.0);
+  const std::string csv = o.screened_csv();
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+  EXPECT_NE(o.refined_csv().find(",screen_rank\n"), std::string::npos);
+  std::filesystem::remove(inerta::testing::temp_dir() / "fe_screen.yaml");
+}
+
 TEST(StudyFeAll, SeedsTimesTensionsAsAProductAreReproducibleBitForBit) {
   const optim::Study a = io::load_study(write_study("seeds_a.yaml", kProduct));
   ASSERT_EQ(a.catenaries.size(), 4u);  // the first factor varies slowest
@@ -171,6 +235,12 @@ TEST(StudyFeAll, FileErrorsNameFileLineAndKey) {
   EXPECT_NE(e.find("set"), std::string::npos) << e;
   e = error_of("bad_set2.yaml", kHead + "set: pantograph.aerodynamic.a=1\n");
   EXPECT_NE(e.find("bad_set2.yaml:6: 'set'"), std::string::npos) << e;
+  // A screen smaller than what it must choose from.
+  std::string small = kAll;
+  small.replace(small.find("refine: {best_networks: 3,"), 26, "refine: {screen: 2, best_networks: 3,");
+  e = error_of("bad_screen2.yaml", small);
+  EXPECT_NE(e.find("refine.screen"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected screen >= best_networks"), std::string::npos) << e;
   // A product factor that is not a list of override lists; a map other than {product: ...}.
   e = error_of("bad_product.yaml", kHead + "catenaries:\n  product:\n    - [irregularity.seed=1]\n");
   EXPECT_NE(e.find("bad_product.yaml:8"), std::string::npos) << e;

@@ -69,6 +69,11 @@ struct Study {
   /// coarse study only, then the K best distinct reduced networks (feasible first) are refined here
   /// (docs/studies.md "Every network on the finite-element line").
   int refine_networks = 5;
+  /// `layouts: all` with a coarse study, `refine: {screen: N}` (N ≥ best_networks; 0: none): the N best
+  /// distinct reduced networks of the coarse search are first evaluated here at their coarse optimum (one
+  /// evaluation each, in parallel), and the refine_networks best of them by that cost are refined — the
+  /// fine stage chooses what it refines, where the coarse line cannot tell near-ties apart (issue 49).
+  int refine_screen = 0;
   /// Multi-fidelity, `refine: {optimiser: bobyqa | cobyla | pattern}`: the refinement's optimiser — the
   /// pattern search, or NLopt's BOBYQA (the limits as an exact penalty) or COBYLA (the limits as a
   /// constraint) on the same log-scaled variables (numerics/model_search.hpp, docs/studies.md).

@@ -92,6 +92,8 @@ class StudyEvents {
   virtual void searched(std::size_t /*index*/, const ModelLayoutResult&) {}
   /// `layouts: all`: after each network.
   virtual void network(const StructureProgress&) {}
+  /// Multi-fidelity `layouts: all` with a screen: before it, the coarse entries screened (their indices).
+  virtual void screening(const std::vector<std::size_t>& /*entries*/) {}
   /// Multi-fidelity `layouts: all`: before the refinements, the coarse entries refined (their indices).
   virtual void refining(const std::vector<std::size_t>& /*entries*/) {}
   /// Multi-fidelity `layouts: all`: after the refinement of the k-th network refined (in `refining`'s order).
@@ -124,8 +126,18 @@ struct Recheck {
 /// Multi-fidelity `layouts: all`: where a refined network came from.
 struct Refinement {
   std::size_t entry = 0;  ///< index in StudyOutcome::entries (the coarse search's); kStock: the stock suspension
-  int coarse_rank = 0;    ///< its rank among the refined by the coarse search (1: best); 0 for the stock one
+  int coarse_rank = 0;    ///< its rank among the refined (with a screen: the screened) by the coarse search (1: best); 0 for the stock one
+  int screen_rank = 0;    ///< with a screen: its rank by the screen's cost (1: best); else 0
   static constexpr std::size_t kStock = static_cast<std::size_t>(-1);
+};
+
+/// Multi-fidelity `layouts: all` with `refine: {screen: N}`: a network evaluated here at its coarse optimum.
+struct Screened {
+  std::size_t entry = 0;  ///< index in StudyOutcome::entries
+  int coarse_rank = 0;    ///< its rank among the screened by the coarse search (1: best)
+  StudyCost cost;         ///< here, at its coarse optimum (J = ∞ if the evaluation failed)
+  std::string failure;    ///< why the evaluation failed, or ""
+  bool refined = false;   ///< among the best_networks best by `cost`: refined
 };
 
 /// The design a study recommends.
@@ -162,6 +174,10 @@ struct StudyOutcome {
   /// Multi-fidelity `layouts: all`: Spearman's rank correlation of the coarse stage's ranking and this
   /// study's over the refined networks (1: the same order; NaN: fewer than two).
   double rank_agreement = NAN;
+  /// With a screen: the same for the coarse search's own order of the refined networks (rank_agreement is
+  /// then the screen's, the order they were chosen in); without one, equal to rank_agreement.
+  double coarse_rank_agreement = NAN;
+  std::vector<Screened> screened;  ///< `refine: {screen: N}`: by their cost here, best first
   /// The recommendation is the stock suspension: no design ranked ahead of it (a commissioned study).
   bool stock_best = false;
   std::vector<Recheck> rechecks;        ///< `layouts: all`: ranked by the time-domain J2
@@ -171,6 +187,8 @@ struct StudyOutcome {
   StudyCost time_check;                 ///< the best design's J2 in the time domain (a time study: its cost)
   BestDesign best;
   double seconds = 0;                   ///< wall time of the default's evaluation and the searches
+  /// The screen as CSV (screened.csv): rank, network, coarse rank and J, J here, feasible, refined.
+  std::string screened_csv() const;
   /// The re-checks as CSV (recheck.csv): network, reduced, J2 periodic and time, speed, rank, settling.
   std::string recheck_csv() const;
   /// Multi-fidelity `layouts: all` (refined.csv): rank, network refined, its coarse J and rank, its J here
