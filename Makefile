@@ -1,5 +1,6 @@
 # The README's two commands: `make demo` and `make test`. `make demo FULL=1`: the complete study 2.
-# `make install`: the Python module `inerta` into /usr/bin/python3's site-packages (docs/python.md).
+# `make install`: the program, the Python module `inerta` (into /usr/bin/python3's site-packages) and their data
+# under /usr/local (docs/install.md).
 # `make fuzz FUZZ_SECONDS=60`: the fuzz targets with clang's libFuzzer; `make sanitize`: the test
 # suite built with clang's ASan + UBSan (docs/fuzzing.md). Both in their own build directories.
 BUILD ?= build
@@ -37,7 +38,8 @@ demo: cli
 python: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target inerta_python
 
-install: python
+install: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target inerta inerta_python
 	@cmake --install $(BUILD) --component python
 
 bench: configure

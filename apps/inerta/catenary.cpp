@@ -31,6 +31,7 @@
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/cost_guard.hpp"
 #include "inerta/analysis/frf.hpp"
+#include "inerta/io/data_dir.hpp"
 #include "inerta/io/model_study_file.hpp"
 #include "inerta/analysis/periodic.hpp"
 #include "inerta/analysis/modal.hpp"
@@ -119,7 +120,7 @@ int cmd_catenary_fit(const FitArgs& a) {
 }
 
 struct CheckReductionArgs {
-  std::string model = INERTA_SOURCE_DIR "/models/pantograph-3mass.yaml", speeds;
+  std::string model, speeds;  ///< model: default the bundled 3-mass (io::data_dir())
   CatenaryArgs cat;
   double tolerance = 1.0;
   std::string acceptance;
@@ -131,6 +132,7 @@ struct CheckReductionArgs {
 // the same runs on both, the EN 50317 statistics side by side; exit 1 if σ (raw or 20 Hz) differs by
 // more than --tolerance %.
 int cmd_check_reduction(CheckReductionArgs a) {
+  if (a.model.empty()) a.model = (io::data_dir() / "models" / "pantograph-3mass.yaml").string();
   std::vector<double> v;
   if (a.speeds.find(':') == std::string::npos) a.speeds += ":1:" + a.speeds;  // one speed
   for (double s : frequency_range(a.speeds, "--speeds")) {

@@ -8,6 +8,7 @@
 #include "acceptance.hpp"
 #include "commands.hpp"
 #include "identify.hpp"
+#include "install.hpp"
 #include "linear.hpp"
 #include "networks.hpp"
 #include "report.hpp"
@@ -18,6 +19,7 @@
 using namespace inerta;
 
 int main(int argc, char** argv) {
+  cli::find_installed_data();               // an installed copy reads its own criteria, models, scripts
   io::remove_partial_outputs_on_signal();  // Ctrl-C leaves no half-written file (io/files.hpp)
   io::protect_inputs();                     // no output replaces a file the command read
   report::record_inputs();                  // each input's SHA-256 for a report's provenance

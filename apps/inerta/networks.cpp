@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 
+#include "inerta/io/data_dir.hpp"
 #include "inerta/io/json.hpp"
 #include "inerta/io/structure_results.hpp"
 #include "inerta/io/files.hpp"
@@ -182,7 +183,7 @@ void print_structure(const std::vector<optim::StructureEntry>& entries, double d
 }
 
 bool run_script(const std::string& name, const std::string& dir) {
-  const std::filesystem::path script = std::filesystem::path(INERTA_SOURCE_DIR) / "scripts" / name;
+  const std::filesystem::path script = io::data_dir() / "scripts" / name;
   if (!std::filesystem::exists(script)) return false;
   auto q = [](const std::string& x) {
     std::string r = "'";
@@ -190,7 +191,8 @@ bool run_script(const std::string& name, const std::string& dir) {
     return r + "'";
   };
   std::fflush(stdout);
-  return std::system((q(script.string()) + " " + q(dir)).c_str()) == 0;
+  // With Debian's interpreter by name (another python3 first on PATH may lack matplotlib), not the shebang's.
+  return std::system((q(INERTA_PYTHON) + " " + q(script.string()) + " " + q(dir)).c_str()) == 0;
 }
 
 std::function<void(const optim::AdmittanceBound&)> print_admittance_bound(double default_J, const std::string& unit) {

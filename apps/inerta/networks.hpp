@@ -22,7 +22,8 @@ optim::StructureProgressFn structure_progress(const std::string& unit);
 void print_structure(const std::vector<optim::StructureEntry>& entries, double default_J, const std::string& unit,
                      std::size_t rows = 25);
 
-/// Runs scripts/NAME DIR of the source tree (a plotting script); false if it is missing or fails.
+/// Runs scripts/NAME DIR of the data folder (io::data_dir(): a plotting script) with Debian's python3; false if
+/// it is missing or fails.
 bool run_script(const std::string& name, const std::string& dir);
 
 /// Prints one degree's admittance bound (optim::admittance_bounds' `done`): the bound, the gap of the

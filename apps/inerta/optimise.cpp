@@ -4,6 +4,8 @@
 #include "common.hpp"
 #include "linear.hpp"
 #include "networks.hpp"
+#include "inerta/io/data_dir.hpp"
+#include "install.hpp"
 #include "inerta/io/study_outcome.hpp"
 #include "inerta/optim/study_run.hpp"
 
@@ -93,9 +95,9 @@ int run_distributed(const OptimiseArgs& a) {
   if (a.force) args.push_back("--force");
   if (a.no_plots) args.push_back("--no-plots");
   const char* old = std::getenv("PYTHONPATH");
-  const std::string path = std::string(INERTA_PYTHON_DIR) + (old && *old ? std::string(":") + old : std::string());
+  const std::string path = inerta::cli::python_package_dir() + (old && *old ? std::string(":") + old : std::string());
   ::setenv("PYTHONPATH", path.c_str(), 1);
-  ::setenv("INERTA_SOURCE_DIR", INERTA_SOURCE_DIR, 0);
+  ::setenv("INERTA_DATA_DIR", io::data_dir().c_str(), 0);  // the driver's module reads this program's data
   std::vector<char*> argv;
   for (auto& s : args) argv.push_back(s.data());
   argv.push_back(nullptr);
@@ -157,9 +159,9 @@ class Printer : public optim::StudyEvents {
     std::fflush(stdout);
   }
   void refining(const std::vector<std::size_t>& entries) override {
-    fmt::print("\nrefining the best {} distinct reduced networks of the coarse search on this study ({} catenaries × {} "
+    fmt::print("\nrefining the best {} distinct reduced networks of the {} on this study ({} catenaries × {} "
                "speeds, {}; at most {} evaluations each):\n",
-               entries.size(), study_.catenaries.size(), study_.speeds.size(),
+               entries.size(), study_.refine_screen > study_.refine_networks ? "screen" : "coarse search", study_.catenaries.size(), study_.speeds.size(),
                study_.method == optim::Study::Method::Time ? "time domain" : "periodic fast path", study_.refine.max_evaluations);
     std::fflush(stdout);
   }

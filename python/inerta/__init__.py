@@ -15,6 +15,22 @@ from . import _inerta
 __version__ = "0.1.0"
 
 
+def _find_installed_data():
+    """An installed package (PREFIX/<site>/inerta, docs/install.md) reads PREFIX/share/inerta's criteria presets,
+    models and scripts, not the checkout it was built from."""
+    import os
+
+    here = os.path.dirname(os.path.abspath(__file__))
+    prefix = here
+    for _ in range(len([p for p in _inerta._PYTHON_SITE.split("/") if p]) + 1):
+        prefix = os.path.dirname(prefix)
+    if os.path.normpath(os.path.join(prefix, _inerta._PYTHON_SITE, "inerta")) == here:
+        _inerta._set_data_dir(os.path.join(prefix, _inerta._DATA_DIR))
+
+
+_find_installed_data()
+
+
 def kmh(v):
     """Speeds in km/h → m/s (v / 3.6, as the CLI's ``--unit kmh``); a number or an array."""
     import numpy as np

@@ -367,13 +367,13 @@ def _main(argv=None):
             cluster.close()
     if args.out:
         print(f"wrote the study's files in {args.out} (as `inerta optimise --out`)")
-        scripts = os.path.join(os.environ.get("INERTA_SOURCE_DIR", ""), "scripts")
+        scripts = os.path.join(_inerta.data_dir(), "scripts")
         if not args.no_plots:
             import subprocess
 
             for name in (["plot-structure"] if study.all_networks else []) + ["plot-study"]:
                 script = os.path.join(scripts, name)
-                if not (os.path.exists(script) and subprocess.run([script, args.out]).returncode == 0):
+                if not (os.path.exists(script) and subprocess.run([sys.executable, script, args.out]).returncode == 0):
                     print(f"note: no plots (scripts/{name} not found or failed); the CSV files in {args.out} are complete")
     best = o.results[o.best.index]
     stock = "the stock suspension " if o.stock_best else ""

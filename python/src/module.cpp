@@ -1,6 +1,7 @@
 // The extension module inerta._inerta (docs/python.md); python/inerta/__init__.py re-exports it.
 #include <cstring>
 
+#include "inerta/io/data_dir.hpp"
 #include "common.hpp"
 #include "inerta/error.hpp"
 #include "inerta/network/network.hpp"
@@ -89,4 +90,11 @@ PYBIND11_MODULE(_inerta, m) {
   bind_study_run(m);
   bind_identification(m);
   bind_report(m);
+  // Where the criteria presets, default models and plotting scripts are read (io/data_dir.hpp, docs/install.md).
+  m.def("data_dir", [] { return inerta::io::data_dir().string(); },
+        "The folder the criteria presets (criteria/), default models (models/) and plotting scripts are read from: "
+        "$INERTA_DATA_DIR, else an installed copy's share/inerta, else the source tree the module was built from.");
+  m.def("_set_data_dir", [](const std::string& d) { return inerta::io::set_data_dir(d); });
+  m.attr("_PYTHON_SITE") = INERTA_PYTHON_REL_DIR;
+  m.attr("_DATA_DIR") = INERTA_DATA_REL_DIR;
 }

@@ -288,7 +288,7 @@ coarse:
   catenaries: [[catenary.mc1=0, catenary.mc2=0, catenary.mc3=0]]
   speeds: {{from: 150, to: 250, step: 50, unit: kmh}}
   search: {{starts: 1, seed: 1, min_step: 0.1}}
-refine: {{best_networks: 2, initial_step: 0.3, min_step: 0.1, max_evaluations: 4}}
+refine: {{best_networks: 2, screen: 3, initial_step: 0.3, min_step: 0.1, max_evaluations: 4}}
 """
 
 
@@ -304,3 +304,8 @@ def test_every_network_on_the_fe_line_is_the_same_on_dask(client, tmp_path):
     assert stats["searches_sent"] == len(local.entries)  # a task per network of the coarse search
     assert stats["designs_sent"] > 0                     # the refinements' designs went to the workers
     assert local.refined_csv() == dask.refined_csv()
+    # The screen (issue 49): its evaluations are checks sent to the workers, its ranking the same.
+    assert len(local.screened) == 3 and sum(c.refined for c in local.screened) == 2
+    assert local.screened_csv() == dask.screened_csv()
+    assert stats["checks_sent"] >= 1 + 3
+    assert local.coarse_rank_agreement == dask.coarse_rank_agreement

@@ -1,5 +1,6 @@
 // Acceptance-criteria files: the YAML form of analysis::AcceptanceCriteria (docs/contact-quality.md
 // "Acceptance"). Every field of a criterion given is required: a set says what it checks.
+#include "inerta/io/data_dir.hpp"
 #include "inerta/io/acceptance_file.hpp"
 
 #include <fmt/format.h>
@@ -25,7 +26,7 @@ using analysis::Statistics;
 // Band edges are checked up to this speed when a range is open above (km/h).
 constexpr double kBandCheckTo = 1000;
 
-std::string preset_dir() { return INERTA_CRITERIA_DIR; }
+std::string preset_dir() { return (data_dir() / "criteria").string(); }
 
 bool is_preset_name(const std::string& s) {
   if (s.empty() || s.ends_with(".yaml") || s.ends_with(".yml") || s.front() == '.') return false;
