@@ -315,7 +315,8 @@ def _main(argv=None):
                 print(f"\n  screening the best {len(values[0])} distinct reduced networks of the coarse search on this study "
                       f"(each at its coarse optimum); the best {study.refine_networks} by that are refined", flush=True)
             elif event == "refining":
-                print(f"\n  refining the best {len(values[0])} distinct reduced networks of the coarse search on this study:",
+                stage = "screen" if study.refine_screen > study.refine_networks else "coarse search"
+                print(f"\n  refining the best {len(values[0])} distinct reduced networks of the {stage} on this study:",
                       flush=True)
             elif event == "refined":
                 k, r = values

@@ -83,6 +83,8 @@ BOUND = {
     "optim::StudyOptions": "StudyOptions",
     "optim::Recheck": "Recheck",
     "optim::Refinement": "Refinement",
+    "optim::Screened": "Screened",
+    "io::data_dir": "data_dir",
     "optim::reduced_design": "reduced_design",
     "optim::refine_layout": "refine_layout",
     "optim::BestDesign": "BestDesign",
@@ -373,6 +375,8 @@ _KINEMATICS = ("inline kinematics of one body, point, strut or joint inside the 
 _ACCEPTANCE = "the verdict's parts; Python gets the whole table from inerta.acceptance (a NumPy structured array)"
 
 EXCLUDED = {
+    "io::set_data_dir": "the module sets it itself from where it is installed (inerta/__init__.py, docs/install.md)",
+    "io::source_tree": "the build's source tree, data_dir's last resort; inerta.data_dir() says which folder is used",
     "report::Document": "the HTML writer behind the CLI's --report (docs/cli.md \"Reports\"); Python reads reports (read_report)",
     "report::Table": "a part of report::Document (the CLI's --report)",
     "report::escape": "a part of report::Document (the CLI's --report)",

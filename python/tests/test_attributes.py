@@ -151,14 +151,15 @@ search: {{starts: 1, seed: 1, min_step: 0.05}}
     out += [so, so.best, sa, sa.rechecks[0], inerta.StudyOptions(), inerta.LocalExecutor(), inerta.SearchTask("k"),
             inerta.CheckTask("k", {"k": 1e5}), inerta.run_check(st, inerta.CheckTask()),
             inerta.run_search(st, inerta.SearchTask("S2-5")), inerta.run_study(inerta.load_model_study(bound_study))]
-    # Every network on a short FE line with the acceptance set as limits (issue 37): Refinement, MarginRow.
+    # Every network on a short FE line with the acceptance set as limits (issue 37): Refinement, MarginRow; its
+    # screen (issue 49): Screened.
     fe_all = tmp_path_factory.mktemp("feall") / "fe-all.yaml"
     fe_all.write_text(FE_ALL.format(hsx=model("hsx.yaml"), fe=model("catenary-fe.yaml"),
                                     lumped=model("catenary-fe-lumped.yaml")))
     ro = inerta.ReportOptions()
     ro.map_size = 0
     fa = inerta.run_study(inerta.load_study(fe_all), inerta.StudyOptions(report=True, report_options=ro))
-    out += [fa, fa.refinements[0], fa.report.margins[0]]
+    out += [fa, fa.refinements[0], fa.report.margins[0], fa.screened[0]]
     # The verdict line and a study's estimate (issue 52).
     m3 = inerta.load_model(model("pantograph-3mass.yaml"))
     out += [inerta.verdict(inerta.sweep(m3, inerta.load_catenary(model("wire-profile.yaml")), [80.0]), "en50367-ac"),
@@ -187,7 +188,7 @@ coarse:
   catenaries: [[catenary.mc1=0, catenary.mc2=0, catenary.mc3=0]]
   speeds: {{from: 150, to: 250, step: 50, unit: kmh}}
   search: {{starts: 1, seed: 1, min_step: 0.3}}
-refine: {{best_networks: 1, initial_step: 0.3, min_step: 0.2, max_evaluations: 2}}
+refine: {{best_networks: 1, screen: 2, initial_step: 0.3, min_step: 0.2, max_evaluations: 2}}
 """
 
 
