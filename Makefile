@@ -59,10 +59,11 @@ clang-deps:
 	@scripts/install-deps --clang
 
 # Everything instrumented for coverage (fuzzer-no-link) and ASan + UBSan, assertions on; only the
-# fuzz targets (and the libraries they link) are built.
+# fuzz targets (and the libraries they link) are built. Line tables only: a finding's stack still names file
+# and line, and the build is ≈ 15–30 % faster than with -g (docs/fuzzing.md).
 fuzz-build: clang-deps
 	@cmake -S . -B $(FUZZ_BUILD) $(call generator,$(FUZZ_BUILD)) -DCMAKE_CXX_COMPILER=$(CLANGXX) -DINERTA_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $(SANITIZERS)" \
+	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link $(SANITIZERS)" \
 	  -DCMAKE_EXE_LINKER_FLAGS="$(SANITIZERS)" > /dev/null
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target inerta_fuzz
 
