@@ -155,7 +155,10 @@ void cost_guard(double seconds, double bytes, const py::object& max_seconds, con
 
 }  // namespace
 
-void bind_analysis(py::module_& m) {
+namespace {
+
+// Options and statistics of a run.
+void bind_options_statistics(py::module_& m) {
   // ---- Options and statistics ------------------------------------------------------------------------
   py::class_<solve::IntegratorOptions>(m, "IntegratorOptions",
                                        "Time integration (SUNDIALS): method 'rk' (ARKODE Dormand–Prince 5(4), the "
@@ -248,6 +251,10 @@ void bind_analysis(py::module_& m) {
         return fmt::format("OutputSummary('{}', min={:.6g}, max={:.6g}, mean={:.6g})", s.name, s.min, s.max, s.mean);
       });
 
+}
+
+// Time histories (simulate).
+void bind_time_histories(py::module_& m) {
   // ---- Time histories ---------------------------------------------------------------------------------
   py::class_<History>(m, "Result",
                       "Sampled outputs of a run: r['C_y'] (or r['t']) is a read-only NumPy view of the library's "
@@ -338,6 +345,10 @@ void bind_analysis(py::module_& m) {
         "(s). steady_from >= 0: Result.steady summarises t >= steady_from. progress(t, t_end) is called on this "
         "thread; Ctrl-C stops the run (KeyboardInterrupt). NumericalError with the time on failure.");
 
+}
+
+// A pantograph under a catenary.
+void bind_under_catenary(py::module_& m) {
   // ---- Under a catenary -------------------------------------------------------------------------------
   py::class_<analysis::ContactSummary>(m, "ContactSummary", "Contact force of one pantograph over a coupled run.")
       .def_readonly("stats", &analysis::ContactSummary::stats, "over the window (last window_spans spans)")
@@ -431,6 +442,10 @@ void bind_analysis(py::module_& m) {
         "wave speed is refused unless allow_supercritical (the CLI's --allow-supercritical); above 1000 m/s, or one "
         "whose run would last beyond 1e7 s, always (ModelError).");
 
+}
+
+// The results of a speed sweep.
+void bind_sweep_results(py::module_& m) {
   // ---- Speed sweeps -----------------------------------------------------------------------------------
   py::class_<analysis::SpeedResult>(m, "SpeedResult", "The contact force at one speed.")
       .def_readonly("speed", &analysis::SpeedResult::speed, "m/s")
@@ -532,6 +547,10 @@ void bind_analysis(py::module_& m) {
         return fmt::format("SweepResult({} speeds, {})", s.r.size(), s.method);
       });
 
+}
+
+// Speed sweeps, estimates, comparisons, one speed.
+void bind_sweeps(py::module_& m) {
   m.def("sweep", [](const py::object& model, const py::object& catenary, const py::object& speeds,
                     const py::object& contact, const py::object& positions, const py::object& options,
                     const py::object& method, const py::object& rtol, const py::object& atol,
@@ -634,6 +653,10 @@ void bind_analysis(py::module_& m) {
         "One speed of a sweep (analysis::run_speed on the coupled system): from the static equilibrium, span by span "
         "until σ settles; the SpeedResult keeps the contact-force history t, F of the leading pantograph.");
 
+}
+
+// Modes, linear models and FRFs.
+void bind_modes_frfs(py::module_& m) {
   // ---- Modes and linear models ------------------------------------------------------------------------
   py::class_<mbs::LinearModel>(m, "LinearModel",
                                "Linearisation about a static equilibrium (spec/02 §2.5): q = q_e + N ξ, state "
@@ -751,6 +774,10 @@ void bind_analysis(py::module_& m) {
         py::arg("vc") = py::none(), py::arg("cycles") = py::none(), py::arg("analysed") = py::none(),
         "Stepped-sine FRF by time simulation of the nonlinear model on the rig (frequencies in parallel).");
 
+}
+
+// The catenary alone; acceptance criteria and verdicts.
+void bind_catenary_acceptance(py::module_& m) {
   // ---- Catenary alone ---------------------------------------------------------------------------------
   py::class_<analysis::CatenaryResponse>(m, "CatenaryResponse", "The lumped catenary's steady response at one f_p.")
       .def_readonly("fp", &analysis::CatenaryResponse::fp, "Hz")
@@ -932,6 +959,18 @@ void bind_analysis(py::module_& m) {
   }, py::arg("model"), py::arg("catenary"), py::arg("speed"), py::arg("criteria"), py::kw_only(), py::arg("contact") = py::none(),
         "The a >= 0 of an aerodynamic uplift a v² (b = c = 0) for which the mean contact force at `speed` (m/s) equals "
         "the criteria set's target curve (as `inerta pantograph aero-fit`); reached is False if none does.");
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  bind_options_statistics(m);
+  bind_time_histories(m);
+  bind_under_catenary(m);
+  bind_sweep_results(m);
+  bind_sweeps(m);
+  bind_modes_frfs(m);
+  bind_catenary_acceptance(m);
 }
 
 }  // namespace inerta::python

@@ -234,7 +234,10 @@ network::Network network_arg(const py::object& net, const py::object& params) {
                           params.is_none() ? network::Params{} : params.cast<network::Params>());
 }
 
-void bind_model(py::module_& m) {
+namespace {
+
+// The parts of a model: bodies, markers, joints, outputs, options, state, force elements, reports.
+void bind_model_parts(py::module_& m) {
   using mbs::Body, mbs::Joint, mbs::Marker, mbs::Output, mbs::State;
 
   py::enum_<mbs::JointType>(m, "JointType", "Joint types (constraint equations C(q, t) = 0, docs/model-format.md).")
@@ -403,6 +406,12 @@ void bind_model(py::module_& m) {
       .def_readonly("dof", &mbs::ModelCheck::dof, "degrees of freedom n_coords − rank")
       .def_readonly("redundant", &mbs::ModelCheck::redundant, "redundant constraint equations");
 
+}
+
+// The model handle.
+void bind_model_class(py::module_& m) {
+  using mbs::Body, mbs::Joint, mbs::Marker, mbs::Output, mbs::State;
+
   py::class_<Model>(m, "Model",
                     "An immutable multibody model (mbs::Model) with, for a pantograph, its contact marker and rig "
                     "joint (pantograph::Pantograph). Change parameters with with_overrides (the file is read again) "
@@ -570,6 +579,12 @@ void bind_model(py::module_& m) {
                            h.model().outputs.size(), h.model().dof());
       });
 
+}
+
+// Loading models and pantographs; the stepper; the model check.
+void bind_model_files(py::module_& m) {
+  using mbs::Body, mbs::Joint, mbs::Marker, mbs::Output, mbs::State;
+
   m.def("load_model", [](const py::object& path, const py::object& o) { return load_model_handle(path_arg(path), override_strings(o)); },
         py::arg("path"), py::arg("overrides") = py::none(),
         "Reads a YAML model file (io::load_model_file): the model and, if present, its `pantograph:` section. "
@@ -657,6 +672,12 @@ void bind_model(py::module_& m) {
 
   m.def("check_model", [](const Model& h) { return mbs::check_model(h.model()); }, py::arg("model"),
         "Same as Model.check().");
+
+}
+
+// Functions of one state.
+void bind_state_functions(py::module_& m) {
+  using mbs::Body, mbs::Joint, mbs::Marker, mbs::Output, mbs::State;
 
   // ---- Functions of one state -----------------------------------------------------------------------
   m.def("assemble", [](const Model& h, double t0) {
@@ -768,6 +789,15 @@ void bind_model(py::module_& m) {
         "(pantograph::suspension_index); ModelError if the model has none or more than one.");
   m.def("release_head", [](const Model& h) { return py::cast(h).attr("release_head")(); }, py::arg("model"),
         "Same as Model.release_head: (model, static contact force N).");
+}
+
+}  // namespace
+
+void bind_model(py::module_& m) {
+  bind_model_parts(m);
+  bind_model_class(m);
+  bind_model_files(m);
+  bind_state_functions(m);
 }
 
 }  // namespace inerta::python

@@ -78,7 +78,10 @@ Study make_study(const Model& pantograph, const py::object& catenaries, const py
 
 }  // namespace
 
-void bind_optim(py::module_& m) {
+namespace {
+
+// A study and its limits and bounds.
+void bind_study_file(py::module_& m) {
   py::class_<optim::ContactLimits>(m, "ContactLimits", "Hard limits of a study over every catenary and speed; NaN: none.")
       .def_readonly("mean_min", &optim::ContactLimits::mean_min, "N")
       .def_readonly("mean_max", &optim::ContactLimits::mean_max, "N")
@@ -170,6 +173,10 @@ void bind_optim(py::module_& m) {
     return optim::operating_lengths(s);
   }, py::arg("study"), "Per catenary: the actuator's length at the static equilibrium with its own suspension, m.");
 
+}
+
+// What a design costs; a layout's optimum and refinement.
+void bind_design_costs(py::module_& m) {
   py::class_<optim::StudyCost>(m, "StudyCost", "J2 of a design: max over catenaries of σ_max over the speeds.")
       .def_readonly("J", &optim::StudyCost::J, "N")
       .def_readonly("speed", &optim::StudyCost::speed, "m/s of the worst σ")
@@ -347,6 +354,10 @@ void bind_optim(py::module_& m) {
         "Multi-fidelity: the refinement of a layout on a study with a coarse study, from a coarse LayoutResult "
         "(its values and ends), as optimise_layout does after its coarse search.");
 
+}
+
+// σ and F_m over the speeds; contact histories, cost maps.
+void bind_speed_curves(py::module_& m) {
   py::class_<optim::SpeedCurve>(m, "SpeedCurve", "σ and the mean contact force over the speeds under one catenary.")
       .def_readonly("catenary", &optim::SpeedCurve::catenary)
       .def_property_readonly("speed", [](const optim::SpeedCurve& c) { return copy(c.speed); }, "m/s")
@@ -414,6 +425,10 @@ void bind_optim(py::module_& m) {
         "Index of the best result whose layout has free elements x and y, or −1.");
   m.def("has_inerter", &optim::has_inerter, py::arg("network"), "True if the simplified network has an inerter.");
 
+}
+
+// A study's report data and result files.
+void bind_report_data(py::module_& m) {
   py::class_<optim::Design>(m, "Design", "A suspension design: a label and its bound network.")
       .def_readonly("label", &optim::Design::label)
       .def_readonly("layout", &optim::Design::layout)
@@ -501,6 +516,15 @@ void bind_optim(py::module_& m) {
                                  const std::vector<optim::LayoutResult>& results) {
     return py::module_::import("json").attr("loads")(io::json_text(io::study_results_json(study, def, results)));
   }, py::arg("study"), py::arg("default_cost"), py::arg("results"), "The results.json document as a dict.");
+}
+
+}  // namespace
+
+void bind_optim(py::module_& m) {
+  bind_study_file(m);
+  bind_design_costs(m);
+  bind_speed_curves(m);
+  bind_report_data(m);
 }
 
 }  // namespace inerta::python

@@ -14,7 +14,10 @@
 
 namespace inerta::python {
 
-void bind_structure(py::module_& m) {
+namespace {
+
+// Network enumeration, the positive-real test and synthesis.
+void bind_enumeration_synthesis(py::module_& m) {
   using network::Network;
   // ---- enumeration ----
   py::class_<network::ElementCounts>(m, "ElementCounts", "Elements of each type of a network.")
@@ -88,6 +91,11 @@ void bind_structure(py::module_& m) {
         "A spring/damper/inerter network whose admittance is num/den (Foster removals, dampers, Bott–Duffin steps); "
         "NetworkError if it is not positive real.");
 
+}
+
+// The structure search over every network.
+void bind_structure_search(py::module_& m) {
+  using network::Network;
   // ---- structure search ----
   py::class_<optim::StructureEntry>(m, "StructureEntry", "One network of an exhaustive structure search at its optimum.")
       .def_readonly("expression", &optim::StructureEntry::expression)
@@ -190,6 +198,11 @@ void bind_structure(py::module_& m) {
         "Writes a model study's files in DIR, the same as `inerta optimise STUDY --out DIR` (results.csv, "
         "results.json, frf.csv, map.csv, and structure.csv/json, pareto.csv for layouts: all); returns their paths.");
 
+}
+
+// The positive-real admittance bound.
+void bind_admittance_bound(py::module_& m) {
+  using network::Network;
   // ---- admittance bound ----
   py::class_<optim::AdmittanceResult>(m, "AdmittanceResult", "The best positive-real admittance of a degree, realised.")
       .def_readonly("degree", &optim::AdmittanceResult::degree)
@@ -235,6 +248,14 @@ void bind_structure(py::module_& m) {
     return py::module_::import("json").attr("loads")(io::json_text(io::structure_results_json(study, objective, unit, default_J, e)));
   }, py::arg("study"), py::arg("objective"), py::arg("unit"), py::arg("default_J"), py::arg("entries"),
         "The structure.json document as a dict.");
+}
+
+}  // namespace
+
+void bind_structure(py::module_& m) {
+  bind_enumeration_synthesis(m);
+  bind_structure_search(m);
+  bind_admittance_bound(m);
 }
 
 }  // namespace inerta::python
