@@ -195,7 +195,8 @@ void bind_study_run(py::module_& m) {
       .def_readonly("best", &optim::StudyOutcome::best)
       .def_readonly("seconds", &optim::StudyOutcome::seconds, "wall time of the default and the searches, s")
       .def_readonly("rank_agreement", &optim::StudyOutcome::rank_agreement,
-                    "multi-fidelity layouts: all: Spearman's ρ of the coarse and this study's ranking of the refined networks")
+                    "multi-fidelity layouts: all: Spearman's ρ of the order the refined networks were chosen in (the screen's, "
+                    "else the coarse search's) and this study's ranking of them")
       .def_readonly("coarse_rank_agreement", &optim::StudyOutcome::coarse_rank_agreement,
                     "with a screen: Spearman's ρ of the coarse search's own order of the refined networks and this study's")
       .def_readonly("screened", &optim::StudyOutcome::screened, "refine: {screen: N}: by their cost here, best first")

@@ -171,8 +171,9 @@ struct StudyOutcome {
   std::vector<StructureEntry> entries;
   std::vector<std::size_t> order;        ///< ranking(entries)
   std::vector<Refinement> refinements;  ///< multi-fidelity `layouts: all`: one per result
-  /// Multi-fidelity `layouts: all`: Spearman's rank correlation of the coarse stage's ranking and this
-  /// study's over the refined networks (1: the same order; NaN: fewer than two).
+  /// Multi-fidelity `layouts: all`: Spearman's rank correlation of the order the refined networks were
+  /// chosen in (the screen's with `refine: {screen: N}`, else the coarse search's) and this study's ranking
+  /// of them (1: the same order; NaN: fewer than two).
   double rank_agreement = NAN;
   /// With a screen: the same for the coarse search's own order of the refined networks (rank_agreement is
   /// then the screen's, the order they were chosen in); without one, equal to rank_agreement.
