@@ -2,7 +2,11 @@
 """Whole-process times of the FE line's runs (issue 39; docs/benchmarks.md "The FE line's first and
 stored runs"): a first run on an empty mode store, the same run with its modes stored, the direct solve,
 the HSX at 300 km/h stored and the 21-speed HSX sweep stored, each REPEAT times, side by side for one
-or more builds of the CLI. With --split, the phases of one first and one stored run (INERTA_TIMINGS=1).
+or more builds of the CLI; then (issue 50) the HSX on the calibrated stitched line at 250 km/h, two HSX 200 m
+apart through the overlap line at 250 km/h and one evaluation of the real-line study (studies/hsx-real-line.yaml:
+the stock suspension commissioned, then 27 runs of nine lines — the build's Python module, beside its CLI), each
+with its modes stored (a store of its own, filled once before the timed runs). With --split, the phases of one
+first and one stored run (INERTA_TIMINGS=1).
 
     /usr/bin/python3 bench/fe_runs.py [--cli build/inerta ...] [--repeat 3] [--split]
 
@@ -21,6 +25,24 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 M3 = ["simulate", "models/pantograph-3mass.yaml", "--catenary", "models/catenary-fe.yaml", "--speed", "250", "--unit", "kmh"]
 HSX = ["simulate", "models/hsx.yaml", "--catenary", "models/catenary-fe.yaml", "--speed", "300", "--unit", "kmh"]
 SWEEP = ["sweep", "models/hsx.yaml", "--catenary", "models/catenary-fe.yaml", "--speeds", "150:10:350", "--unit", "kmh"]
+STITCHED = ["simulate", "models/hsx.yaml", "--catenary", "models/catenary-fe-stitched.yaml", "--speed", "250", "--unit", "kmh"]
+OVERLAP2 = ["simulate", "models/hsx.yaml", "--catenary", "models/catenary-fe-overlap.yaml", "--speed", "250", "--unit", "kmh",
+            "--positions", "0,200"]
+# One evaluation of the real-line study: the stock suspension (commissioned, then 27 runs), with the build's module.
+EVALUATE = ("import inerta, sys; s = inerta.load_study(sys.argv[1]); "
+            "c = inerta.evaluate(s, inerta.default_suspension(s)); print(c.J)")
+
+
+def run_python(cli, store):
+    """One real-line evaluation with the Python module beside `cli` (its build's python/ folder)."""
+    env = dict(os.environ, INERTA_CACHE=store, PYTHONPATH=os.path.join(os.path.dirname(cli), "python"))
+    t0 = time.perf_counter()
+    p = subprocess.run(["/usr/bin/python3", "-c", EVALUATE, os.path.join(ROOT, "studies", "hsx-real-line.yaml")], cwd=ROOT,
+                       env=env, capture_output=True, text=True)
+    dt = time.perf_counter() - t0
+    if p.returncode != 0:
+        sys.exit(f"real-line evaluation with {cli}'s module: exit {p.returncode}\n{p.stderr}")
+    return dt
 
 
 def run(cli, args, store, out, timings=False):
@@ -66,6 +88,15 @@ def main():
                 cases["3-mass 250 km/h, direct"].append(run(cli, M3 + ["--set", "solver.type=direct"], store, out)[0])
                 cases["HSX 300 km/h, stored"].append(run(cli, HSX, store, out)[0])
                 cases["HSX sweep 150:10:350, stored"].append(run(cli, SWEEP, store, out)[0])
+            # Issue 50's cases, each line's modes stored first (once: their own store, kept over the repeats).
+            kept = os.path.join(work, f"kept{k}")
+            run(cli, STITCHED, kept, out), run(cli, OVERLAP2, kept, out), run_python(cli, kept)
+            cases.update({"HSX stitched 250 km/h, stored": [], "2 HSX 200 m apart, overlap 250 km/h, stored": [],
+                          "real-line evaluation (27 runs + trim), stored": []})
+            for _ in range(a.repeat):
+                cases["HSX stitched 250 km/h, stored"].append(run(cli, STITCHED, kept, out)[0])
+                cases["2 HSX 200 m apart, overlap 250 km/h, stored"].append(run(cli, OVERLAP2, kept, out)[0])
+                cases["real-line evaluation (27 runs + trim), stored"].append(run_python(cli, kept))
             rows[cli] = cases
             if a.split:
                 shutil.rmtree(store, ignore_errors=True)
