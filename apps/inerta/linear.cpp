@@ -20,15 +20,10 @@
 #include "inerta/io/json.hpp"
 #include "inerta/io/model_file.hpp"
 #include "inerta/io/model_study_file.hpp"
-#include "inerta/io/model_study_results.hpp"
-#include "inerta/optim/model_study_run.hpp"
 #include "inerta/optim/study_run.hpp"
-#include "inerta/io/study_outcome.hpp"
 #include "inerta/mbs/assembly.hpp"
 #include "inerta/mbs/road.hpp"
 #include "inerta/network/layouts.hpp"
-#include "inerta/report/study_report.hpp"
-#include "report.hpp"
 
 namespace inerta::cli {
 
@@ -232,103 +227,5 @@ int run_rms() {
   return 0;
 }
 
-// ---- optimise (model study) -------------------------------------------------------------------
-
-namespace {
-// The table of a model study after its searches (the default, each layout, the best; the structure
-// summary for layouts: all).
-void print_model_study(const optim::ModelStudyResult& run) {
-  const optim::ModelStudy& study = run.study;
-  const optim::Objective& o = study.objective;
-  const network::Network& baseline = run.baseline;
-  const optim::ModelCost& def = run.baseline_cost;
-  const auto& results = run.results;
-  fmt::print("\n  {:<14} {:<14} {:>12} {:>10}", "layout", "network", "J", "vs default");
-  for (const auto& w : o.outputs) fmt::print(" {:>12}", w.name);
-  for (const auto& lim : o.limits) fmt::print(" {:>12}", lim.output + "≤" + fmt::format("{:g}", lim.limit));
-  fmt::print("  values (SI)\n");
-  auto row = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, const std::string& values,
-                 const std::string& bounds, bool exhausted) {
-    fmt::print("  {:<14} {:<14} {:>12.6g} {:>9.1f}%", layout, expr, c.J, 100 * (c.J - def.J) / def.J);
-    for (double v : c.values) fmt::print(" {:>12.5g}", v);
-    for (double v : c.limit_values) fmt::print(" {:>12.5g}", v);
-    fmt::print("  {}{}{}{}\n", values, bounds.empty() ? "" : "  at limits: " + bounds, c.feasible ? "" : "  INFEASIBLE",
-               exhausted ? "  budget exhausted (max_evaluations reached before min_step)" : "");
-  };
-  row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "", false);
-  const std::size_t shown = study.all ? 25 : results.size();
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const auto& r = results[i];
-    if (i == shown) fmt::print("  … {} more in results.csv (with --out)\n", results.size() - shown);
-    std::string values, bounds;
-    for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
-    for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
-    if (i < shown) row(r.layout, r.expression, r.cost, values, bounds, r.budget_exhausted);
-  }
-  const auto& best = results[run.best];
-  fmt::print("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n", network::to_string(baseline, true),
-             def.J, best.layout, best.expression, best.cost.J, 100 * (best.cost.J - def.J) / def.J, run.seconds);
-  if (study.all) {
-    print_structure(run.entries, def.J, "", 0);
-    int evaluations = 0;
-    for (const auto& e : run.entries) evaluations += e.evaluations;
-    fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", run.entries.size(), evaluations,
-               run.seconds, evaluations / run.seconds);
-  }
-}
-}  // namespace
-
-int run_model_study(const std::string& path, const std::string& out, bool plots) {
-  const optim::ModelStudy study = io::load_model_study(path);
-  const bool tty = isatty(STDOUT_FILENO);
-  fmt::print("study {}: model {}, strut '{}', objective {}, {} layouts, {} starts (seed {})\n", study.name, study.model.name,
-             study.model.forces[static_cast<std::size_t>(study.strut)]->name(), optim::Objective::name(study.objective.kind),
-             study.layouts.size(), study.search.starts, study.search.seed);
-  if (study.all)
-    fmt::print("every network of up to {} elements ({} networks), each also started from its best sub-network\n",
-               study.all->max_elements, study.layouts.size());
-  // The engine's events (optim::StudyEvents): a line per layout, the structure progress, the table, the bounds.
-  struct Printer : optim::StudyEvents {
-    const optim::ModelStudy& study;
-    bool tty;
-    optim::StructureProgressFn structure = structure_progress("");
-    std::function<void(const optim::AdmittanceBound&)> print_bound;
-    Printer(const optim::ModelStudy& s, bool t) : study(s), tty(t) {}
-    using optim::StudyEvents::searched;
-    void searching(std::size_t l, int start, int evals, double best) override {
-      if (tty) fmt::print("\r  [{}/{}] {:<14} start {}  evaluations {:>5}  best {:.6g}   ", l + 1, study.layouts.size(),
-                          study.layouts[l], start + 1, evals, best);
-      std::fflush(stdout);
-    }
-    void searched(std::size_t l, const optim::ModelLayoutResult& r) override {
-      if (tty) fmt::print("\r{:90}\r", "");
-      fmt::print("  [{}/{}] {:<14} J = {:.6g}{} after {} evaluations\n", l + 1, study.layouts.size(), study.layouts[l], r.cost.J,
-                 r.cost.feasible ? "" : " (a limit is exceeded)", r.evaluations);
-    }
-    void network(const optim::StructureProgress& p) override { structure(p); }
-    void searches_done(const optim::StudyOutcome& o) override {
-      print_model_study(*o.model);
-      print_bound = print_admittance_bound(o.model->baseline_cost.J, "");
-    }
-    void bound(const optim::AdmittanceBound& b) override { print_bound(b); }
-  } printer(study, tty);
-  optim::StudyOptions options;
-  options.report = !out.empty();  // the figures: what --out writes
-  const optim::StudyOutcome run = optim::run_study(study, options, &printer);
-  if (out.empty()) return 0;
-  auto written = io::write_study_outcome(out, run);
-  written.push_back(report::write_study_report(out, run_provenance({{"study", path}}), run));
-  fmt::print("wrote");
-  for (const auto& w : written) fmt::print(" {}", std::filesystem::path(w).filename().string());
-  fmt::print(" in {}\n", out);
-  if (plots) {
-    std::fflush(stdout);
-    if (study.all && !run_script("plot-structure", out))
-      fmt::print("note: no pareto.png (scripts/plot-structure needs /usr/bin/python3 with matplotlib); pareto.csv is complete\n");
-    if (!run_script("plot-model-study", out))
-      fmt::print("note: no plots (scripts/plot-model-study needs /usr/bin/python3 with matplotlib); the CSV files in {} are complete\n", out);
-  }
-  return 0;
-}
 
 }  // namespace inerta::cli

@@ -1,6 +1,6 @@
 #pragma once
-// Linear analysis of any model from the command line (docs/cli.md): `frf --input`, `rms`, and
-// `optimise` of a model study. Thin layers over analysis/state_space.hpp and optim/model_study.hpp.
+// Linear analysis of any model from the command line (docs/cli.md): `frf --input` and `rms` (a model
+// study's `optimise` is in optimise.cpp). Thin layers over analysis/state_space.hpp.
 #include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
@@ -14,9 +14,6 @@ int run_frf_any(const std::string& model, const std::vector<std::string>& sets, 
 /// Adds `rms` (random response by Lyapunov equations).
 CLI::App* add_rms_command(CLI::App& app);
 int run_rms();
-
-/// `inerta optimise STUDY` for a model study (objective rms | hinf | peak).
-int run_model_study(const std::string& path, const std::string& out, bool plots);
 
 /// Writes the state space of `model` (all loads and driving joints as inputs, all outputs) next to
 /// the modes' export: JSON at `path`. Returns a one-line summary.
