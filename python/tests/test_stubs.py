@@ -6,7 +6,14 @@ from pathlib import Path
 import inerta
 import inerta._inerta as ext
 
-STUB = Path(__file__).resolve().parents[1] / "inerta" / "_inerta.pyi"
+# The package's stub, assembled at build from python/stubs/*.pyi (one file a concept), which it must equal.
+STUB = Path(inerta.__file__).resolve().parent / "_inerta.pyi"
+PARTS = sorted((Path(__file__).resolve().parents[1] / "stubs").glob("*.pyi"))
+
+
+def test_the_stub_is_its_parts():
+    assert len(PARTS) > 1
+    assert STUB.read_text(encoding="utf-8") == "".join(p.read_text(encoding="utf-8") for p in PARTS)
 
 
 def stub_tree():
