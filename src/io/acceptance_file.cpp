@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 
@@ -316,10 +317,13 @@ analysis::AcceptanceCriteria load_acceptance(const std::string& s) {
   if (!is_preset_name(s)) return read(s);
   const std::vector<std::string> presets = acceptance_presets();
   if (std::find(presets.begin(), presets.end(), s) == presets.end())
-    throw ModelError(fmt::format("acceptance: unknown preset '{}'; expected one of {} (in {}) or a criteria file "
+  {
+    const char* env = std::getenv("INERTA_DATA_DIR");  // the folder data_dir() took it from, if the user set it
+    throw ModelError(fmt::format("acceptance: unknown preset '{}'; expected one of {} (in {}{}) or a criteria file "
                                  "(a path with '/' or ending in .yaml)",
                                  s, presets.empty() ? std::string("(none found)") : fmt::format("{}", fmt::join(presets, ", ")),
-                                 preset_dir()));
+                                 preset_dir(), env && *env ? ", from $INERTA_DATA_DIR: a folder with criteria/, models/, scripts/" : ""));
+  }
   return read(preset_dir() + "/" + s + ".yaml");
 }
 
