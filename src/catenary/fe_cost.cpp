@@ -2,29 +2,26 @@
 // FeCostEstimate): what the cost guard of the CLI and Python knows before building anything.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "fe_compile.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
 
 namespace inerta::catenary {
 
 double mesh_unknowns(const FeCatenaryData& d) {
-  // FeLine's mesh: stations at the masts and droppers, each interval in ceil(length / h) elements.
-  double per_span = 0, prev = 0;
-  std::vector<double> marks = d.dropper_x;
-  if (d.stitch.present) {  // its droppers and (with the stitch wire) its clamps are stations too
-    for (double p : d.stitch.dropper_x) marks.push_back(p > 0 ? p : d.span + p);
-    if (d.has_stitch()) marks.push_back(0.5 * d.stitch.length), marks.push_back(d.span - 0.5 * d.stitch.length);
-    std::sort(marks.begin(), marks.end());
-  }
-  marks.push_back(d.span);
-  for (double x : marks) {
-    per_span += std::max(1.0, std::ceil((x - prev) / d.element_length - 1e-9));
-    prev = x;
-  }
-  const double nodes = per_span * d.spans + 1;
-  double stitch = 0;  // w and θ of a stitch wire at its stations (its clamps' w are the messenger's)
-  if (d.has_stitch()) stitch = (2 * std::ceil(d.stitch.length / d.element_length) - 1) * (d.spans - 1);
-  return 4 * nodes - 4 + stitch;  // w and θ of both wires at every node; w fixed at both ends
+  // The compiled mesh (fe_compile.hpp) of the line's first spans, not of the whole line: the cost guard
+  // must not allocate what it may refuse. Every interior span has the same marks (its masts' stitch
+  // wires on both sides), so the unknowns grow by the same count with each span from the second on.
+  if (!(d.element_length >= 1e-3 && d.span / d.element_length <= 1e5) || d.spans < 1)  // validate()'s range
+    return std::numeric_limits<double>::infinity();
+  if (d.spans <= 3) return compile::mesh(d).n_dofs;
+  FeCatenaryData few = d;
+  few.spans = 2;
+  const double two = compile::mesh(few).n_dofs;
+  few.spans = 3;
+  const double three = compile::mesh(few).n_dofs;
+  return two + (d.spans - 2) * (three - two);
 }
 
 FeCostEstimate estimate_cost(const FeCatenaryData& d, const std::vector<double>& x0, double speed, double t_end,

@@ -9,6 +9,7 @@
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
+#include "inerta/io/catenary_file.hpp"
 #include "support/fe_line.hpp"
 
 // One namespace a file: a unity build compiles several test files as one unit.
@@ -24,6 +25,16 @@ TEST(CostGuard, TheMeshIsCountedFromTheDataAsTheLineBuildsIt) {
       d.element_length = h;
       EXPECT_EQ(catenary::mesh_unknowns(d), catenary::FeLine(d).n_dofs()) << "h = " << h << ", spans = " << spans;
     }
+  }
+  // From the mesh of the first spans (issue 51: the compiled mesh, not a formula of its own): exact for a
+  // stitched line (stitch wires at the interior masts only) and for anchors on tensioning devices.
+  catenary::FeCatenaryData st = io::read_fe_catenary_data(INERTA_SOURCE_DIR "/models/catenary-fe-stitched.yaml");
+  for (const int spans : {1, 2, 3, 4, 7}) {
+    st.spans = spans;
+    EXPECT_EQ(catenary::mesh_unknowns(st), catenary::FeLine(st).n_dofs()) << "stitched, spans = " << spans;
+    catenary::FeCatenaryData dev = inerta::testing::fe_benchmark_line(spans);
+    dev.anchor.pinned = false, dev.anchor.stiffness = 1e5;
+    EXPECT_EQ(catenary::mesh_unknowns(dev), catenary::FeLine(dev).n_dofs()) << "tensioning devices, spans = " << spans;
   }
 }
 
