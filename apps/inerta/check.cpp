@@ -33,6 +33,7 @@
 #include "inerta/analysis/modal.hpp"
 #include "inerta/analysis/simulate.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/fe_schema.hpp"
 #include "inerta/catenary/lumped.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/acceptance_file.hpp"
@@ -162,23 +163,14 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
                  heights(d.overlap_outgoing, d.overlap_outgoing_x), heights(d.overlap_incoming, d.overlap_incoming_x));
     }
     for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
-      fmt::print("{:<13} T = {:g} N, rho A = {:g} kg/m, EI = {:g} N·m², wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n",
-                 std::string(which) + ":", w.tension, w.mass_per_length, w.EI, w.wave_speed(), 3.6 * w.wave_speed());
-    fmt::print("droppers: {} a span, {} in all; EA = {:g} N, {:g} kg/m, clamps {:g} kg (messenger), {:g} kg (contact wire)\n",
-               n, n * static_cast<std::size_t>(d.spans), d.dropper_EA, d.dropper_mass_per_length, d.clamp_mass_messenger,
-               d.clamp_mass_contact);
-    if (d.stitch.present) {
-      const catenary::FeStitch& st = d.stitch;
-      const std::size_t ns = st.dropper_x.size();
-      fmt::print("stitch: {}; {:g} m centred on each interior mast (none at the 2 end masts), T = {:g} N, rho A = {:g} "
-                 "kg/m, EI = {:g} N·m², clamps {:g} kg; ends clamped to the messenger\n",
-                 st.enabled ? "enabled" : "disabled (its droppers hang from the messenger)", st.length, st.wire.tension,
-                 st.wire.mass_per_length, st.wire.EI, st.clamp_mass);
-      fmt::print("stitch droppers: at {} m from each mast ({} a span, {} in all); EA = {:g} N, {:g} kg/m, clamps {:g} kg "
-                 "(stitch), {:g} kg (contact wire)\n",
-                 fmt::join(st.dropper_x, ", "), ns, ns * static_cast<std::size_t>(d.spans), st.dropper_EA,
-                 st.dropper_mass_per_length, st.clamp_mass_stitch, st.clamp_mass_contact);
-    }
+      fmt::print("{:<13} wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n", std::string(which) + ":", w.wave_speed(),
+                 3.6 * w.wave_speed());
+    fmt::print("droppers: {} a span, {} in all{}\n", n, n * static_cast<std::size_t>(d.spans),
+               d.stitch.present ? fmt::format("; stitch droppers: {} a span, {} in all ({}; none at the 2 end masts)",
+                                              d.stitch.dropper_x.size(), d.stitch.dropper_x.size() * static_cast<std::size_t>(d.spans),
+                                              d.stitch.enabled ? "stitch wires at the interior masts, ends clamped to the messenger"
+                                                               : "disabled: every stitch dropper hangs from the messenger")
+                                : "");
     {
       const catenary::FeIrregularity& irr = d.irregularity;
       if (!irr.any()) {
@@ -198,21 +190,32 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
         for (const auto& pm : irr.point_masses) fmt::print("irregularity: point mass {:g} kg at x = {:g} m\n", pm.mass, pm.x);
       }
     }
-    fmt::print("supports: {:g} N/m, {:g} kg; registration: {:g} N/m, {:g} kg{}\n", d.support_stiffness, d.support_mass,
-               d.registration_stiffness, d.registration_mass,
-               std::isnan(d.registration_uplift_limit)
-                   ? ""
-                   : fmt::format("; uplift limit {:g} m (acceptance criterion support_uplift)", d.registration_uplift_limit));
-    fmt::print("mesh: element length <= {:g} m (nodes at every dropper and mast)\n", d.element_length);
-    fmt::print("damping: Rayleigh a = {:g} 1/s, b = {:g} s; integration: HHT-alpha, alpha = {:g}, time step {:g} s\n",
-               d.rayleigh_mass, d.rayleigh_stiffness, d.hht_alpha, d.time_step);
-    if (d.solver == catenary::FeCatenaryData::Solver::Direct)
-      fmt::print("solver: direct (HHT-alpha on the whole line)\n");
-    else if (d.window_behind < 0 || d.window_ahead < 0)
-      fmt::print("solver: modal, modes below {:g} Hz, the whole line\n", d.modal_cutoff);
-    else
-      fmt::print("solver: modal, modes below {:g} Hz, a window of {} span(s) behind and {} ahead\n", d.modal_cutoff,
-                 d.window_behind, d.window_ahead);
+    if (!d.wear.any()) {
+      fmt::print("wear: none (a new contact wire)\n");
+    } else if (d.wear.x.empty()) {
+      const double p = d.wear.uniform / 100;
+      fmt::print("wear: {:g} % of the contact wire's section remaining along the line: mass per length {:g} kg/m, EI {:g} N·m² "
+                 "(× {:g} and × {:g}), tension unchanged\n",
+                 d.wear.uniform, p * d.contact_wire.mass_per_length, p * p * d.contact_wire.EI, p, p * p);
+    } else {
+      fmt::print("wear: the contact wire's section remaining from {} ({} points, {:g} … {:g} %)\n", d.wear.file, d.wear.x.size(),
+                 *std::min_element(d.wear.percent.begin(), d.wear.percent.end()),
+                 *std::max_element(d.wear.percent.begin(), d.wear.percent.end()));
+    }
+    // Every key's value from the schema (catenary/fe_schema.hpp), a section a line.
+    fmt::print("keys (docs/model-format.md; the line's values, a tension section's own above):\n");
+    std::string section, line;
+    for (const catenary::FeKey& k : catenary::fe_keys()) {
+      if (k.path.rfind("stitch.", 0) == 0 && !d.stitch.present) continue;
+      if (k.path == "line.spans" && d.sectioned()) continue;
+      const std::string top = k.path.substr(0, k.path.find('.'));
+      if (top != section) {
+        if (!line.empty()) fmt::print("  {}\n", line);
+        section = top, line = top + ":";
+      }
+      line += fmt::format("{} {} {}", line.back() == ':' ? "" : ",", k.path.substr(top.size() + 1), k.value_text(d));
+    }
+    fmt::print("  {}\n", line);
     if (d.section_first > 0)
       fmt::print("analysis section: spans {} to {}\n", d.section_first, d.section_last);
     else

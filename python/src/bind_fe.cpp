@@ -5,6 +5,7 @@
 
 #include "common.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/fe_schema.hpp"
 #include "inerta/error.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/lumped_fit_file.hpp"
@@ -210,6 +211,18 @@ void bind_fe(py::module_& m) {
   }, py::arg("path"), py::arg("overrides") = py::none(),
         "A catenary file checked but, for type finite_element, without making the catenary (CatenaryFile.catenary "
         "None, .fe the data), as `inerta check`.");
+  m.def("fe_keys", []() {
+    py::list out;
+    for (const catenary::FeKey& k : catenary::fe_keys()) {
+      static const char* types[] = {"number", "whole", "bool", "choice", "numbers", "csv", "span_range", "point_masses"};
+      py::dict e;
+      e["path"] = k.path, e["type"] = types[static_cast<int>(k.type)], e["unit"] = k.unit, e["range"] = k.range_text();
+      e["required"] = k.required, e["default"] = k.default_text, e["doc"] = k.doc, e["in_sections"] = k.in_sections;
+      out.append(e);
+    }
+    return out;
+  }, "Every key of a finite-element catenary file (catenary/fe_schema.hpp): dicts of path, type, unit, range, "
+     "required, default, doc, in_sections — the keys of read_fe_catenary_data's overrides and of --set.");
   m.def("read_fe_catenary_data", [](const py::object& path, const py::object& overrides) {
     return io::read_fe_catenary_data(path_arg(path), override_strings(overrides));
   }, py::arg("path"), py::arg("overrides") = py::none(),

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "fe_compile.hpp"
+#include "inerta/catenary/fe_schema.hpp"
 #include "inerta/error.hpp"
 
 namespace inerta::catenary::compile {
@@ -17,8 +18,8 @@ Irregular irregularities(const FeCatenaryData& d, int n_dofs, const std::vector<
   const FeIrregularity& irr = d.irregularity;
   const int nd = static_cast<int>(droppers.size());
   if (!irr.dropper_length_errors.empty() && irr.dropper_length_errors.size() != droppers.size())
-    throw InvalidArgument("finite-element catenary: irregularity", "dropper_length_errors",
-                          fmt::format("needs one value per dropper of the line in line order ({}), got {}", nd,
+    throw FeKeyError({-1, "irregularity.dropper_length_errors", -1},
+                     fmt::format("needs one value per dropper of the line in line order ({}), got {}", nd,
                                       irr.dropper_length_errors.size()));
   Irregular out;
   out.delta.assign(static_cast<std::size_t>(nd), 0.0);

@@ -186,6 +186,9 @@ std::string FeLine::describe() const {
   if (d_.has_stitch())
     s += fmt::format("; stitch wires of {:g} m at the {} interior masts ({:g} N)", d_.stitch.length, support_x_.size(),
                      d_.stitch.wire.tension);
+  if (d_.wear.any())
+    s += d_.wear.x.empty() ? fmt::format("; contact wire worn to {:g} % of its section", d_.wear.uniform)
+                           : fmt::format("; contact wire worn as {} gives ({} points)", d_.wear.file, d_.wear.x.size());
   if (d_.irregularity.any()) {
     int slack = 0;
     for (const Dropper& dr : droppers_) slack += dr.tension < 0;

@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "inerta/catenary/fe_data.hpp"
+#include "inerta/catenary/fe_schema.hpp"
 #include "inerta/error.hpp"
 
 namespace inerta::catenary {
@@ -15,13 +16,11 @@ void FeCatenaryData::link_sections() {
   if (!sectioned()) return;
   const std::size_t ns = tension_sections.size();
   const int N = overlap_spans;
-  auto fail = [](const std::string& key, const std::string& problem) {
-    throw InvalidArgument("finite-element catenary: tension_sections", key, problem);
-  };
-  if (ns < 2) fail("tension_sections", fmt::format("a line of tension sections needs at least two, got {}", ns));
-  if (ns > 100) fail("tension_sections", fmt::format("at most 100 sections, got {}", ns));
+  auto fail = [](int k, const std::string& key, const std::string& problem) { throw FeKeyError({k, key, -1}, problem); };
+  if (ns < 2) fail(-1, "tension_sections", fmt::format("a line of tension sections needs at least two, got {}", ns));
+  if (ns > 100) fail(-1, "tension_sections", fmt::format("at most 100 sections, got {}", ns));
   if (N < 1 || N > 20)
-    throw InvalidArgument("finite-element catenary: overlap", "spans",
+    throw FeKeyError({-1, "overlap.spans", -1},
                           fmt::format("must be 1 … 20 spans (3 and 5 are the usual designs), got {}", N));
   // Each wire's profile over the overlap: (x from its first support, height); at the supports alone
   // without overlap_*_x. Its heights at the supports are checked below.
@@ -30,23 +29,23 @@ void FeCatenaryData::link_sections() {
     std::vector<std::pair<double, double>> p;
     if (xs.empty()) {
       if (z.size() != static_cast<std::size_t>(N + 1))
-        throw InvalidArgument("finite-element catenary: overlap", key,
+        throw FeKeyError({-1, std::string("overlap.") + key, -1},
                               fmt::format("needs one height per overlap support (overlap.spans + 1 = {}), got {}", N + 1, z.size()));
       for (int j = 0; j <= N; ++j) p.emplace_back(j * ov_span, z[static_cast<std::size_t>(j)]);
       return p;
     }
     const std::string k = std::string(key) + ".x";
     if (xs.size() != z.size())
-      throw InvalidArgument("finite-element catenary: overlap", std::string(key) + ".z",
+      throw FeKeyError({-1, "overlap." + std::string(key) + ".z", -1},
                             fmt::format("needs one height per point of {} ({} points), got {}", k, xs.size(), z.size()));
     if (xs.size() < 2 || std::abs(xs.front()) > 1e-9 || std::abs(xs.back() - ov_length) > 1e-6 * ov_length)
-      throw InvalidArgument("finite-element catenary: overlap", k,
+      throw FeKeyError({-1, "overlap." + k, -1},
                             fmt::format("must run from 0 (the overlap's first support) to overlap.spans spans ({:g} m), got "
                                         "{} point(s) from {:g} to {:g} m",
                                         ov_length, xs.size(), xs.empty() ? 0.0 : xs.front(), xs.empty() ? 0.0 : xs.back()));
     for (std::size_t i = 0; i < xs.size(); ++i) {
       if (!std::isfinite(xs[i]) || (i > 0 && !(xs[i] > xs[i - 1])))
-        throw InvalidArgument("finite-element catenary: overlap", fmt::format("{}[{}]", k, i),
+        throw FeKeyError({-1, "overlap." + k, static_cast<int>(i)},
                               fmt::format("must be finite and strictly increasing, got {} m", xs[i]));
       p.emplace_back(xs[i], z[i]);
     }
@@ -64,7 +63,7 @@ void FeCatenaryData::link_sections() {
   for (const auto& [p, xs, key] : {std::tuple{&out_p, &overlap_outgoing_x, "outgoing"}, std::tuple{&in_p, &overlap_incoming_x, "incoming"}})
     for (std::size_t i = 0; i < p->size(); ++i)
       if (const double v = (*p)[i].second; !std::isfinite(v) || std::abs(v) >= encumbrance)
-        throw InvalidArgument("finite-element catenary: overlap", fmt::format("{}{}[{}]", key, xs->empty() ? "" : ".z", i),
+        throw FeKeyError({-1, fmt::format("overlap.{}{}", key, xs->empty() ? "" : ".z"), static_cast<int>(i)},
                               fmt::format("must be finite and smaller than the encumbrance ({} m), got {} m", encumbrance, v));
   for (int j = 0; j <= N; ++j) {
     const double o = at(out_p, j * ov_span), in = at(in_p, j * ov_span);
@@ -72,12 +71,12 @@ void FeCatenaryData::link_sections() {
     // the outgoing one after it; it must not hang below the running wire there (strictly above
     // at the anchors).
     if (2 * j < N && (j == 0 ? !(in > o) : !(in >= o)))
-      throw InvalidArgument("finite-element catenary: overlap", overlap_incoming_x.empty() ? fmt::format("incoming[{}]", j) : "incoming.z",
+      throw FeKeyError(overlap_incoming_x.empty() ? FeLocation{-1, "overlap.incoming", j} : FeLocation{-1, "overlap.incoming.z", -1},
                             fmt::format("{} m puts the incoming wire, out of running at overlap support {} (its anchor "
                                         "side), below the running outgoing wire ({} m); it must be above{}",
                                         in, j, o, j == 0 ? " (strictly, at its anchor)" : ""));
     if (2 * j > N && (j == N ? !(o > in) : !(o >= in)))
-      throw InvalidArgument("finite-element catenary: overlap", overlap_outgoing_x.empty() ? fmt::format("outgoing[{}]", j) : "outgoing.z",
+      throw FeKeyError(overlap_outgoing_x.empty() ? FeLocation{-1, "overlap.outgoing", j} : FeLocation{-1, "overlap.outgoing.z", -1},
                             fmt::format("{} m puts the outgoing wire, out of running at overlap support {} (its anchor "
                                         "side), below the running incoming wire ({} m); it must be above{}",
                                         o, j, in, j == N ? " (strictly, at its anchor)" : ""));
@@ -89,7 +88,7 @@ void FeCatenaryData::link_sections() {
     const bool middle = k > 0 && k + 1 < ns;
     const int need = middle ? 2 * N + 1 : N + 1;
     if (s.spans < need)
-      fail(fmt::format("[{}].spans", k),
+      fail(static_cast<int>(k), "spans",
            fmt::format("{} span(s) cannot hold {}: an overlap of {} spans is longer than the section allows (at least {} "
                        "spans{})",
                        s.spans, middle ? "its two overlaps" : "its overlap", N, need,
@@ -99,7 +98,7 @@ void FeCatenaryData::link_sections() {
       for (int i = 0; i <= N; ++i) {
         const double mine = start + i * s.span, theirs = p.line_start + (p.spans - N + i) * p.span;
         if (std::abs(mine - theirs) > 1e-6)
-          fail(fmt::format("[{}].span", k),
+          fail(static_cast<int>(k), "span",
                fmt::format("section {} does not share its overlap supports with section {}: its mast {} is at {:.6g} m, "
                            "theirs at {:.6g} m (spans {} m and {} m); consecutive sections share overlap.spans + 1 = {} masts",
                            k + 1, k, i + 1, mine, theirs, s.span, p.span, N + 1));

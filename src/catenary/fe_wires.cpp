@@ -31,6 +31,13 @@ Wires wires(const FeCatenaryData& d, const Mesh& mesh) {
     out.EI[w].assign(static_cast<std::size_t>(N - 1), wire[w]->EI);
     out.mass_per_length[w].assign(static_cast<std::size_t>(N - 1), wire[w]->mass_per_length);
   }
+  if (d.wear.any())  // the contact wire's section remaining at each element's middle (FeWear): ρA × p, EI × p²
+    for (int i = 0; i + 1 < N; ++i) {
+      const std::size_t e = static_cast<std::size_t>(i);
+      const double p = d.wear.at(0.5 * (mesh.x[e] + mesh.x[e + 1])) / 100;
+      out.mass_per_length[1][e] *= p;
+      out.EI[1][e] *= p * p;
+    }
   for (int w = 0; w < 2; ++w) {
     out.fg[w] = Eigen::VectorXd::Zero(mesh.n_dofs);
     for (int i = 0; i + 1 < N; ++i) {

@@ -16,6 +16,7 @@
 #include "inerta/io/csv_table.hpp"
 #include "inerta/io/yaml_errors.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
+#include "inerta/catenary/fe_schema.hpp"
 #include "inerta/numerics/phase_times.hpp"
 #include "model_reader.hpp"
 
@@ -155,153 +156,212 @@ void read_contact(const std::string& path, const YAML::Node& ct, catenary::Conta
 }
 
 // Finite-element catenary (type: finite_element) -----------------------------------------------
-// One table drives the reading of every number, the overrides and the messages: section, key,
-// unit, required (in its section), whole number, and where the value goes.
-struct FeField {
-  const char* section;
-  const char* key;
-  const char* unit;
-  bool required;
-  bool integer;
-  void (*set)(catenary::FeCatenaryData&, double);
-};
+// Every key from the schema (catenary/fe_schema.hpp): reading, --set, ranges, messages.
+using catenary::FeKey;
+using catenary::FeKeyError;
+using catenary::FeLocation;
+using catenary::FeRef;
 
-#define INERTA_FE_FIELD(sec, key, unit, req, integer, member) \
-  FeField {                                                     \
-    sec, key, unit, req, integer,                               \
-        [](catenary::FeCatenaryData& d, double v) { d.member = static_cast<decltype(d.member)>(v); } \
+std::vector<std::string> split_path(const std::string& path) {
+  std::vector<std::string> parts;
+  for (std::size_t at = 0;;) {
+    const std::size_t dot = path.find('.', at);
+    parts.push_back(path.substr(at, dot - at));
+    if (dot == std::string::npos) return parts;
+    at = dot + 1;
   }
-const std::vector<FeField>& fe_fields() {
-  static const std::vector<FeField> f{
-      INERTA_FE_FIELD("line", "span", "m", true, false, span),
-      INERTA_FE_FIELD("line", "spans", "a whole number", true, true, spans),
-      INERTA_FE_FIELD("line", "encumbrance", "m", true, false, encumbrance),
-      INERTA_FE_FIELD("line", "gravity", "m/s²", false, false, gravity),
-      INERTA_FE_FIELD("messenger", "tension", "N", true, false, messenger.tension),
-      INERTA_FE_FIELD("messenger", "mass_per_length", "kg/m", true, false, messenger.mass_per_length),
-      INERTA_FE_FIELD("messenger", "EI", "N·m²", false, false, messenger.EI),
-      INERTA_FE_FIELD("contact_wire", "tension", "N", true, false, contact_wire.tension),
-      INERTA_FE_FIELD("contact_wire", "mass_per_length", "kg/m", true, false, contact_wire.mass_per_length),
-      INERTA_FE_FIELD("contact_wire", "EI", "N·m²", false, false, contact_wire.EI),
-      INERTA_FE_FIELD("droppers", "EA", "N", true, false, dropper_EA),
-      INERTA_FE_FIELD("droppers", "mass_per_length", "kg/m", false, false, dropper_mass_per_length),
-      INERTA_FE_FIELD("droppers", "clamp_mass_messenger", "kg", false, false, clamp_mass_messenger),
-      INERTA_FE_FIELD("droppers", "clamp_mass_contact", "kg", false, false, clamp_mass_contact),
-      INERTA_FE_FIELD("supports", "stiffness", "N/m", true, false, support_stiffness),
-      INERTA_FE_FIELD("supports", "mass", "kg", false, false, support_mass),
-      INERTA_FE_FIELD("registration", "stiffness", "N/m", true, false, registration_stiffness),
-      INERTA_FE_FIELD("registration", "mass", "kg", false, false, registration_mass),
-      INERTA_FE_FIELD("registration", "uplift_limit", "m", false, false, registration_uplift_limit),
-      INERTA_FE_FIELD("mesh", "element_length", "m", false, false, element_length),
-      INERTA_FE_FIELD("damping", "rayleigh_mass", "1/s", false, false, rayleigh_mass),
-      INERTA_FE_FIELD("damping", "rayleigh_stiffness", "s", false, false, rayleigh_stiffness),
-      INERTA_FE_FIELD("integration", "time_step", "s", false, false, time_step),
-      INERTA_FE_FIELD("integration", "alpha", "HHT-α, −1/3 … 0", false, false, hht_alpha),
-      INERTA_FE_FIELD("solver", "cutoff", "Hz", false, false, modal_cutoff),
-      INERTA_FE_FIELD("solver", "window_behind", "spans, −1: the whole line", false, true, window_behind),
-      INERTA_FE_FIELD("solver", "window_ahead", "spans, −1: the whole line", false, true, window_ahead),
+}
+
+// The node at `parts` below `n`, as deep as the file goes; `full`: all of them there.
+YAML::Node walk(const YAML::Node& n, const std::vector<std::string>& parts, bool& full) {
+  YAML::Node at;
+  at.reset(n);
+  full = true;
+  for (const std::string& p : parts) {
+    if (!at.IsMap() || !at[p].IsDefined()) return full = false, at;
+    const YAML::Node next = at[p];
+    at.reset(next);
+  }
+  return at;
+}
+
+// The names a map of the file may hold at `prefix` (a section, or stitch.droppers), from the schema.
+std::vector<std::string> children(const std::string& prefix, bool in_section = false) {
+  std::vector<std::string> out;
+  for (const FeKey& k : catenary::fe_keys()) {
+    if (k.path.rfind(prefix + ".", 0) != 0 || (in_section && !k.in_sections)) continue;
+    const std::string rest = k.path.substr(prefix.size() + 1), first = rest.substr(0, rest.find('.'));
+    if (std::find(out.begin(), out.end(), first) == out.end()) out.push_back(first);
+  }
+  return out;
+}
+
+std::string expected_text(const FeKey& k) {
+  using T = FeKey::Type;
+  const std::string u = k.unit.empty() ? "" : " (" + k.unit + ")";
+  switch (k.type) {
+    case T::Number: return "a number" + u;
+    case T::Whole: return "a whole number" + u;
+    case T::Bool: return "true or false";
+    case T::Choice: {
+      std::string s;
+      for (const std::string& c : k.choices) s += (s.empty() ? "" : " or ") + c;
+      return s;
+    }
+    case T::Numbers: return "a list of numbers" + u + ": " + k.doc;
+    case T::Csv: return "the path of a CSV file: " + k.doc;
+    case T::SpanRange: return "[first, last]: " + k.doc;
+    case T::PointMasses: return k.doc;
+  }
+  return "";
+}
+
+// A CSV profile (x and one value column, relative to the file or to the working directory for --set).
+void read_csv_profile(const std::string& csv, const catenary::FeCsvRef& r) {
+  const CsvTable t = CsvTable::read(csv);
+  if (t.column("x").size() < 2)  // only a header (or one point) would run as the perfect line
+    throw ModelError(fmt::format("{}: {} data row(s); expected x (m) and {} at 2 or more points covering the line", csv,
+                                 t.column("x").size(), r.column));
+  *r.file = csv;
+  *r.x = t.column("x");
+  *r.value = t.column(r.column);
+}
+
+// One key's value from its node `n`, checked against its range, into d.
+// `section`: a tension section's (tension_sections[k]), whose keys are named in full.
+void read_key(const detail::Reader& rd, const FeKey& k, const YAML::Node& n, catenary::FeCatenaryData& d,
+              const std::string& section = "") {
+  using T = FeKey::Type;
+  const FeRef r = k.ref(d);
+  const std::string name = section.empty() ? k.name() : section + "." + k.path;
+  auto in_range = [&](double v) {
+    if (const std::string e = k.check(v); !e.empty())
+      rd.fail(n, name, (section.empty() ? e + " in " + k.section() : e) + (k.note.empty() ? "" : "; " + k.note));
+    return v;
   };
-  return f;
-}
-#undef INERTA_FE_FIELD
-
-// The lists of the droppers section: x, presag, nominal_length (m).
-std::vector<double>* fe_list(catenary::FeCatenaryData& d, const std::string& key) {
-  if (key == "x") return &d.dropper_x;
-  if (key == "presag") return &d.presag;
-  if (key == "nominal_length") return &d.nominal_dropper_length;
-  return nullptr;
-}
-
-const std::vector<std::string> kFeSections{"line",         "messenger", "contact_wire", "droppers",
-                                           "supports",     "registration", "mesh",      "damping",
-                                           "integration",  "section",   "contact",      "solver",
-                                           "stitch",       "irregularity"};
-const std::set<std::string> kFeRequired{"line", "messenger", "contact_wire", "droppers", "supports", "registration"};
-
-std::vector<std::string> fe_keys(const std::string& section) {
-  std::vector<std::string> k;
-  if (section == "droppers") k = {"x", "presag", "nominal_length"};
-  if (section == "section") k = {"spans"};
-  if (section == "solver") k = {"type"};
-  if (section == "registration") k = {"uplift_limited"};
-  if (section == "stitch") k = {"enabled", "length", "tension", "mass_per_length", "EI", "clamp_mass", "droppers"};
-  if (section == "irregularity")
-    k = {"dropper_length_std", "seed", "dropper_length_errors", "height_errors", "point_masses", "exact_dropper_dynamics"};
-  for (const FeField& f : fe_fields())
-    if (section == f.section) k.emplace_back(f.key);
-  return k;
-}
-
-// What the file's sections hold, for the message of a missing key.
-std::string fe_section_help(const std::string& section) {
-  std::string s;
-  for (const std::string& k : fe_keys(section)) s += (s.empty() ? "" : ", ") + k;
-  return s;
-}
-
-// A complaint of FeCatenaryData::validate() ("finite-element catenary: <section>: <parameter>: …")
-// at the line of the key it names; `root` is the file's top level.
-[[noreturn]] void fe_fail(const detail::Reader& rd, const YAML::Node& root, const InvalidArgument& e) {
-  const std::string prefix = "finite-element catenary: ", what = e.what();
-  std::string section;
-  if (what.rfind(prefix, 0) == 0) section = what.substr(prefix.size(), what.find(": ", prefix.size()) - prefix.size());
-  std::string key = e.parameter();
-  if (section == "tension_sections" && key.size() > 1 && key[0] == '[') {  // [k].<section>.<key>
-    // At the section's own value where it gives one, else at the file's value every section takes.
-    const std::size_t k = std::stoul(key.substr(1)), close = key.find(']');
-    const std::string rest = close + 2 <= key.size() ? key.substr(close + 2) : std::string();
-    const std::string inner = rest.substr(0, rest.find('.')), leaf = rest.find('.') == std::string::npos ? "" : rest.substr(rest.find('.') + 1);
-    YAML::Node at = root["tension_sections"];
-    if (at.IsSequence() && k < at.size()) {
-      const YAML::Node sec = at[k];
-      at.reset(sec);
-      if (const YAML::Node own = sec.IsMap() ? sec[inner] : YAML::Node(); !inner.empty() && own.IsDefined()) {
-        at.reset(own);
-        if (const YAML::Node n = own.IsMap() && !leaf.empty() ? own[leaf] : YAML::Node(); n.IsDefined()) at.reset(n);
-      } else if (const YAML::Node top = inner.empty() ? YAML::Node() : root[inner]; top.IsDefined() && top.IsMap()) {
-        at.reset(top);
-        if (const YAML::Node n = leaf.empty() ? YAML::Node() : top[leaf]; n.IsDefined()) at.reset(n);
-      }
+  switch (k.type) {
+    case T::Number:
+      *std::get<double*>(r) = in_range(rd.number(n, name));
+      return;
+    case T::Whole: {
+      const double v = rd.number(n, name);
+      if (!(std::abs(v) < 1e16) || v != std::floor(v)) rd.fail(n, name, fmt::format("expected a whole number, got {}", v));
+      in_range(v);
+      if (auto p = std::get_if<int*>(&r)) **p = static_cast<int>(v);
+      else *std::get<std::uint64_t*>(r) = static_cast<std::uint64_t>(v);
+      return;
     }
-    rd.fail(at, "tension_sections" + key, e.problem());
-  }
-  if (section == "damping" && (key == "mass" || key == "stiffness")) key = "rayleigh_" + key;
-  long index = -1;
-  std::string shown = key;
-  if (const auto open = key.find('['); open != std::string::npos && key.back() == ']') {
-    index = std::stol(key.substr(open + 1));
-    key.resize(open);
-  }
-  YAML::Node at = root;
-  if (const YAML::Node s = root[section]; !section.empty() && s.IsDefined()) {
-    at.reset(s);
-    std::string leaf = key;
-    YAML::Node parent = s;
-    if (const auto dot = key.find('.'); dot != std::string::npos && s.IsMap()) {  // stitch: droppers.x
-      if (const YAML::Node sub = s[key.substr(0, dot)]; sub.IsDefined() && sub.IsMap()) {
-        parent.reset(sub);
-        at.reset(sub);
-        leaf = key.substr(dot + 1);
-      }
+    case T::Bool:
+      *std::get<bool*>(r) = rd.boolean(n, name);
+      return;
+    case T::Choice: {
+      const std::string v = n.IsScalar() ? n.Scalar() : "";
+      if (std::find(k.choices.begin(), k.choices.end(), v) == k.choices.end())
+        rd.fail(n, name, fmt::format("expected {}, got '{}'", expected_text(k), v));
+      *std::get<catenary::FeCatenaryData::Solver*>(r) =
+          v == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
+      return;
     }
-    if (const YAML::Node k = parent.IsMap() ? parent[leaf] : YAML::Node(); k.IsDefined()) {
-      at.reset(k);
-      if (index >= 0 && k.IsSequence() && static_cast<std::size_t>(index) < k.size()) {
-        const YAML::Node item = k[static_cast<std::size_t>(index)];
-        at.reset(item);
+    case T::Numbers: {
+      if (!n.IsSequence()) rd.fail(n, name, "expected " + expected_text(k));
+      std::vector<double>& v = *std::get<std::vector<double>*>(r);
+      v.clear();
+      for (const auto& item : n) v.push_back(rd.number(item, name));
+      return;
+    }
+    case T::Csv:
+      if (!n.IsScalar()) rd.fail(n, name, "expected " + expected_text(k));
+      try {
+        read_csv_profile(rd.relative_path(n.Scalar()), std::get<catenary::FeCsvRef>(r));
+      } catch (const ModelError& e) {
+        rd.fail(n, name, e.what());
       }
+      return;
+    case T::SpanRange: {
+      if (!n.IsSequence() || n.size() != 2) rd.fail(n, name, "expected [first, last]: the spans of the analysis section (1-based)");
+      const catenary::FeSpanRef s = std::get<catenary::FeSpanRef>(r);
+      for (auto [i, out] : {std::pair{0u, s.first}, std::pair{1u, s.last}}) {
+        const double v = rd.number(n[i], name);
+        if (!(std::abs(v) < 1e9) || v != std::floor(v)) rd.fail(n[i], name, fmt::format("expected a whole number, got {}", v));
+        *out = static_cast<int>(v);
+      }
+      return;
+    }
+    case T::PointMasses: {
+      if (!n.IsSequence()) rd.fail(n, name, "expected a list of {x, mass}: x along the line (m), mass (kg)");
+      auto& v = *std::get<std::vector<catenary::FeIrregularity::PointMass>*>(r);
+      v.clear();
+      for (const auto& item : n) {
+        rd.keys(item, name, {"x", "mass"});
+        v.push_back({rd.number(rd.need(item, "x", name), "x"), rd.number(rd.need(item, "mass", name), "mass")});
+      }
+      return;
     }
   }
-  rd.fail(at, shown.empty() ? section : shown,
-          fmt::format("{}{}", e.problem(), section.empty() ? "" : " in " + section));
 }
 
-std::vector<double> fe_numbers(const detail::Reader& rd, const YAML::Node& n, const std::string& key) {
-  if (!n.IsSequence()) rd.fail(n, key, "expected a list of numbers (m), one per dropper of a span");
-  std::vector<double> v;
-  for (const auto& item : n) v.push_back(rd.number(item, key));
-  return v;
+// Every key of the schema under `map` (the file's top level, or a tension section's over the line's:
+// `over`, then only keys a section may give, none required; `section` names it). `prefix` limits it to
+// one section; `skip` a key not read. The values first, then what is missing.
+void read_keys(const detail::Reader& rd, const YAML::Node& map, catenary::FeCatenaryData& d, const std::string& prefix,
+               bool over, const std::string& skip = "", const std::string& section = "") {
+  std::vector<const FeKey*> missing;
+  for (const FeKey& k : catenary::fe_keys()) {
+    if (k.path.rfind(prefix + ".", 0) != 0 || (over && !k.in_sections) || k.path == skip) continue;
+    bool full = false;
+    const YAML::Node n = walk(map, split_path(k.path), full);
+    if (full && !n.IsNull()) read_key(rd, k, n, d, section);
+    else if (k.required && !over) missing.push_back(&k);
+  }
+  for (const FeKey* k : missing) {  // at its map if that is given, else at the nearest map the file has
+    std::vector<std::string> parts = split_path(k->path);
+    parts.pop_back();
+    bool parent = false;
+    const YAML::Node at = walk(map, parts, parent);
+    if (!parent)
+      rd.fail(at, parts.back(), fmt::format("missing in {}; expected {}: {{{}}}", parts.front(), parts.back(),
+                                            fmt::join(children(k->section()), ", ")));
+    rd.fail(at, k->name(), fmt::format("missing in {}; expected {}", k->section(), expected_text(*k)));
+  }
+}
+
+// The keys of a map of the file at `prefix` and its sub-maps (stitch.droppers) are all in the schema.
+void check_keys(const detail::Reader& rd, const YAML::Node& map, const std::string& prefix, bool in_section) {
+  rd.keys(map, prefix, children(prefix, in_section));
+  for (const std::string& c : children(prefix, in_section))
+    if (const YAML::Node sub = map[c]; sub.IsDefined() && sub.IsMap() && !catenary::find_fe_key(prefix + "." + c))
+      check_keys(rd, sub, prefix + "." + c, in_section);
+}
+
+// The node of a located key: a tension section's own value where it gives one, else the line's.
+YAML::Node locate(const YAML::Node& root, const FeLocation& l) {
+  const std::vector<std::string> parts = l.key.empty() ? std::vector<std::string>{} : split_path(l.key);
+  bool full = false;
+  YAML::Node at = walk(root, parts, full);
+  if (const YAML::Node list = root["tension_sections"]; l.section >= 0 && list.IsSequence() && static_cast<std::size_t>(l.section) < list.size()) {
+    const YAML::Node sec = list[static_cast<std::size_t>(l.section)];
+    bool own = false;
+    const YAML::Node mine = walk(sec, parts, own);
+    if (own || parts.empty() || (sec.IsMap() && sec[parts.front()].IsDefined())) at.reset(mine);
+    else if (!full) at.reset(sec);
+    full = own || full;
+  }
+  if (full && l.index >= 0 && at.IsSequence() && static_cast<std::size_t>(l.index) < at.size()) {
+    const YAML::Node item = at[static_cast<std::size_t>(l.index)];
+    at.reset(item);
+  }
+  return at;
+}
+
+// A located complaint (FeCatenaryData::validate, link_sections) at the line of its key.
+[[noreturn]] void fe_fail(const detail::Reader& rd, const YAML::Node& root, const FeKeyError& e) {
+  const FeLocation& l = e.at;
+  const YAML::Node at = locate(root, l);
+  const std::string index = l.index >= 0 ? fmt::format("[{}]", l.index) : "";
+  if (l.section >= 0) rd.fail(at, fmt::format("tension_sections[{}]{}{}{}", l.section, l.key.empty() ? "" : ".", l.key, index), e.problem());
+  const auto dot = l.key.rfind('.');
+  if (dot == std::string::npos || l.key.rfind("overlap.", 0) == 0) rd.fail(at, l.key + index, e.problem());
+  rd.fail(at, l.key.substr(dot + 1) + index, fmt::format("{} in {}", e.problem(), l.key.substr(0, dot)));
 }
 
 int fe_whole(const detail::Reader& rd, const YAML::Node& n, const std::string& key, double v) {
@@ -309,95 +369,12 @@ int fe_whole(const detail::Reader& rd, const YAML::Node& n, const std::string& k
   return static_cast<int>(v);
 }
 
-// stitch: {enabled, length, tension, mass_per_length, EI, clamp_mass, droppers: {x, presag, EA,
-// mass_per_length, clamp_mass_stitch, clamp_mass_contact}} (docs/model-format.md). With `s` already a
-// stitch (a tension section over the line's), every key is optional and replaces the line's value.
-void read_fe_stitch(const detail::Reader& rd, const YAML::Node& st, catenary::FeStitch& s) {
-  if (!st.IsMap()) rd.fail(st, "stitch", "expected a section: {length, tension, mass_per_length, EI, clamp_mass, droppers}");
-  const bool over = s.present;
-  s.present = true;
-  auto value = [&](const YAML::Node& map, const char* key, const char* where, double& v) {
-    if (over) v = rd.number_or(map, key, v);
-    else v = rd.number(rd.need(map, key, where), key);
-  };
-  if (const YAML::Node n = st["enabled"]; n.IsDefined()) s.enabled = rd.boolean(n, "enabled");
-  value(st, "length", "stitch", s.length);
-  value(st, "tension", "stitch", s.wire.tension);
-  value(st, "mass_per_length", "stitch", s.wire.mass_per_length);
-  s.wire.EI = rd.number_or(st, "EI", over ? s.wire.EI : 0.0);
-  s.clamp_mass = rd.number_or(st, "clamp_mass", over ? s.clamp_mass : 0.0);
-  const YAML::Node dr = over ? st["droppers"] : rd.need(st, "droppers", "stitch");
-  if (over && (!dr.IsDefined() || dr.IsNull())) return;
-  rd.keys(dr, "stitch.droppers", {"x", "presag", "EA", "mass_per_length", "clamp_mass_stitch", "clamp_mass_contact"});
-  if (const YAML::Node x = over ? dr["x"] : rd.need(dr, "x", "stitch.droppers"); x.IsDefined()) {
-    if (!x.IsSequence()) rd.fail(x, "x", "expected a list of signed positions from the mast (m), e.g. [-7, -2, 2, 7]");
-    s.dropper_x.clear();
-    for (const auto& item : x) s.dropper_x.push_back(rd.number(item, "x"));
-    if (over && !dr["presag"].IsDefined()) s.dropper_presag.clear();  // new positions: the line's pre-sags no longer fit
-  }
-  if (const YAML::Node p = dr["presag"]; p.IsDefined()) {
-    if (!p.IsSequence()) rd.fail(p, "presag", "expected a list of contact-wire pre-sags (m, positive down), one per stitch dropper");
-    s.dropper_presag.clear();
-    for (const auto& item : p) s.dropper_presag.push_back(rd.number(item, "presag"));
-  }
-  value(dr, "EA", "stitch.droppers", s.dropper_EA);
-  s.dropper_mass_per_length = rd.number_or(dr, "mass_per_length", over ? s.dropper_mass_per_length : 0.0);
-  s.clamp_mass_stitch = rd.number_or(dr, "clamp_mass_stitch", over ? s.clamp_mass_stitch : 0.0);
-  s.clamp_mass_contact = rd.number_or(dr, "clamp_mass_contact", over ? s.clamp_mass_contact : 0.0);
-}
-
-// The height-error profile: a CSV with columns x and dz (m), relative to the catenary file.
-void read_height_errors(const std::string& csv, catenary::FeIrregularity& irr) {
-  const CsvTable t = CsvTable::read(csv);
-  if (t.column("x").size() < 2)  // only a header (or one point) would run as the perfect line
-    throw ModelError(fmt::format("{}: {} data row(s); expected the height errors x, dz (m) at 2 or more points covering the line",
-                                 csv, t.column("x").size()));
-  irr.height_errors_file = csv;
-  irr.height_error_x = t.column("x");
-  irr.height_error_dz = t.column("dz");
-}
-
-// irregularity: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses,
-// exact_dropper_dynamics}.
-void read_fe_irregularity(const detail::Reader& rd, const YAML::Node& ir, catenary::FeCatenaryData& d) {
-  catenary::FeIrregularity& irr = d.irregularity;
-  if (!ir.IsMap()) rd.fail(ir, "irregularity", "expected a section: {dropper_length_std, seed, dropper_length_errors, height_errors, point_masses, exact_dropper_dynamics}");
-  irr.dropper_length_std = rd.number_or(ir, "dropper_length_std", 0.0);
-  if (const YAML::Node n = ir["seed"]; n.IsDefined()) {
-    const double v = rd.number(n, "seed");
-    if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v)) rd.fail(n, "seed", fmt::format("expected a whole number from 0 to 2^53 − 1 = 9007199254740991 (exact as a number), got {:.17g}", v));
-    irr.seed = static_cast<std::uint64_t>(v);
-  }
-  if (const YAML::Node n = ir["dropper_length_errors"]; n.IsDefined()) {
-    if (!n.IsSequence()) rd.fail(n, "dropper_length_errors", "expected a list of length errors (m), one per dropper of the line in line order");
-    for (const auto& item : n) irr.dropper_length_errors.push_back(rd.number(item, "dropper_length_errors"));
-  }
-  if (const YAML::Node n = ir["height_errors"]; n.IsDefined()) {
-    if (!n.IsScalar()) rd.fail(n, "height_errors", "expected the path of a CSV file with columns x and dz (m)");
-    try {
-      read_height_errors(rd.relative_path(n.Scalar()), irr);
-    } catch (const ModelError& e) {
-      rd.fail(n, "height_errors", e.what());
-    }
-  }
-  if (const YAML::Node n = ir["exact_dropper_dynamics"]; n.IsDefined()) irr.exact_dropper_dynamics = rd.boolean(n, "exact_dropper_dynamics");
-  if (const YAML::Node n = ir["point_masses"]; n.IsDefined()) {
-    if (!n.IsSequence()) rd.fail(n, "point_masses", "expected a list of {x, mass}: x along the line (m), mass (kg)");
-    for (const auto& item : n) {
-      rd.keys(item, "point_masses", {"x", "mass"});
-      irr.point_masses.push_back({rd.number(rd.need(item, "x", "point_masses"), "x"),
-                                  rd.number(rd.need(item, "mass", "point_masses"), "mass")});
-    }
-  }
-}
-
 void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary::FeCatenaryData& d);
 
 void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
   const detail::Reader rd(path);
-  std::vector<std::string> top{"name", "type"};
-  top.insert(top.end(), kFeSections.begin(), kFeSections.end());
-  top.insert(top.end(), {"tension_sections", "overlap"});
+  std::vector<std::string> top{"name", "type", "contact", "tension_sections", "overlap"};
+  for (const catenary::FeSection& s : catenary::fe_sections()) top.push_back(s.name);
   rd.keys(root, "a finite-element catenary file", top);
   const bool sectioned = root["tension_sections"].IsDefined();
   if (root["overlap"].IsDefined() && !sectioned)
@@ -407,67 +384,34 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
   d.dropper_mass_per_length = d.clamp_mass_messenger = d.clamp_mass_contact = 0;
   d.support_mass = d.registration_mass = 0;
   d.messenger.EI = d.contact_wire.EI = 0;
-  for (const std::string& s : kFeSections) {
-    const YAML::Node sec = root[s];
+  for (const catenary::FeSection& s : catenary::fe_sections()) {  // every section's presence and keys first
+    const YAML::Node sec = root[s.name];
     if (!sec.IsDefined() || sec.IsNull()) {
-      if (kFeRequired.count(s))
-        rd.fail(root, s, fmt::format("missing in a finite-element catenary file; expected {}: {{{}}}", s,
-                                     fe_section_help(s)));
+      if (s.required)
+        rd.fail(root, s.name, fmt::format("missing in a finite-element catenary file; expected {}: {{{}}}", s.name,
+                                          fmt::join(children(s.name), ", ")));
       continue;
     }
-    if (s == "contact") continue;  // read_contact
-    if (s == "solver" && sec.IsScalar()) continue;  // `solver: modal`, the type alone
-    rd.keys(sec, s, fe_keys(s));
+    if (s.name == "solver" && sec.IsScalar()) continue;  // `solver: modal`, the type alone
+    check_keys(rd, sec, s.name, false);
   }
-  for (const FeField& f : fe_fields()) {
-    const YAML::Node sec = root[f.section];
-    if (!sec.IsDefined() || sec.IsNull() || !sec.IsMap()) continue;
-    const YAML::Node n = sec[f.key];
-    const bool section_spans = std::string(f.section) == "line" && std::string(f.key) == "spans";
-    if (sectioned && section_spans) {
-      if (n.IsDefined())
+  for (const catenary::FeSection& s : catenary::fe_sections()) {
+    const YAML::Node sec = root[s.name];
+    if (!sec.IsDefined() || sec.IsNull()) continue;
+    if (s.name == "solver" && sec.IsScalar()) {
+      const FeKey& type = *catenary::find_fe_key("solver.type");
+      if (std::find(type.choices.begin(), type.choices.end(), sec.Scalar()) == type.choices.end())
+        rd.fail(sec, "solver", fmt::format("expected {}, got '{}'", expected_text(type), sec.Scalar()));
+      read_key(rd, type, sec, d);
+      continue;
+    }
+    if (s.present) *s.present(d) = true;
+    if (s.name == "line" && sectioned)
+      if (const YAML::Node n = sec["spans"]; n.IsDefined())
         rd.fail(n, "spans", "a line of tension_sections takes its spans from its sections (tension_sections[k].spans); remove line.spans");
-      continue;
-    }
-    if (!n.IsDefined() || n.IsNull()) {
-      if (f.required) rd.fail(sec, f.key, fmt::format("missing in {}; expected a number ({})", f.section, f.unit));
-      continue;
-    }
-    const double v = rd.number(n, f.key);
-    f.set(d, f.integer ? fe_whole(rd, n, f.key, v) : v);
-  }
-  if (const YAML::Node sv = root["solver"]; sv.IsDefined() && sv.IsMap() && !sv["type"].IsDefined())
-    rd.fail(sv, "type",
-            "missing in solver; expected modal or direct (without it the line would be solved directly and the "
-            "section's modal keys — cutoff, window_behind, window_ahead — used for nothing)");
-  if (const YAML::Node sv = root["solver"]; sv.IsDefined() && (sv.IsScalar() || (sv.IsMap() && sv["type"].IsDefined()))) {
-    const YAML::Node tn = sv.IsScalar() ? sv : sv["type"];
-    const std::string t = tn.IsScalar() ? tn.Scalar() : "";
-    if (t != "modal" && t != "direct")
-      rd.fail(tn, sv.IsScalar() ? "solver" : "type", fmt::format("expected modal or direct, got '{}'", t));
-    d.solver = t == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
-  }
-  const YAML::Node drop = root["droppers"];
-  for (const char* k : {"x", "presag", "nominal_length"}) {
-    const YAML::Node n = drop[k];
-    if (!n.IsDefined() || n.IsNull()) {
-      if (std::string(k) != "nominal_length")
-        rd.fail(drop, k,
-                fmt::format("missing in droppers; expected a list of {} (m), one per dropper of a span",
-                            std::string(k) == "x" ? "positions from the span's first mast" : "contact-wire pre-sags, positive down"));
-      continue;
-    }
-    *fe_list(d, k) = fe_numbers(rd, n, k);
-  }
-  if (const YAML::Node rg = root["registration"]; rg.IsMap() && rg["uplift_limited"].IsDefined())  // a stop (issue 53)
-    d.registration_uplift_limited = rd.boolean(rg["uplift_limited"], "uplift_limited");
-  if (const YAML::Node st = root["stitch"]; st.IsDefined() && !st.IsNull()) read_fe_stitch(rd, st, d.stitch);
-  if (const YAML::Node ir = root["irregularity"]; ir.IsDefined() && !ir.IsNull()) read_fe_irregularity(rd, ir, d);
-  if (const YAML::Node sec = root["section"]; sec.IsDefined() && !sec.IsNull()) {
-    const YAML::Node n = rd.need(sec, "spans", "section");
-    if (!n.IsSequence() || n.size() != 2) rd.fail(n, "spans", "expected [first, last]: the spans of the analysis section (1-based)");
-    d.section_first = fe_whole(rd, n[0], "spans", rd.number(n[0], "spans"));
-    d.section_last = fe_whole(rd, n[1], "spans", rd.number(n[1], "spans"));
+    if (s.name == "wear" && sec["uniform"].IsDefined() && sec["profile"].IsDefined())
+      rd.fail(sec["profile"], "profile", "give either wear.uniform or wear.profile, not both");
+    read_keys(rd, root, d, s.name, false, sectioned ? "line.spans" : "");
   }
   if (sectioned) read_fe_sections(rd, root, d);
   c.contact = catenary::Contact{catenary::Contact::Kind::Penalty, 50e3, 0.0};
@@ -481,7 +425,7 @@ void read_fe(const std::string& path, const YAML::Node& root, Parsed& c) {
   }
   try {
     d.validate();
-  } catch (const InvalidArgument& e) {
+  } catch (const FeKeyError& e) {
     fe_fail(rd, root, e);
   }
 }
@@ -523,12 +467,14 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
                     "order, or a profile {x: [m from the overlap's first support], z: [m]}");
     for (const auto& item : h) v.push_back(rd.number(item, k));
   }
-  static const std::vector<std::string> own{"messenger", "contact_wire", "droppers", "supports", "registration"};
+  static const std::vector<std::string> own{"messenger", "contact_wire", "droppers", "supports", "registration", "stitch"};
   for (std::size_t k = 0; k < list.size(); ++k) {
     const YAML::Node sn = list[k];
     const std::string where = fmt::format("tension_sections[{}]", k);
     if (!sn.IsMap()) rd.fail(sn, where, "expected a section: {spans, anchors, and optionally span, messenger, contact_wire, droppers, stitch, supports, registration}");
-    rd.keys(sn, where, {"spans", "span", "anchors", "messenger", "contact_wire", "droppers", "stitch", "supports", "registration"});
+    std::vector<std::string> allowed{"spans", "span", "anchors"};
+    allowed.insert(allowed.end(), own.begin(), own.end());
+    rd.keys(sn, where, allowed);
     catenary::FeCatenaryData s = d;
     s.tension_sections.clear();
     s.section_first = s.section_last = -1;  // the analysis section is the whole line's (its spans), as --set's
@@ -551,60 +497,26 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
     }
     for (const std::string& sec : own) {  // the section's own values over the line's, key by key
       const YAML::Node o = sn[sec];
-      if (!o.IsDefined() || o.IsNull()) continue;
-      std::vector<std::string> allowed;
-      for (const FeField& f : fe_fields())
-        if (sec == f.section) allowed.emplace_back(f.key);
-      if (sec == "droppers") allowed.insert(allowed.end(), {"x", "presag"});
-      rd.keys(o, where + "." + sec, allowed);
-      for (const FeField& f : fe_fields())
-        if (sec == f.section)
-          if (const YAML::Node n = o[f.key]; n.IsDefined()) {
-            const double v = rd.number(n, f.key);
-            f.set(s, f.integer ? fe_whole(rd, n, f.key, v) : v);
-          }
-      if (sec == "droppers")
-        for (const char* l : {"x", "presag"})
-          if (const YAML::Node n = o[l]; n.IsDefined()) *fe_list(s, l) = fe_numbers(rd, n, l);
-    }
-    if (const YAML::Node st = sn["stitch"]; st.IsDefined()) {  // the line's stitch key by key; null: none here
-      if (st.IsNull()) s.stitch = catenary::FeStitch{};
-      else read_fe_stitch(rd, st, s.stitch);
+      if (!o.IsDefined()) continue;
+      if (sec == "stitch" && o.IsNull()) {  // null: no stitch in this section
+        s.stitch = catenary::FeStitch{};
+        continue;
+      }
+      if (o.IsNull()) continue;
+      check_keys(rd, o, sec, true);
+      if (sec == "stitch" && !s.stitch.present) {  // a stitch of its own: the whole section, as the line's
+        s.stitch.present = true;
+        read_keys(rd, sn, s, sec, false, "", where);
+        continue;
+      }
+      read_keys(rd, sn, s, sec, true, "", where);
     }
     d.tension_sections.push_back(std::move(s));
   }
   try {
     d.link_sections();
-  } catch (const InvalidArgument& e) {
-    // "tension_sections" + "[k].key", or "overlap" + "key[j]": at that node.
-    const std::string what = e.what(), key = e.parameter();
-    YAML::Node at = root;
-    if (what.find(": overlap:") != std::string::npos || what.rfind("finite-element catenary: overlap", 0) == 0) {
-      at.reset(ov);
-      std::string base = key.substr(0, key.find('['));
-      if (const auto dot = base.find('.'); dot != std::string::npos) {  // a profile's list: outgoing.x, incoming.z
-        if (const YAML::Node w = ov[base.substr(0, dot)]; w.IsMap()) at.reset(w);
-        base = base.substr(dot + 1);
-      }
-      if (const YAML::Node n = at.IsMap() ? at[base] : YAML::Node(); n.IsDefined()) {
-        at.reset(n);
-        if (const auto open = key.find('['); open != std::string::npos && n.IsSequence()) {
-          const std::size_t j = std::stoul(key.substr(open + 1));
-          if (j < n.size()) at.reset(n[j]);
-        }
-      }
-      rd.fail(at, "overlap." + key, e.problem());
-    }
-    at.reset(list);
-    if (key.size() > 1 && key[0] == '[') {
-      const std::size_t k = std::stoul(key.substr(1));
-      const std::string leaf = key.substr(key.find(']') + 2 <= key.size() ? key.find(']') + 2 : key.size());
-      if (k < list.size()) {
-        at.reset(list[k]);
-        if (const YAML::Node n = list[k][leaf]; !leaf.empty() && n.IsDefined()) at.reset(n);
-      }
-    }
-    rd.fail(at, "tension_sections" + (key == "tension_sections" ? std::string() : key), e.problem());
+  } catch (const FeKeyError& e) {
+    fe_fail(rd, root, e);
   }
 }
 
@@ -619,125 +531,108 @@ bool override_number(const std::string& text, double& v) {
   return r.ec == std::errc() && r.ptr == e;
 }
 
-// "section.key=value" on a finite-element catenary; returns false if no field has that name.
-bool set_fe(catenary::FeCatenaryData& d, const std::string& section, std::string key, const std::string& value,
-            const std::string& o) {
+// "path=value" (path: a schema key, a list's item as path[i]) on a finite-element catenary; false if no
+// key has that path.
+bool set_fe(catenary::FeCatenaryData& d, std::string path, const std::string& value, const std::string& o) {
+  using T = FeKey::Type;
+  int index = -1;
+  if (const auto open = path.find('['); open != std::string::npos && path.back() == ']') {
+    const std::string idx = path.substr(open + 1, path.size() - open - 2);
+    path.resize(open);
+    if (idx.empty() || idx.size() > 9 || idx.find_first_not_of("0123456789") != std::string::npos)
+      throw ModelError(fmt::format("--set '{}': expected {}[i]=value with i a whole number >= 0", o, path));
+    index = std::stoi(idx);
+  }
+  const FeKey* key = catenary::find_fe_key(path);
+  if (!key) return false;
+  const FeKey& k = *key;
+  if (k.path.rfind("stitch.", 0) == 0 && !d.stitch.present)
+    throw ModelError(fmt::format("--set '{}': the file has no stitch section (give one in the file: length, tension, "
+                                 "mass_per_length, droppers)", o));
+  if ((k.type == T::Numbers) != (index >= 0))
+    throw ModelError(index >= 0 ? fmt::format("--set '{}': {} is not a list", o, k.path)
+                                : fmt::format("--set '{}': {} is a list; set one value as {}[i]=value", o, k.path, k.path));
   auto number = [&]() {
     double v = 0;
     if (!override_number(value, v))
       throw ModelError(fmt::format("--set '{}': '{}' is not a number (a decimal number such as 16000 or 1.5e4)", o, value));
+    if (const std::string e = k.check(v); !e.empty() && k.type != T::Numbers)
+      throw ModelError(fmt::format("--set '{}': finite-element catenary: {}: {}: {}{}", o, k.section(), k.name(), e,
+                                   k.note.empty() ? "" : "; " + k.note));
     return v;
   };
-  auto whole = [&](double v) {
-    if (!(std::abs(v) < 1e9) || v != std::floor(v))
-      throw ModelError(fmt::format("--set '{}': expected a whole number, got {}", o, value));
-    return static_cast<int>(v);
-  };
-  if (section == "section" && key == "spans") {
-    const auto colon = value.find(':');
-    if (colon == std::string::npos)
-      throw ModelError(fmt::format("--set '{}': expected section.spans=FIRST:LAST, e.g. section.spans=4:7", o));
-    const std::string all = value;
-    const std::string first = all.substr(0, colon), last = all.substr(colon + 1);
-    auto parse = [&](const std::string& t) {
-      std::size_t used = 0;
-      int v = 0;
-      try {
-        v = std::stoi(t, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used == 0 || used != t.size())
-        throw ModelError(fmt::format("--set '{}': expected section.spans=FIRST:LAST with whole numbers", o));
-      return v;
-    };
-    d.section_first = parse(first);
-    d.section_last = parse(last);
-    return true;
-  }
-  if (section == "solver" && key == "type") {
-    if (value != "modal" && value != "direct") throw ModelError(fmt::format("--set '{}': expected solver.type=modal or direct", o));
-    d.solver = value == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
-    return true;
-  }
-  if (section == "registration" && key == "uplift_limited") {
-    if (value != "true" && value != "false")
-      throw ModelError(fmt::format("--set '{}': expected registration.uplift_limited=true or false", o));
-    d.registration_uplift_limited = value == "true";
-    return true;
-  }
-  if (section == "stitch") {
-    catenary::FeStitch& st = d.stitch;
-    if (key == "enabled") {
-      if (value != "true" && value != "false") throw ModelError(fmt::format("--set '{}': expected stitch.enabled=true or false", o));
-      if (!st.present) throw ModelError(fmt::format("--set '{}': the file has no stitch section", o));
-      st.enabled = value == "true";
+  const FeRef r = k.ref(d);
+  switch (k.type) {
+    case T::Number:
+      *std::get<double*>(r) = number();
       return true;
-    }
-    double* target = key == "length" ? &st.length : key == "tension" ? &st.wire.tension
-                   : key == "mass_per_length" ? &st.wire.mass_per_length : key == "EI" ? &st.wire.EI
-                   : key == "clamp_mass" ? &st.clamp_mass : key == "droppers.EA" ? &st.dropper_EA
-                   : key == "droppers.mass_per_length" ? &st.dropper_mass_per_length
-                   : key == "droppers.clamp_mass_stitch" ? &st.clamp_mass_stitch
-                   : key == "droppers.clamp_mass_contact" ? &st.clamp_mass_contact : nullptr;
-    if (!target) return false;
-    if (!st.present) throw ModelError(fmt::format("--set '{}': the file has no stitch section (give one in the file: length, tension, mass_per_length, droppers)", o));
-    *target = number();
-    return true;
-  }
-  if (section == "irregularity") {
-    catenary::FeIrregularity& irr = d.irregularity;
-    if (key == "dropper_length_std") {
-      irr.dropper_length_std = number();
-      return true;
-    }
-    if (key == "seed") {
+    case T::Whole: {
       const double v = number();
-      if (!(v >= 0 && v < 9007199254740992.0) || v != std::floor(v))
-        throw ModelError(fmt::format("--set '{}': expected a whole number from 0 to 2^53 − 1 = 9007199254740991 (exact as a number)", o));
-      irr.seed = static_cast<std::uint64_t>(v);
+      if (v != std::floor(v)) throw ModelError(fmt::format("--set '{}': expected a whole number, got {}", o, value));
+      if (auto p = std::get_if<int*>(&r)) **p = static_cast<int>(v);
+      else *std::get<std::uint64_t*>(r) = static_cast<std::uint64_t>(v);
       return true;
     }
-    if (key == "height_errors") {
-      read_height_errors(value, irr);
+    case T::Bool:
+      if (value != "true" && value != "false") throw ModelError(fmt::format("--set '{}': expected {}=true or false", o, k.path));
+      *std::get<bool*>(r) = value == "true";
+      return true;
+    case T::Choice:
+      if (std::find(k.choices.begin(), k.choices.end(), value) == k.choices.end())
+        throw ModelError(fmt::format("--set '{}': expected {}={}", o, k.path, expected_text(k)));
+      *std::get<catenary::FeCatenaryData::Solver*>(r) =
+          value == "modal" ? catenary::FeCatenaryData::Solver::Modal : catenary::FeCatenaryData::Solver::Direct;
+      return true;
+    case T::Numbers: {
+      std::vector<double>& list = *std::get<std::vector<double>*>(r);
+      if (static_cast<std::size_t>(index) >= list.size())
+        throw ModelError(fmt::format("--set '{}': {} has {} value(s), index 0 to {}", o, k.path, list.size(),
+                                     static_cast<long>(list.size()) - 1));
+      list[static_cast<std::size_t>(index)] = number();
       return true;
     }
-    if (key == "exact_dropper_dynamics") {
-      if (value != "true" && value != "false")
-        throw ModelError(fmt::format("--set '{}': expected irregularity.exact_dropper_dynamics=true or false", o));
-      irr.exact_dropper_dynamics = value == "true";
+    case T::Csv:
+      read_csv_profile(value, std::get<catenary::FeCsvRef>(r));
+      return true;
+    case T::SpanRange: {
+      const auto colon = value.find(':');
+      auto parse = [&](const std::string& t) {
+        std::size_t used = 0;
+        int v = 0;
+        try {
+          v = std::stoi(t, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != t.size())
+          throw ModelError(fmt::format("--set '{}': expected {}=FIRST:LAST with whole numbers, e.g. section.spans=4:7", o, k.path));
+        return v;
+      };
+      if (colon == std::string::npos) throw ModelError(fmt::format("--set '{}': expected {}=FIRST:LAST, e.g. section.spans=4:7", o, k.path));
+      const catenary::FeSpanRef s = std::get<catenary::FeSpanRef>(r);
+      *s.first = parse(value.substr(0, colon));
+      *s.last = parse(value.substr(colon + 1));
       return true;
     }
-    return false;
+    case T::PointMasses:
+      throw ModelError(fmt::format("--set '{}': {} is a list of {{x, mass}}; give it in the file", o, k.path));
   }
-  if (section == "droppers") {
-    if (const auto open = key.find('['); open != std::string::npos && key.back() == ']') {
-      const std::string idx = key.substr(open + 1, key.size() - open - 2);
-      std::vector<double>* list = fe_list(d, key.substr(0, open));
-      if (!list) return false;
-      if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos || std::stoul(idx) >= list->size())
-        throw ModelError(fmt::format("--set '{}': droppers.{} has {} value(s), index 0 to {}", o, key.substr(0, open),
-                                     list->size(), static_cast<long>(list->size()) - 1));
-      (*list)[std::stoul(idx)] = number();
-      return true;
-    }
-  }
-  for (const FeField& f : fe_fields())
-    if (section == f.section && key == f.key) {
-      const double v = number();
-      f.set(d, f.integer ? whole(v) : v);
-      return true;
-    }
   return false;
 }
 
 std::string fe_override_help() {
   std::string s;
-  for (const FeField& f : fe_fields()) s += fmt::format("{}.{}, ", f.section, f.key);
-  return s + "droppers.x[i], droppers.presag[i], droppers.nominal_length[i], section.spans=FIRST:LAST, solver.type=modal|direct, "
-             "stitch.enabled=true|false, stitch.length, stitch.tension, stitch.mass_per_length, stitch.EI, stitch.clamp_mass, "
-             "stitch.droppers.EA, irregularity.dropper_length_std, irregularity.seed, irregularity.height_errors=CSV, "
-             "irregularity.exact_dropper_dynamics=true|false, registration.uplift_limited=true|false, ";
+  for (const FeKey& k : catenary::fe_keys()) {
+    if (k.type == FeKey::Type::PointMasses) continue;
+    s += k.path;
+    if (k.type == FeKey::Type::Numbers) s += "[i]";
+    if (k.type == FeKey::Type::Choice) s += "=" + expected_text(k);
+    if (k.type == FeKey::Type::SpanRange) s += "=FIRST:LAST";
+    if (k.type == FeKey::Type::Bool) s += "=true|false";
+    if (k.type == FeKey::Type::Csv) s += "=CSV";
+    s += ", ";
+  }
+  return s;
 }
 
 void apply_override(Parsed& c, const std::string& o) {
@@ -748,13 +643,13 @@ void apply_override(Parsed& c, const std::string& o) {
   double v = 0;
   const bool is_number = override_number(value, v);
   if (c.type == Type::FiniteElement && section != "contact") {
-    if (!set_fe(c.fe, section, key, value, o))
+    if (!set_fe(c.fe, section + "." + key, value, o))
       throw ModelError(fmt::format("--set '{}': unknown key; expected {}contact.type, contact.stiffness, contact.damping",
                                    o, fe_override_help()));
     if (c.fe.sectioned() && section != "section") {  // a line of tension sections: every section
       if (section == "line" && key == "spans")
         throw ModelError(fmt::format("--set '{}': a line of tension sections takes its spans from its sections", o));
-      for (catenary::FeCatenaryData& s : c.fe.tension_sections) set_fe(s, section, key, value, o);
+      for (catenary::FeCatenaryData& s : c.fe.tension_sections) set_fe(s, section + "." + key, value, o);
       try {
         c.fe.link_sections();
       } catch (const InvalidArgument& e) {
@@ -823,7 +718,8 @@ CatenaryFile read_catenary(const std::string& path, const std::vector<std::strin
     for (auto it = root.begin(); it != root.end(); ++it) {
       std::string k = it->first.as<std::string>();
       if (!seen.insert(k).second) yaml_fail(path, it->first, k, "duplicate key; give each key once");
-      const bool fe_section = std::find(kFeSections.begin(), kFeSections.end(), k) != kFeSections.end() && k != "contact";
+      const auto& sections = catenary::fe_sections();
+      const bool fe_section = std::any_of(sections.begin(), sections.end(), [&](const catenary::FeSection& s) { return s.name == k; });
       if (k != "name" && k != "type" && k != body && k != "contact")
         yaml_fail(path, it->first, k,
                   fmt::format("unknown key; expected name, type, {}, contact{}", body,

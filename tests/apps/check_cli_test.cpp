@@ -37,7 +37,7 @@ TEST_F(CheckCli, AFiniteElementCatenaryFilePrintsItsLineWireSpeedsAndMesh) {
   EXPECT_TRUE(contains(r.out, "wave speed sqrt(T/rho A) = 121.72 m/s (438.2 km/h)")) << r.out;
   EXPECT_TRUE(contains(r.out, "wave speed sqrt(T/rho A) = 127.66 m/s (459.6 km/h)")) << r.out;
   EXPECT_TRUE(contains(r.out, "droppers: 9 a span, 90 in all")) << r.out;
-  EXPECT_TRUE(contains(r.out, "mesh: element length <= 0.25 m")) << r.out;
+  EXPECT_TRUE(contains(r.out, "\n  mesh: element_length 0.25 m\n")) << r.out;
   EXPECT_TRUE(contains(r.out, "contact: penalty, k_s = 50000 N/m")) << r.out;
   EXPECT_TRUE(contains(r.out, "\nok\n")) << r.out;
 }

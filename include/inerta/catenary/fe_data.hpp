@@ -7,6 +7,7 @@
 
 #include "inerta/catenary/fe_irregularity.hpp"
 #include "inerta/catenary/fe_stitch.hpp"
+#include "inerta/catenary/fe_wear.hpp"
 #include "inerta/catenary/fe_wire.hpp"
 
 namespace inerta::catenary {
@@ -50,6 +51,7 @@ struct FeCatenaryData {
   int section_first = -1, section_last = -1;  ///< analysis section: spans first..last (1-based); −1: default
   FeStitch stitch;            ///< none unless stitch.present
   FeIrregularity irregularity;
+  FeWear wear;               ///< contact-wire wear (none: 100 %)
   bool has_stitch() const { return stitch.present && stitch.enabled; }
 
   // A tension section of a longer line (docs/catenary-fe.md "Tension sections and overlaps").
