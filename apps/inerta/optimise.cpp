@@ -151,9 +151,6 @@ struct OptimiseArgs {
 // `optimise --workers N | --scheduler ADDRESS`: the study on Dask, by the Python module's driver
 // (python/inerta/distributed.py), which this process becomes (exit code and Ctrl-C are its).
 int run_distributed(const OptimiseArgs& a) {
-  if (io::is_model_study(a.study))
-    throw InvalidArgument(fmt::format("--workers/--scheduler: {} is a model study; only J2 studies (catenary:) are "
-                                      "distributed so far — run it without", a.study));
   if (a.map != 15) throw InvalidArgument("--map: not available with --workers/--scheduler (the report uses the default map)");
   if (a.max_seconds > 0)
     throw InvalidArgument("--max-seconds: not available with --workers/--scheduler (the cluster's cost is not estimated); "
