@@ -8,7 +8,6 @@
 #include "install.hpp"
 #include "inerta/io/model_study_results.hpp"
 #include "inerta/io/study_outcome.hpp"
-#include "inerta/optim/model_study_run.hpp"
 #include "inerta/optim/study_run.hpp"
 
 #include <fmt/format.h>
@@ -68,53 +67,22 @@
 
 namespace inerta::cli {
 
-// `inerta optimise STUDY` of a model study (objective rms | hinf | peak): optim::run_model_study, its table,
-// its files (moved from linear.cpp: the optimise command in one file, issue 51).
+// `inerta optimise STUDY` of a model study (objective rms | hinf | peak): the study engine (optim::run_study),
+// its table, its files.
 namespace {
-// The table of a model study after its searches (the default, each layout, the best; the structure
-// summary for layouts: all).
+// After the searches: the table (io::model_study_table), and for layouts: all the structure summary.
 void print_model_study(const optim::ModelStudyResult& run) {
-  const optim::ModelStudy& study = run.study;
-  const optim::Objective& o = study.objective;
-  const network::Network& baseline = run.baseline;
-  const optim::ModelCost& def = run.baseline_cost;
-  const auto& results = run.results;
-  fmt::print("\n  {:<14} {:<14} {:>12} {:>10}", "layout", "network", "J", "vs default");
-  for (const auto& w : o.outputs) fmt::print(" {:>12}", w.name);
-  for (const auto& lim : o.limits) fmt::print(" {:>12}", lim.output + "≤" + fmt::format("{:g}", lim.limit));
-  fmt::print("  values (SI)\n");
-  auto row = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, const std::string& values,
-                 const std::string& bounds, bool exhausted) {
-    fmt::print("  {:<14} {:<14} {:>12.6g} {:>9.1f}%", layout, expr, c.J, 100 * (c.J - def.J) / def.J);
-    for (double v : c.values) fmt::print(" {:>12.5g}", v);
-    for (double v : c.limit_values) fmt::print(" {:>12.5g}", v);
-    fmt::print("  {}{}{}{}\n", values, bounds.empty() ? "" : "  at limits: " + bounds, c.feasible ? "" : "  INFEASIBLE",
-               exhausted ? "  budget exhausted (max_evaluations reached before min_step)" : "");
-  };
-  row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "", false);
-  const std::size_t shown = study.all ? 25 : results.size();
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const auto& r = results[i];
-    if (i == shown) fmt::print("  … {} more in results.csv (with --out)\n", results.size() - shown);
-    std::string values, bounds;
-    for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
-    for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
-    if (i < shown) row(r.layout, r.expression, r.cost, values, bounds, r.budget_exhausted);
-  }
-  const auto& best = results[run.best];
-  fmt::print("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n", network::to_string(baseline, true),
-             def.J, best.layout, best.expression, best.cost.J, 100 * (best.cost.J - def.J) / def.J, run.seconds);
-  if (study.all) {
-    print_structure(run.entries, def.J, "", 0);
+  fmt::print("{}", io::model_study_table(run));
+  if (run.study.all) {
+    print_structure(run.entries, run.baseline_cost.J, "", 0);
     int evaluations = 0;
     for (const auto& e : run.entries) evaluations += e.evaluations;
     fmt::print("{} networks, {} evaluations in {:.1f} s ({:.0f} evaluations/s)\n", run.entries.size(), evaluations,
                run.seconds, evaluations / run.seconds);
   }
 }
-}  // namespace
 
-int run_model_study(const std::string& path, const std::string& out, bool plots) {
+int optimise_model_study(const std::string& path, const std::string& out, bool plots) {
   const optim::ModelStudy study = io::load_model_study(path);
   const bool tty = isatty(STDOUT_FILENO);
   fmt::print("study {}: model {}, strut '{}', objective {}, {} layouts, {} starts (seed {})\n", study.name, study.model.name,
@@ -166,6 +134,7 @@ int run_model_study(const std::string& path, const std::string& out, bool plots)
   }
   return 0;
 }
+}  // namespace
 
 namespace optimise_command {
 namespace {
@@ -182,9 +151,6 @@ struct OptimiseArgs {
 // `optimise --workers N | --scheduler ADDRESS`: the study on Dask, by the Python module's driver
 // (python/inerta/distributed.py), which this process becomes (exit code and Ctrl-C are its).
 int run_distributed(const OptimiseArgs& a) {
-  if (io::is_model_study(a.study))
-    throw InvalidArgument(fmt::format("--workers/--scheduler: {} is a model study; only J2 studies (catenary:) are "
-                                      "distributed so far — run it without", a.study));
   if (a.map != 15) throw InvalidArgument("--map: not available with --workers/--scheduler (the report uses the default map)");
   if (a.max_seconds > 0)
     throw InvalidArgument("--max-seconds: not available with --workers/--scheduler (the cluster's cost is not estimated); "
@@ -423,7 +389,7 @@ class Printer : public optim::StudyEvents {
 int cmd_optimise(const OptimiseArgs& a) {
   if (a.workers > 0 || !a.scheduler.empty()) return run_distributed(a);
   if (!a.out.empty()) io::prepare_output_folder(a.out, io::study_output_names(), a.force);  // before any computation
-  if (io::is_model_study(a.study)) return inerta::cli::run_model_study(a.study, a.out, !a.no_plots);
+  if (io::is_model_study(a.study)) return inerta::cli::optimise_model_study(a.study, a.out, !a.no_plots);
   optim::Study study = io::load_study(a.study);
   const bool tty = isatty(STDOUT_FILENO);
   if (study.all && study.coarse)

@@ -63,7 +63,7 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
     ``layout``, ``expression``, ``values`` and ``J2``.
 
     study: a Study, a ModelStudy or a study file's path. client: a dask.distributed.Client — the engine's
-    searches and evaluations become Dask tasks (inerta.distributed.DaskExecutor; J2 studies from a file),
+    searches and evaluations become Dask tasks (inerta.distributed.DaskExecutor; studies from a file),
     the outcome equal to the serial run's; ``checkpoint`` (default ``out/checkpoint.pkl``) keeps what
     finished, and the same call again resumes there. progress(event, *values): see run_study. force:
     replace the result files in ``out`` (and start afresh). stats: a dict that receives the Dask tasks
@@ -94,9 +94,6 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
             raise TypeError(f"optimise: checkpoint: expected a file's path, got {type(checkpoint).__name__}")
     executor = None
     if client is not None:
-        if isinstance(study, _inerta.ModelStudy):
-            raise ValueError(f"{study.name}: a model study runs in this process; only J2 studies (catenary:) are "
-                             "distributed so far — call inerta.optimise without client")
         from . import distributed
 
         if checkpoint is None and out is not None:

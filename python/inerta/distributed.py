@@ -11,7 +11,8 @@ puts the results back in order, so a distributed run gives the serial run's numb
   (milliseconds an evaluation) one task per search (a layout, or a network of ``layouts: all`` with the
   warm start from its sub-networks, the networks of one size at once); in the time domain one task per
   design (each search runs here in a thread and sends its polls' designs to the workers, all searches at
-  once). Each finished search, design and check is written to the checkpoint at once; a study started
+  once); a model study's the same way (its layouts a task each, in turn; a network of ``layouts: all`` a
+  task). Each finished search, design and check is written to the checkpoint at once; a study started
   again with the same checkpoint runs only what it lacks and evaluates no design twice (the engine is
   deterministic: it replays to where it stopped).
 
@@ -96,8 +97,12 @@ def sweep(model, catenary, speeds, client, *, progress=None, **kwargs):
 
 # ---- Studies: the study engine's evaluations as Dask tasks ------------------------------------------
 
+def _load(path):
+    return _inerta.load_model_study(path) if _inerta.is_model_study(path) else _inerta.load_study(path)
+
+
 def _study(path, stamp):
-    return _cached(("study", path, stamp), lambda: _inerta.load_study(path))
+    return _cached(("study", path, stamp), lambda: _load(path))
 
 
 def _search_task(path, stamp, task):
@@ -144,7 +149,8 @@ class DaskExecutor(_inerta.StudyExecutor):
     become tasks, results equal to the serial run's. By the periodic fast path (milliseconds an evaluation)
     one task per search (a layout, or a network of layouts: all with its warm start); in the time domain one
     task per design: each search runs here in a thread and sends every poll's designs to the workers, all
-    searches at once. The time-domain checks (the default, the re-checks) are a task each. Every finished
+    searches at once. The checks (the default, the re-checks) are a task each. A model study (ModelStudy) goes
+    through the same methods: its searches and checks are tasks. Every finished
     search, design and check is written to the checkpoint at once; a study started again with it runs only
     what it lacks (the engine is deterministic: it replays to where it stopped)."""
 
@@ -213,7 +219,7 @@ class DaskExecutor(_inerta.StudyExecutor):
             return results
         # A time-domain search runs here and sends its designs; a coarse one (the exhaustive search of a
         # multi-fidelity layouts: all, by the periodic fast path) is a task of its own.
-        if study.method == "time" and not any(tasks[i].coarse for i in todo):
+        if isinstance(study, _inerta.Study) and study.method == "time" and not any(tasks[i].coarse for i in todo):
             with concurrent.futures.ThreadPoolExecutor(max_workers=len(todo)) as pool:
                 running = {pool.submit(_inerta.run_search, study, tasks[i], batch=self._batch(tasks[i].layout)): i
                            for i in todo}
@@ -248,6 +254,92 @@ def optimise(study, client, *, out=None, checkpoint=None, progress=None, stats=N
     from . import optimise as _optimise
 
     return _optimise(study, out=out, client=client, progress=progress, checkpoint=checkpoint, force=force, stats=stats)
+
+
+def _j2_progress(study):
+    """The driver's view of a J2 study's progress events (the CLI's lines and tables)."""
+    objective, unit = ("J2", " N") if study.objective == "j2" else ("sigma/F_m", "")
+
+    def report(event, *values):
+        if event == "searched":
+            i, r = values
+            print(f"  [{i + 1}/{len(study.layouts)}] {study.layouts[i]:<12} J = {r.cost.J:.4f}{unit} after "
+                  f"{r.evaluations} evaluations", flush=True)
+        elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
+            print(f"  [{values[0]}/{values[1]}] networks, best {objective} so far {values[2]:.4f}{unit}", flush=True)
+        elif event == "screening":
+            print(f"\n  screening the best {len(values[0])} distinct reduced networks of the coarse search on this study "
+                  f"(each at its coarse optimum); the best {study.refine_networks} by that are refined", flush=True)
+        elif event == "refining":
+            stage = "screen" if study.refine_screen > study.refine_networks else "coarse search"
+            print(f"\n  refining the best {len(values[0])} distinct reduced networks of the {stage} on this study:",
+                  flush=True)
+        elif event == "refined":
+            k, r = values
+            print(f"    {k + 1}. {r.expression:<28} here {r.coarse_here.J:.4f}{unit} -> refined {r.cost.J:.4f}{unit} after "
+                  f"{r.evaluations} evaluations" + ("" if r.cost.feasible else f"; outside the limits: {r.cost.violation}"),
+                  flush=True)
+        elif event == "searches_done":
+            o = values[0]
+            if study.all_networks and study.coarse is not None:
+                print(f"\n  the refined networks, ranked by this study's {objective} (default {o.default_cost.J:.4f}{unit}):")
+                for r, f in zip(o.results, o.refinements):
+                    if r.stock:  # the stock suspension, ranked with them (a commissioned study)
+                        print(f"    {'default ' + r.expression:<28} {r.cost.J:.4f}{unit}"
+                              + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
+                        continue
+                    e = o.entries[f.entry]
+                    print(f"    {r.expression:<28} coarse {e.J:.4f}{unit} (#{f.coarse_rank}"
+                          + (f", screen #{f.screen_rank}" if f.screen_rank else "") + f"), start {r.coarse_here.J:.4f}{unit}, "
+                          f"refined {r.cost.J:.4f}{unit}" + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
+                if o.screened and o.rank_agreement == o.rank_agreement:
+                    print(f"    rank agreement with this study's order (Spearman): the screen's {o.rank_agreement:.3f}, "
+                          f"the coarse search's {o.coarse_rank_agreement:.3f}")
+                elif o.rank_agreement == o.rank_agreement:
+                    print(f"    rank agreement of the coarse and the fine stage (Spearman): {o.rank_agreement:.3f}")
+            elif study.all_networks:
+                print("\n  best networks (periodic fast path):")
+                for r in o.results[:10]:
+                    print(f"    {r.expression:<40} J2 = {r.cost.J:.4f} N")
+                print("  time-domain re-check (ranked by the time-domain J2):")
+                for c in o.rechecks:
+                    e = o.entries[c.entry]
+                    print(f"    {e.reduced:<44} periodic {e.J:.4f} N, time "
+                          + (f"{c.time.J:.4f} N" if not c.failure else f"failed ({c.failure})"))
+            else:
+                print(_inerta.study_table(study, o.default_cost, o.results), end="")
+            print(f"default suspension {objective} = {o.default_cost.J:.4f}{unit} at {o.default_cost.speed * 3.6:.0f} km/h; "
+                  f"wall {o.seconds:.1f} s", flush=True)
+        elif event == "bound":
+            b = values[0]
+            print(f"  admittance bound, degree {b.result.degree}: J = {b.result.J:.6g} N", flush=True)
+        elif event == "report" and values[2]:
+            print(f"  [{values[0]}/{values[1]}] {values[2]}", flush=True)
+
+    return report
+
+
+def _model_progress(study):
+    """The driver's view of a model study's progress events (the CLI's lines and table)."""
+    n = len(study.layouts)
+
+    def report(event, *values):
+        if event == "searched":
+            i, r = values
+            print(f"  [{i + 1}/{n}] {study.layouts[i]:<14} J = {r.cost.J:.6g}"
+                  + ("" if r.cost.feasible else " (a limit is exceeded)") + f" after {r.evaluations} evaluations", flush=True)
+        elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
+            print(f"  [{values[0]}/{values[1]}] networks, best J so far {values[2]:.6g}", flush=True)
+        elif event == "searches_done":
+            m = values[0].model
+            print(_inerta.model_study_table(m), end="")
+            if m.entries:
+                print(f"{len(m.entries)} networks, {sum(e.evaluations for e in m.entries)} evaluations", flush=True)
+        elif event == "bound":
+            b = values[0]
+            print(f"  admittance bound, degree {b.result.degree}: J = {b.result.J:.6g}", flush=True)
+
+    return report
 
 
 def _client(args):
@@ -295,87 +387,34 @@ def _main(argv=None):
         p.error("--scheduler: empty; expected the address of a running scheduler, tcp://HOST:PORT")
     checkpoint = args.checkpoint or (os.path.join(args.out, "checkpoint.pkl") if args.out else None)
     resuming = bool(checkpoint) and os.path.exists(checkpoint) and not args.force
-    study = _inerta.load_study(args.study)
+    study = _load(args.study)
     client, cluster = _client(args)
     try:
         n = len(client.scheduler_info()["workers"])
         print(f"study {args.study}: on {n} Dask worker(s) at {client.scheduler.address}"
               + (f", {'resuming from' if resuming else 'checkpoint'} {checkpoint}" if checkpoint else ""), flush=True)
 
-        objective, unit = ("J2", " N") if study.objective == "j2" else ("sigma/F_m", "")
-
-        def report(event, *values):
-            if event == "searched":
-                i, r = values
-                print(f"  [{i + 1}/{len(study.layouts)}] {study.layouts[i]:<12} J = {r.cost.J:.4f}{unit} after "
-                      f"{r.evaluations} evaluations", flush=True)
-            elif event == "network" and (values[0] == values[1] or values[0] % max(1, values[1] // 20) == 0):
-                print(f"  [{values[0]}/{values[1]}] networks, best {objective} so far {values[2]:.4f}{unit}", flush=True)
-            elif event == "screening":
-                print(f"\n  screening the best {len(values[0])} distinct reduced networks of the coarse search on this study "
-                      f"(each at its coarse optimum); the best {study.refine_networks} by that are refined", flush=True)
-            elif event == "refining":
-                stage = "screen" if study.refine_screen > study.refine_networks else "coarse search"
-                print(f"\n  refining the best {len(values[0])} distinct reduced networks of the {stage} on this study:",
-                      flush=True)
-            elif event == "refined":
-                k, r = values
-                print(f"    {k + 1}. {r.expression:<28} here {r.coarse_here.J:.4f}{unit} -> refined {r.cost.J:.4f}{unit} after "
-                      f"{r.evaluations} evaluations" + ("" if r.cost.feasible else f"; outside the limits: {r.cost.violation}"),
-                      flush=True)
-            elif event == "searches_done":
-                o = values[0]
-                if study.all_networks and study.coarse is not None:
-                    print(f"\n  the refined networks, ranked by this study's {objective} (default {o.default_cost.J:.4f}{unit}):")
-                    for r, f in zip(o.results, o.refinements):
-                        if r.stock:  # the stock suspension, ranked with them (a commissioned study)
-                            print(f"    {'default ' + r.expression:<28} {r.cost.J:.4f}{unit}"
-                                  + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
-                            continue
-                        e = o.entries[f.entry]
-                        print(f"    {r.expression:<28} coarse {e.J:.4f}{unit} (#{f.coarse_rank}"
-                              + (f", screen #{f.screen_rank}" if f.screen_rank else "") + f"), start {r.coarse_here.J:.4f}{unit}, "
-                              f"refined {r.cost.J:.4f}{unit}" + ("" if r.cost.feasible else f"; outside: {r.cost.violation}"))
-                    if o.screened and o.rank_agreement == o.rank_agreement:
-                        print(f"    rank agreement with this study's order (Spearman): the screen's {o.rank_agreement:.3f}, "
-                              f"the coarse search's {o.coarse_rank_agreement:.3f}")
-                    elif o.rank_agreement == o.rank_agreement:
-                        print(f"    rank agreement of the coarse and the fine stage (Spearman): {o.rank_agreement:.3f}")
-                elif study.all_networks:
-                    print("\n  best networks (periodic fast path):")
-                    for r in o.results[:10]:
-                        print(f"    {r.expression:<40} J2 = {r.cost.J:.4f} N")
-                    print("  time-domain re-check (ranked by the time-domain J2):")
-                    for c in o.rechecks:
-                        e = o.entries[c.entry]
-                        print(f"    {e.reduced:<44} periodic {e.J:.4f} N, time "
-                              + (f"{c.time.J:.4f} N" if not c.failure else f"failed ({c.failure})"))
-                else:
-                    print(_inerta.study_table(study, o.default_cost, o.results), end="")
-                print(f"default suspension {objective} = {o.default_cost.J:.4f}{unit} at {o.default_cost.speed * 3.6:.0f} km/h; "
-                      f"wall {o.seconds:.1f} s", flush=True)
-            elif event == "bound":
-                b = values[0]
-                print(f"  admittance bound, degree {b.result.degree}: J = {b.result.J:.6g} N", flush=True)
-            elif event == "report" and values[2]:
-                print(f"  [{values[0]}/{values[1]}] {values[2]}", flush=True)
-
+        report = _model_progress(study) if isinstance(study, _inerta.ModelStudy) else _j2_progress(study)
         out = args.out or None
         o = optimise(args.study, client, out=out, checkpoint=checkpoint, progress=report, force=args.force)
     finally:
         client.close()
         if cluster is not None:
             cluster.close()
+    model = isinstance(study, _inerta.ModelStudy)
     if args.out:
         print(f"wrote the study's files in {args.out} (as `inerta optimise --out`)")
         scripts = os.path.join(_inerta.data_dir(), "scripts")
         if not args.no_plots:
             import subprocess
 
-            for name in (["plot-structure"] if study.all_networks else []) + ["plot-study"]:
+            every = bool(o.model.entries) if model else study.all_networks
+            for name in (["plot-structure"] if every else []) + ["plot-model-study" if model else "plot-study"]:
                 script = os.path.join(scripts, name)
                 if not (os.path.exists(script) and subprocess.run([sys.executable, script, args.out]).returncode == 0):
                     print(f"note: no plots (scripts/{name} not found or failed); the CSV files in {args.out} are complete")
+    if model:  # the table's last line names the best design
+        return 0
     best = o.results[o.best.index]
     stock = "the stock suspension " if o.stock_best else ""
     if study.method == "time" and study.objective == "sigma_over_mean":

@@ -127,7 +127,16 @@ void bind_linear(py::module_& m) {
       .def_readonly("values", &optim::ModelCost::values)
       .def_readonly("limit_values", &optim::ModelCost::limit_values)
       .def_readonly("frequency", &optim::ModelCost::frequency)
-      .def_readonly("feasible", &optim::ModelCost::feasible);
+      .def_readonly("feasible", &optim::ModelCost::feasible)
+      .def(py::pickle(  // exact (Dask workers return model studies' results, docs/distributed.md)
+          [](const optim::ModelCost& c) { return py::make_tuple(c.J, c.penalised, c.values, c.limit_values, c.frequency, c.feasible); },
+          [](const py::tuple& t) {
+            optim::ModelCost c;
+            c.J = t[0].cast<double>(), c.penalised = t[1].cast<double>();
+            c.values = t[2].cast<std::vector<double>>(), c.limit_values = t[3].cast<std::vector<double>>();
+            c.frequency = t[4].cast<double>(), c.feasible = t[5].cast<bool>();
+            return c;
+          }));
   py::class_<optim::ModelLayoutResult>(m, "ModelLayoutResult", "The optimum of one layout of a model study.")
       .def_readonly("layout", &optim::ModelLayoutResult::layout)
       .def_readonly("expression", &optim::ModelLayoutResult::expression)
@@ -135,7 +144,18 @@ void bind_linear(py::module_& m) {
       .def_readonly("at_bounds", &optim::ModelLayoutResult::at_bounds)
       .def_readonly("cost", &optim::ModelLayoutResult::cost)
       .def_readonly("evaluations", &optim::ModelLayoutResult::evaluations)
-      .def_readonly("budget_exhausted", &optim::ModelLayoutResult::budget_exhausted, "the search stopped at max_evaluations");
+      .def_readonly("budget_exhausted", &optim::ModelLayoutResult::budget_exhausted, "the search stopped at max_evaluations")
+      .def(py::pickle(
+          [](const optim::ModelLayoutResult& r) {
+            return py::make_tuple(r.layout, r.expression, r.values, r.at_bounds, r.cost, r.evaluations, r.budget_exhausted);
+          },
+          [](const py::tuple& t) {
+            optim::ModelLayoutResult r;
+            r.layout = t[0].cast<std::string>(), r.expression = t[1].cast<std::string>();
+            r.values = t[2].cast<network::Params>(), r.at_bounds = t[3].cast<std::vector<std::string>>();
+            r.cost = t[4].cast<optim::ModelCost>(), r.evaluations = t[5].cast<int>(), r.budget_exhausted = t[6].cast<bool>();
+            return r;
+          }));
   m.def("default_network", &optim::default_network, py::arg("study"), "The study strut's own network.");
   m.def("evaluate_model", [](const ModelStudy& s, const std::string& layout, const network::Params& p) {
     py::gil_scoped_release release;

@@ -9,7 +9,7 @@
 #include "inerta/network/synthesis.hpp"
 #include "inerta/optim/admittance_search.hpp"
 #include "inerta/optim/structure_search.hpp"
-#include "inerta/optim/model_study_run.hpp"
+#include "inerta/optim/study_run.hpp"
 #include "inerta/io/model_study_results.hpp"
 
 namespace inerta::python {
@@ -163,22 +163,29 @@ void bind_structure_search(py::module_& m) {
       .def_readonly("seconds", &optim::ModelStudyResult::seconds, "wall time, s");
   m.def("run_model_study", [](const optim::ModelStudy& s, const py::object& progress) {
     return run(progress, [&](Call& call) {
-      optim::ModelStudyProgress p;
-      double best = std::numeric_limits<double>::infinity();
-      p.finished = [&](std::size_t l, const optim::ModelLayoutResult& r) {
-        best = std::min(best, r.cost.J);
-        call.post([done = static_cast<int>(l) + 1, total = static_cast<int>(s.layouts.size()), b = best](const py::object& cb) {
-          cb(done, total, b);
-        });
-      };
-      p.structure = [&call](const optim::StructureProgress& q) {
-        call.post([done = q.done, total = q.total, b = q.best_J](const py::object& cb) { cb(done, total, b); });
-      };
-      return optim::run_model_study(s, p);
+      // The study engine's events as progress(done, total, best J) after each layout or network.
+      struct Events : optim::StudyEvents {
+        Call& call;
+        int total;
+        double best = std::numeric_limits<double>::infinity();
+        Events(Call& c, int n) : call(c), total(n) {}
+        using optim::StudyEvents::searched;
+        void searched(std::size_t l, const optim::ModelLayoutResult& r) override {
+          best = std::min(best, r.cost.J);
+          call.post([done = static_cast<int>(l) + 1, n = total, b = best](const py::object& cb) { cb(done, n, b); });
+        }
+        void network(const optim::StructureProgress& q) override {
+          call.post([done = q.done, n = q.total, b = q.best_J](const py::object& cb) { cb(done, n, b); });
+        }
+      } events(call, static_cast<int>(s.layouts.size()));
+      return *optim::run_study(s, {}, &events).model;
     });
   }, py::arg("study"), py::kw_only(), py::arg("progress") = py::none(),
-        "Runs a model study as `inerta optimise` does (the default, then each layout warm-started, or the structure "
-        "search for layouts: all); progress(done, total, best J) after each layout or network.");
+        "Runs a model study as `inerta optimise` does (the study engine, optim::run_study: the default, then each layout "
+        "warm-started, or the structure search for layouts: all); its ModelStudyResult. progress(done, total, best J) "
+        "after each layout or network.");
+  m.def("model_study_table", &io::model_study_table, py::arg("result"),
+        "The table `inerta optimise` prints for a model study (io::model_study_table), as text.");
   m.def("model_study_figures", [](const optim::ModelStudyResult& r) {
     py::gil_scoped_release release;
     return optim::model_study_figures(r);

@@ -10,18 +10,27 @@ namespace inerta::python {
 
 namespace {
 
-using DoneFn = std::function<void(std::size_t, const optim::LayoutResult&)>;
-using SearchingFn = std::function<void(std::size_t, int, int, double)>;
+using Searching = optim::StudyExecutor::Searching;
+template <class Result>
+using Done = optim::StudyExecutor::Done<Result>;
 
-// A StudyExecutor written in Python (inerta.distributed's Dask executor).
+// A StudyExecutor written in Python (inerta.distributed's Dask executor): search(study, tasks, done, searching)
+// and check(study, tasks) for either kind of study.
 class PyStudyExecutor : public optim::StudyExecutor {
  public:
   std::vector<optim::LayoutResult> search(const optim::Study& study, const std::vector<optim::SearchTask>& tasks,
-                                          const DoneFn& done, const SearchingFn& searching) override {
+                                          const Done<optim::LayoutResult>& done, const Searching& searching) override {
     PYBIND11_OVERRIDE_PURE(std::vector<optim::LayoutResult>, optim::StudyExecutor, search, study, tasks, done, searching);
+  }
+  std::vector<optim::ModelLayoutResult> search(const optim::ModelStudy& study, const std::vector<optim::SearchTask>& tasks,
+                                               const Done<optim::ModelLayoutResult>& done, const Searching& searching) override {
+    PYBIND11_OVERRIDE_PURE(std::vector<optim::ModelLayoutResult>, optim::StudyExecutor, search, study, tasks, done, searching);
   }
   std::vector<optim::CheckResult> check(const optim::Study& study, const std::vector<optim::CheckTask>& tasks) override {
     PYBIND11_OVERRIDE_PURE(std::vector<optim::CheckResult>, optim::StudyExecutor, check, study, tasks);
+  }
+  std::vector<optim::ModelCheckResult> check(const optim::ModelStudy& study, const std::vector<optim::CheckTask>& tasks) override {
+    PYBIND11_OVERRIDE_PURE(std::vector<optim::ModelCheckResult>, optim::StudyExecutor, check, study, tasks);
   }
 };
 
@@ -120,14 +129,43 @@ void bind_study_run(py::module_& m) {
   m.def("run_check", [](const optim::Study& s, const optim::CheckTask& task) {
     return run(py::none(), [&](Call&) { return optim::run_check(s, task); });
   }, py::arg("study"), py::arg("task"), "What a check task computes: evaluate or evaluate_time of its design.");
+  py::class_<optim::ModelCheckResult>(m, "ModelCheckResult", "A model study's design cost, or why its evaluation failed.")
+      .def_readonly("cost", &optim::ModelCheckResult::cost)
+      .def_readonly("failure", &optim::ModelCheckResult::failure, "a numerical failure's message, or ''")
+      .def(py::pickle([](const optim::ModelCheckResult& r) { return py::make_tuple(r.cost, r.failure); },
+                      [](const py::tuple& t) {
+                        return optim::ModelCheckResult{t[0].cast<optim::ModelCost>(), t[1].cast<std::string>()};
+                      }));
+  m.def("run_search", [](const optim::ModelStudy& s, const optim::SearchTask& task) {
+    return run(py::none(), [&](Call&) { return optim::run_search(s, task); });
+  }, py::arg("study"), py::arg("task"),
+        "The same for a model study: optimise_layout with the task's warm starts; a network of layouts: all pruned.");
+  m.def("run_check", [](const optim::ModelStudy& s, const optim::CheckTask& task) {
+    return run(py::none(), [&](Call&) { return optim::run_check(s, task); });
+  }, py::arg("study"), py::arg("task"), "The same for a model study: evaluate of its design.");
+  m.def("best_design", &optim::best_design, py::arg("penalised"),
+        "The one rule for a study's best design: the index of the first smallest penalised cost.");
 
   py::class_<optim::StudyExecutor, PyStudyExecutor>(
       m, "StudyExecutor",
-      "Where a study's evaluations run (subclass it: search(study, tasks, done, searching) -> [LayoutResult], "
-      "calling done(i, result) as each finishes; check(study, tasks) -> [CheckResult]); inerta.distributed's runs them on Dask.")
+      "Where a study's evaluations run (subclass it: search(study, tasks, done, searching) -> [LayoutResult] (a model "
+      "study: [ModelLayoutResult]), calling done(i, result) as each finishes; check(study, tasks) -> [CheckResult] "
+      "([ModelCheckResult]); study is a Study or a ModelStudy); inerta.distributed's runs them on Dask.")
       .def(py::init<>())
-      .def("search", &optim::StudyExecutor::search, py::arg("study"), py::arg("tasks"), py::arg("done"), py::arg("searching"))
-      .def("check", &optim::StudyExecutor::check, py::arg("study"), py::arg("tasks"));
+      .def("search",
+           py::overload_cast<const optim::Study&, const std::vector<optim::SearchTask>&, const Done<optim::LayoutResult>&,
+                             const Searching&>(&optim::StudyExecutor::search),
+           py::arg("study"), py::arg("tasks"), py::arg("done"), py::arg("searching"))
+      .def("search",
+           py::overload_cast<const optim::ModelStudy&, const std::vector<optim::SearchTask>&,
+                             const Done<optim::ModelLayoutResult>&, const Searching&>(&optim::StudyExecutor::search),
+           py::arg("study"), py::arg("tasks"), py::arg("done"), py::arg("searching"))
+      .def("check",
+           py::overload_cast<const optim::Study&, const std::vector<optim::CheckTask>&>(&optim::StudyExecutor::check),
+           py::arg("study"), py::arg("tasks"))
+      .def("check",
+           py::overload_cast<const optim::ModelStudy&, const std::vector<optim::CheckTask>&>(&optim::StudyExecutor::check),
+           py::arg("study"), py::arg("tasks"));
   py::class_<optim::LocalExecutor, optim::StudyExecutor>(m, "LocalExecutor", "This process (the default of run_study).")
       .def(py::init<>());
 
@@ -220,11 +258,10 @@ void bind_study_run(py::module_& m) {
                                        py::str(py::type::of(progress).attr("__name__")).cast<std::string>()));
     const optim::StudyOptions o = options.is_none() ? optim::StudyOptions{} : options.cast<optim::StudyOptions>();
     if (py::isinstance<optim::ModelStudy>(study)) {
-      if (executor) throw InvalidArgument("run_study: a model study runs in this process (no executor)");
       const auto& s = study.cast<const optim::ModelStudy&>();
       return run(progress, [&](Call& call) {
         PyEvents events(call);
-        return optim::run_study(s, o, &events);
+        return optim::run_study(s, o, &events, executor);
       });
     }
     const auto& s = study.cast<const optim::Study&>();

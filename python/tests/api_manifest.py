@@ -77,6 +77,8 @@ BOUND = {
     "optim::run_search": "run_search",
     "optim::CheckTask": "CheckTask",
     "optim::CheckResult": "CheckResult",
+    "optim::ModelCheckResult": "ModelCheckResult",
+    "optim::best_design": "best_design",
     "optim::run_check": "run_check",
     "optim::StudyExecutor": "StudyExecutor",
     "optim::LocalExecutor": "LocalExecutor",
@@ -94,7 +96,6 @@ BOUND = {
     "optim::AdmittanceBound": "AdmittanceBound",
     "io::write_admittance_results": "write_admittance_results",
     "optim::ModelStudyFigures": "ModelStudyFigures",
-    "optim::run_model_study": "run_model_study",
     "optim::model_study_figures": "model_study_figures",
     "io::write_model_study_results": "write_study_results",
     # numerics
@@ -347,6 +348,7 @@ BOUND = {
     "io::write_study_results": "write_study_results",
     "io::study_results_json": "study_results_json",
     "io::study_table": "study_table",
+    "io::model_study_table": "model_study_table",
     "io::study_output_names": "study_output_names",
     "io::prepare_output_folder": "prepare_output_folder",
     "optim::ContactLimits": "ContactLimits",
@@ -422,7 +424,6 @@ EXCLUDED = {
     "optim::structure_outcome": "run_study's bridge from a network's LayoutResult to structure_search (C++ only)",
     "optim::StudyEvents": "delivered to run_study's progress as (event, *values)",
     "optim::acceptance_margins": "make_report computes it from its own runs: Report.margins",
-    "optim::ModelStudyProgress": "delivered to run_model_study's progress as (done, total, best J)",
     "optim::admittance_bounds": "takes a C++ bound function; run_model_study returns a model study's bounds "
                                 "(ModelStudyResult.admittance), admittance_bound gives one",
     "optim::StructureProgress": "delivered to optimise_all's progress as (done, total, elapsed, remaining, best J)",

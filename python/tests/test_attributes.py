@@ -150,7 +150,8 @@ search: {{starts: 1, seed: 1, min_step: 0.05}}
     sa = inerta.run_study(inerta.load_study(all_study))
     out += [so, so.best, sa, sa.rechecks[0], inerta.StudyOptions(), inerta.LocalExecutor(), inerta.SearchTask("k"),
             inerta.CheckTask("k", {"k": 1e5}), inerta.run_check(st, inerta.CheckTask()),
-            inerta.run_search(st, inerta.SearchTask("S2-5")), inerta.run_study(inerta.load_model_study(bound_study))]
+            inerta.run_search(st, inerta.SearchTask("S2-5")), inerta.run_study(inerta.load_model_study(bound_study)),
+            inerta.run_check(ms, inerta.CheckTask())]
     # Every network on a short FE line with the acceptance set as limits (issue 37): Refinement, MarginRow; its
     # screen (issue 49): Screened.
     fe_all = tmp_path_factory.mktemp("feall") / "fe-all.yaml"

@@ -100,13 +100,15 @@ def test_model_study_pieces():
 def test_a_model_studys_files_from_python_equal_the_clis(cli, tmp_path):
     """inerta.run_model_study + inerta.write_study_results write what `inerta optimise --out` writes,
     byte for byte (the same library writer, io::write_model_study_results)."""
-    cli("optimise", "studies/tmd.yaml", "--out", tmp_path / "cli", "--no-plots")
+    printed = cli("optimise", "studies/tmd.yaml", "--out", tmp_path / "cli", "--no-plots").stdout
     calls = []
     r = inerta.run_model_study(inerta.load_model_study(f"{SRC}/studies/tmd.yaml"),
                                progress=lambda done, total, best: calls.append((done, total, best)))
     assert [c[:2] for c in calls] == [(1, 4), (2, 4), (3, 4), (4, 4)]
     assert calls[-1][2] == min(x.cost.J for x in r.results)
     assert r.results[r.best].cost.J == calls[-1][2] and r.baseline_cost.J > calls[-1][2]
+    table = inerta.model_study_table(r)  # the CLI's table, but for its wall time
+    assert table[:table.rindex("wall")] in printed
     paths = inerta.write_study_results(r, tmp_path / "py")
     names = [p.rsplit("/", 1)[1] for p in paths]
     assert names == ["results.csv", "results.json", "frf.csv", "map.csv"]

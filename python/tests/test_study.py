@@ -114,6 +114,9 @@ def test_one_call_runs_the_whole_study_as_the_cli(study_file, study, cli_out, tm
     mo = inerta.optimise(inerta.load_model_study(f"{SRC}/studies/tmd.yaml"))
     assert mo.model is not None and mo.study is None
     assert mo.best.layout == mo.model.results[mo.model.best].layout and mo.best.J == mo.model.results[mo.model.best].cost.J
+    # one rule for the best design of both kinds: the first smallest penalised cost
+    assert mo.model.best == inerta.best_design([r.cost.penalised for r in mo.model.results])
+    assert o.best.index == inerta.best_design([r.cost.penalised() for r in o.results])
 
 
 def test_study_from_python_objects(study, hsx):

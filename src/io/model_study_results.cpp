@@ -9,6 +9,7 @@
 #include "inerta/io/files.hpp"
 #include "inerta/io/json.hpp"
 #include "inerta/io/structure_results.hpp"
+#include "inerta/numerics/pattern_search.hpp"
 
 namespace inerta::io {
 
@@ -112,6 +113,41 @@ std::vector<std::string> write_model_study_results(const std::string& dir, const
   if (fig.frf_default && fig.frf_best) put("frf.csv", frf_csv(*fig.frf_default, *fig.frf_best));
   if (fig.map) put("map.csv", map_csv(*fig.map, r.study.objective.kind));
   return written;
+}
+
+std::string model_study_table(const optim::ModelStudyResult& run) {
+  const optim::ModelStudy& study = run.study;
+  const optim::Objective& o = study.objective;
+  const network::Network& baseline = run.baseline;
+  const optim::ModelCost& def = run.baseline_cost;
+  const auto& results = run.results;
+  std::string t = fmt::format("\n  {:<14} {:<14} {:>12} {:>10}", "layout", "network", "J", "vs default");
+  for (const auto& w : o.outputs) t += fmt::format(" {:>12}", w.name);
+  for (const auto& lim : o.limits) t += fmt::format(" {:>12}", lim.output + "≤" + fmt::format("{:g}", lim.limit));
+  t += "  values (SI)\n";
+  auto row = [&](const std::string& layout, const std::string& expr, const optim::ModelCost& c, const std::string& values,
+                 const std::string& bounds, bool exhausted) {
+    t += fmt::format("  {:<14} {:<14} {:>12.6g} {:>9.1f}%", layout, expr, c.J, 100 * (c.J - def.J) / def.J);
+    for (double v : c.values) t += fmt::format(" {:>12.5g}", v);
+    for (double v : c.limit_values) t += fmt::format(" {:>12.5g}", v);
+    t += fmt::format("  {}{}{}{}\n", values, bounds.empty() ? "" : "  at limits: " + bounds, c.feasible ? "" : "  INFEASIBLE",
+                     exhausted ? "  budget exhausted (max_evaluations reached before min_step)" : "");
+  };
+  row("(default)", network::to_string(baseline), def, network::to_string(baseline, true), "", false);
+  const std::size_t shown = study.all ? 25 : results.size();
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const auto& r = results[i];
+    if (i == shown) t += fmt::format("  … {} more in results.csv (with --out)\n", results.size() - shown);
+    std::string values, bounds;
+    for (const auto& [k, v] : r.values) values += fmt::format("{}{}={}", values.empty() ? "" : " ", k, numerics::describe(v));
+    for (const auto& b : r.at_bounds) bounds += (bounds.empty() ? "" : ",") + b;
+    if (i < shown) row(r.layout, r.expression, r.cost, values, bounds, r.budget_exhausted);
+  }
+  const auto& best = results[run.best];
+  t += fmt::format("default ({}) J = {:.6g}; best {} ({}) J = {:.6g} ({:+.1f} %); wall {:.2f} s\n",
+                   network::to_string(baseline, true), def.J, best.layout, best.expression, best.cost.J,
+                   100 * (best.cost.J - def.J) / def.J, run.seconds);
+  return t;
 }
 
 }  // namespace inerta::io

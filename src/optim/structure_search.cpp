@@ -321,36 +321,46 @@ std::vector<StructureEntry> optimise_all(const Study& study, std::vector<LayoutR
       progress);
 }
 
-std::vector<StructureEntry> optimise_all(const ModelStudy& study_in, std::vector<ModelLayoutResult>& results,
-                                         const StructureProgressFn& progress) {
+ModelLayoutResult run_search(const ModelStudy& study_in, const SearchTask& task, const numerics::Progress& progress) {
+  if (task.coarse || task.refine) throw InvalidArgument(study_in.source + ": a model study has no coarse or refine tasks");
+  if (!task.network) return optimise_layout(study_in, task.layout, progress, task.warm);
   ModelStudy study = study_in;
   study.search.grid_variables = std::max(study.search.grid_variables, grid_variables);
+  const std::string& expression = task.layout;
+  ModelLayoutResult r;
+  try {
+    r = optimise_layout(study, expression, progress, task.warm);
+    const auto pruned = prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).penalised; });
+    if (pruned != r.values) {
+      r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
+      r.at_bounds.clear();
+      for (const auto& [name, v] : pruned)
+        if (v == 0 || std::isinf(v)) r.at_bounds.push_back(name);
+    }
+  } catch (const NumericalError&) {  // no design
+    r = ModelLayoutResult{};
+    r.layout = r.expression = expression;
+    r.cost.feasible = false;
+  } catch (const ModelError&) {
+    r = ModelLayoutResult{};
+    r.layout = r.expression = expression;
+    r.cost.feasible = false;
+  }
+  return r;
+}
+
+StructureOutcome structure_outcome(const ModelLayoutResult& r) {
+  return StructureOutcome{r.values, r.cost.J, r.cost.penalised, r.cost.feasible && std::isfinite(r.cost.J), r.evaluations};
+}
+
+std::vector<StructureEntry> optimise_all(const ModelStudy& study, std::vector<ModelLayoutResult>& results,
+                                         const StructureProgressFn& progress) {
   results.assign(study.layouts.size(), ModelLayoutResult{});
   return structure_search(
       study.layouts,
       [&](std::size_t i, const std::string& expression, const std::vector<network::Params>& warm) {
-        ModelLayoutResult& r = results[i];
-        try {
-          r = optimise_layout(study, expression, {}, warm);
-          const auto pruned =
-              prune_optimum(expression, r.values, [&](const Network& n) { return evaluate(study, n).penalised; });
-          if (pruned != r.values) {
-            r.values = pruned, r.cost = evaluate(study, network::resolve(expression, pruned));
-            r.at_bounds.clear();
-            for (const auto& [name, v] : pruned)
-              if (v == 0 || std::isinf(v)) r.at_bounds.push_back(name);
-          }
-        } catch (const NumericalError&) {
-          r = ModelLayoutResult{};
-          r.layout = r.expression = expression;
-          r.cost.feasible = false;
-        } catch (const ModelError&) {
-          r = ModelLayoutResult{};
-          r.layout = r.expression = expression;
-          r.cost.feasible = false;
-        }
-        return StructureOutcome{r.values, r.cost.J, r.cost.penalised, r.cost.feasible && std::isfinite(r.cost.J),
-                                r.evaluations};
+        results[i] = run_search(study, SearchTask{expression, warm, true});
+        return structure_outcome(results[i]);
       },
       progress);
 }

@@ -1,60 +1,18 @@
 #include "inerta/optim/study_run.hpp"
 
 #include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
 #include <functional>
 #include <cmath>
-#include <mutex>
+#include <type_traits>
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/error.hpp"
 #include "inerta/network/layouts.hpp"
 
 namespace inerta::optim {
-
-CheckResult run_check(const Study& study, const CheckTask& task) {
-  const network::Network net = task.layout.empty() ? default_suspension(study) : design_network(task.layout, task.values);
-  CheckResult r;
-  try {
-    r.cost = task.time ? evaluate_time(study, net) : evaluate(study, net);
-  } catch (const NumericalError& e) {
-    r.failure = e.what();
-    r.cost.J = INFINITY;
-  }
-  return r;
-}
-
-std::vector<LayoutResult> LocalExecutor::search(const Study& study, const std::vector<SearchTask>& tasks,
-                                                const std::function<void(std::size_t, const LayoutResult&)>& done,
-                                                const std::function<void(std::size_t, int, int, double)>& searching) {
-  std::vector<LayoutResult> out(tasks.size());
-  const bool networks = std::any_of(tasks.begin(), tasks.end(), [](const SearchTask& t) { return t.network; });
-  if (networks) {  // the networks of one size in parallel, as optimise_all
-    std::mutex mutex;
-    tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t i) {
-      out[i] = run_search(study, tasks[i]);
-      std::lock_guard<std::mutex> lock(mutex);
-      if (done) done(i, out[i]);
-    });
-    return out;
-  }
-  for (std::size_t i = 0; i < tasks.size(); ++i) {  // one after another, each search's polls in parallel
-    numerics::Progress p;
-    if (searching) p = [&](int start, int evals, double best) { searching(i, start, evals, best); };
-    out[i] = run_search(study, tasks[i], p);
-    if (done) done(i, out[i]);
-  }
-  return out;
-}
-
-std::vector<CheckResult> LocalExecutor::check(const Study& study, const std::vector<CheckTask>& tasks) {
-  std::vector<CheckResult> out;
-  for (const auto& t : tasks) out.push_back(run_check(study, t));
-  return out;
-}
 
 std::string StudyOutcome::recheck_csv() const {
   std::string csv = "network,reduced,J2_periodic,J2_time,v_kmh_time,periodic_rank,settling_spans\n";
@@ -176,15 +134,22 @@ double spearman(const std::vector<LayoutResult>& refined, const std::vector<doub
   return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : NAN;
 }
 
+// A network's element values by name.
+network::Params element_values(const network::Network& net) {
+  network::Params p;
+  std::function<void(const network::Network&)> leaves = [&](const network::Network& n) {
+    if (n.is_element()) p[n.name] = n.value;
+    for (const auto& c : n.children) leaves(c);
+  };
+  leaves(net);
+  return p;
+}
+
 // The stock suspension as a study result: its expression and element values, its cost.
 LayoutResult stock_result(const network::Network& baseline, const StudyCost& cost) {
   LayoutResult r;
   r.layout = r.expression = network::to_string(baseline, false);
-  std::function<void(const network::Network&)> leaves = [&](const network::Network& n) {
-    if (n.is_element()) r.values[n.name] = n.value;
-    for (const auto& c : n.children) leaves(c);
-  };
-  leaves(baseline);
+  r.values = element_values(baseline);
   r.cost = cost;
   r.evaluations = 1;
   r.stock = true;
@@ -279,7 +244,8 @@ std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, S
   return out;
 }
 
-BestDesign best_of(const LayoutResult& r, std::size_t index) {
+template <class Result>
+BestDesign best_of(const Result& r, std::size_t index) {
   BestDesign b;
   b.index = index;
   b.layout = r.layout, b.expression = r.expression, b.values = r.values;
@@ -288,132 +254,165 @@ BestDesign best_of(const LayoutResult& r, std::size_t index) {
   return b;
 }
 
-}  // namespace
+// The parts of the outcome that differ by kind of study: a J2 study's are StudyOutcome's own, a model
+// study's are in its ModelStudyResult.
+std::vector<LayoutResult>& results_of(StudyOutcome& o, const Study&) { return o.results; }
+std::vector<ModelLayoutResult>& results_of(StudyOutcome& o, const ModelStudy&) { return o.model->results; }
+StudyCost& default_cost_of(StudyOutcome& o, const Study&) { return o.default_cost; }
+ModelCost& default_cost_of(StudyOutcome& o, const ModelStudy&) { return o.model->baseline_cost; }
+std::vector<StructureEntry>& entries_of(StudyOutcome& o, const Study&) { return o.entries; }
+std::vector<StructureEntry>& entries_of(StudyOutcome& o, const ModelStudy&) { return o.model->entries; }
+std::vector<AdmittanceBound>& bounds_of(StudyOutcome& o, const Study&) { return o.admittance; }
+std::vector<AdmittanceBound>& bounds_of(StudyOutcome& o, const ModelStudy&) { return o.model->admittance; }
+double penalised(const StudyCost& c) { return c.penalised(); }
+double penalised(const ModelCost& c) { return c.penalised; }
+// What an admittance bound's candidate costs: a J2 study's J, a model study's penalised cost.
+double bound_cost(const StudyCost& c) { return c.J; }
+double bound_cost(const ModelCost& c) { return c.penalised; }
 
-StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEvents* events_in, StudyExecutor* executor_in) {
-  NoEvents none;
-  StudyEvents& events = events_in ? *events_in : none;
-  LocalExecutor local;
-  StudyExecutor& ex = executor_in ? *executor_in : local;
+// The engine, for either kind of study; what only a J2 study has (a coarse study, re-checks, the report's
+// time check) under `if constexpr`.
+template <class S>
+StudyOutcome run_engine(const S& study, const StudyOptions& options, StudyEvents& events, StudyExecutor& ex) {
+  constexpr bool j2 = std::is_same_v<S, Study>;
+  using Result = std::conditional_t<j2, LayoutResult, ModelLayoutResult>;
   StudyOutcome o;
-  o.study = study;
-  o.baseline = default_suspension(study);
+  if constexpr (j2) {
+    o.study = study;
+    o.baseline = default_suspension(study);
+  } else {
+    o.model.emplace();
+    o.model->study = study;
+    o.baseline = o.model->baseline = default_network(study);
+  }
+  std::vector<Result>& results = results_of(o, study);
+  auto& default_cost = default_cost_of(o, study);
+  std::vector<StructureEntry>& entries = entries_of(o, study);
   const auto t0 = std::chrono::steady_clock::now();
   {
-    const CheckResult def = ex.check(study, {CheckTask{}}).at(0);
+    const auto def = ex.check(study, {CheckTask{}}).at(0);
     if (!def.failure.empty()) throw NumericalError(def.failure);
-    o.default_cost = def.cost;
+    default_cost = def.cost;
   }
-  if (o.default_cost.unstable_speed > 0)
-    throw NumericalError(fmt::format("{}: the default suspension's periodic solution is unstable at {:.4g} km/h "
-                                     "(Floquet multiplier ≥ 1): the study has no baseline",
-                                     study.source, o.default_cost.unstable_speed * 3.6));
-  if (study.all && study.coarse) try {  // the entries' baseline: the default on the coarse study
-      o.coarse_default_cost = evaluate(*study.coarse, o.baseline);
-    } catch (const NumericalError&) {
-      o.coarse_default_cost.J = NAN;
-    }
+  bool coarse = false;  // multi-fidelity `layouts: all` (J2)
+  if constexpr (j2) {
+    if (o.default_cost.unstable_speed > 0)
+      throw NumericalError(fmt::format("{}: the default suspension's periodic solution is unstable at {:.4g} km/h "
+                                       "(Floquet multiplier ≥ 1): the study has no baseline",
+                                       study.source, o.default_cost.unstable_speed * 3.6));
+    coarse = study.all && study.coarse;
+    if (coarse) try {  // the entries' baseline: the default on the coarse study
+        o.coarse_default_cost = evaluate(*study.coarse, o.baseline);
+      } catch (const NumericalError&) {
+        o.coarse_default_cost.J = NAN;
+      }
+  }
   if (study.all) {
-    std::vector<LayoutResult> all(study.layouts.size());
-    o.entries = structure_search_batched(
+    std::vector<Result> all(study.layouts.size());
+    entries = structure_search_batched(
         study.layouts,
         [&](const std::vector<StructureTask>& tasks, const std::function<void(std::size_t, const StructureOutcome&)>& done) {
           std::vector<SearchTask> st;
-          for (const auto& t : tasks) st.push_back({t.expression, t.warm, true, study.coarse != nullptr});
-          ex.search(study, st, [&](std::size_t k, const LayoutResult& r) {
+          for (const auto& t : tasks) st.push_back({t.expression, t.warm, true, coarse});
+          ex.search(study, st, [&](std::size_t k, const Result& r) {
             all[tasks[k].index] = r;
             done(k, structure_outcome(r));
           }, {});
         },
         [&](const StructureProgress& p) { events.network(p); });
-    o.order = ranking(o.entries);
-    if (study.coarse)  // multi-fidelity: the best distinct reduced networks refined here, ranked here
-      o.results = refine_networks(study, o, ex, events);
-    else
-      for (std::size_t i : o.order) o.results.push_back(all[i]);  // ranked: results.csv best first
-  } else {
+    o.order = ranking(entries);
+    if constexpr (j2)
+      if (coarse) results = refine_networks(study, o, ex, events);  // the best distinct reduced networks refined here
+    if (!coarse)
+      for (std::size_t i : o.order) results.push_back(all[i]);  // ranked: results.csv best first
+  } else if constexpr (j2) {  // independent searches
     std::vector<SearchTask> tasks;
     for (const auto& l : study.layouts) tasks.push_back({l, {}, false});
-    o.results = ex.search(
-        study, tasks, [&](std::size_t i, const LayoutResult& r) { events.searched(i, r); },
+    results = ex.search(
+        study, tasks, [&](std::size_t i, const Result& r) { events.searched(i, r); },
         [&](std::size_t i, int start, int evals, double best) { events.searching(i, start, evals, best); });
+  } else {  // in turn: each warm-started from the default's values and every earlier optimum
+    std::vector<network::Params> warm{element_values(o.baseline)};
+    for (std::size_t l = 0; l < study.layouts.size(); ++l) {
+      results.push_back(ex.search(
+                             study, {SearchTask{study.layouts[l], warm}},
+                             [&](std::size_t, const Result& r) { events.searched(l, r); },
+                             [&](std::size_t, int start, int evals, double best) { events.searching(l, start, evals, best); })
+                            .at(0));
+      warm.push_back(results.back().values);
+    }
   }
   o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (o.results.empty()) throw InvalidArgument(study.source + ": the study has no layouts");
-  std::size_t best = 0;
-  for (std::size_t i = 0; i < o.results.size(); ++i)
-    if (o.results[i].cost.penalised() < o.results[best].cost.penalised()) best = i;  // within the limits first
+  if (results.empty()) throw InvalidArgument(study.source + ": the study has no layouts");
+  std::vector<double> costs;
+  for (const Result& r : results) costs.push_back(penalised(r.cost));
+  std::size_t best = best_design(costs);
   int verified = -1;
-  if (study.all && !study.coarse) {
-    o.rechecks = recheck(study, o.entries, options.rechecks, ex);
-    if (!o.rechecks.empty() && o.rechecks.front().failure.empty())  // the time domain has the last word
-      verified = static_cast<int>(std::find(o.order.begin(), o.order.end(), o.rechecks.front().entry) - o.order.begin());
+  if constexpr (j2) {
+    if (study.all && !study.coarse) {
+      o.rechecks = recheck(study, o.entries, options.rechecks, ex);
+      if (!o.rechecks.empty() && o.rechecks.front().failure.empty())  // the time domain has the last word
+        verified = static_cast<int>(std::find(o.order.begin(), o.order.end(), o.rechecks.front().entry) - o.order.begin());
+    }
   }
   if (verified >= 0) best = static_cast<std::size_t>(verified);
-  o.best = best_of(o.results[best], best);
+  o.best = best_of(results[best], best);
   o.best.verified = verified >= 0;
-  o.stock_best = o.results[best].stock;
+  if constexpr (j2)
+    o.stock_best = results[best].stock;
+  else
+    o.model->best = best, o.model->seconds = o.seconds;
   events.searches_done(o);
   if (!study.admittance_degrees.empty()) {
     std::vector<BoundCandidate> cands{
-        {"default " + network::to_string(o.baseline, true), o.baseline, o.default_cost.J, o.default_cost.J}};
-    for (const auto& r : o.results) try {  // a layout without a design (values missing) is skipped
+        {"default " + network::to_string(o.baseline, true), o.baseline, bound_cost(default_cost), default_cost.J}};
+    for (const Result& r : results) try {  // a layout without a design (values missing) is skipped
         const network::Network net = design_network(r.layout, r.values);
-        cands.push_back({r.layout + " " + network::to_string(net, true), net, r.cost.J, r.cost.J});
+        cands.push_back({r.layout + " " + network::to_string(net, true), net, bound_cost(r.cost), r.cost.J});
       } catch (const network::NetworkError&) {
       }
-    o.admittance = admittance_bounds(
+    bounds_of(o, study) = admittance_bounds(
         study.admittance_degrees, cands, [&](int d, const network::Network& w) { return admittance_bound(study, d, w); },
         [&](const AdmittanceBound& b) { events.bound(b); });
   }
-  // The best design verified by the time domain (the reference): a periodic study's in the report's
-  // post-processing (its σ(v) with the centripetal correction on) or by itself.
-  if (options.report) {
-    ReportOptions ro = options.report_options;
-    ro.best = static_cast<int>(best);
-    o.report = make_report(study, o.results, ro, [&](int step, int steps, const std::string& what, int done, int total) {
-      events.report(step, steps, what, done, total);
-    });
-    o.time_check = o.report->time_check;
-  } else if (study.method == Study::Method::Time) {
-    o.time_check = o.results[best].cost;
-  } else if (verified >= 0) {
-    o.time_check = o.rechecks.front().time;
-  } else {
-    const CheckResult c = ex.check(study, {CheckTask{o.best.layout, o.best.values, true}}).at(0);
-    if (!c.failure.empty()) throw NumericalError(c.failure);
-    o.time_check = c.cost;
+  if constexpr (j2) {
+    // The best design verified by the time domain (the reference): a periodic study's in the report's
+    // post-processing (its σ(v) with the centripetal correction on) or by itself.
+    if (options.report) {
+      ReportOptions ro = options.report_options;
+      ro.best = static_cast<int>(best);
+      o.report = make_report(study, o.results, ro, [&](int step, int steps, const std::string& what, int done, int total) {
+        events.report(step, steps, what, done, total);
+      });
+      o.time_check = o.report->time_check;
+    } else if (study.method == Study::Method::Time) {
+      o.time_check = o.results[best].cost;
+    } else if (verified >= 0) {
+      o.time_check = o.rechecks.front().time;
+    } else {
+      const CheckResult c = ex.check(study, {CheckTask{o.best.layout, o.best.values, true}}).at(0);
+      if (!c.failure.empty()) throw NumericalError(c.failure);
+      o.time_check = c.cost;
+    }
+    if (study.method == Study::Method::Periodic) o.best.J = o.time_check.J;
+  } else if (options.report) {
+    o.model_figures = model_study_figures(*o.model);
   }
-  if (study.method == Study::Method::Periodic) o.best.J = o.time_check.J;
   return o;
 }
 
-StudyOutcome run_study(const ModelStudy& study, const StudyOptions& options, StudyEvents* events_in) {
+}  // namespace
+
+StudyOutcome run_study(const Study& study, const StudyOptions& options, StudyEvents* events, StudyExecutor* executor) {
   NoEvents none;
-  StudyEvents& events = events_in ? *events_in : none;
-  ModelStudyProgress p;
-  p.searching = [&](std::size_t l, int start, int evals, double best) { events.searching(l, start, evals, best); };
-  p.finished = [&](std::size_t l, const ModelLayoutResult& r) { events.searched(l, r); };
-  p.structure = [&](const StructureProgress& s) { events.network(s); };
-  StudyOutcome o;
-  p.searched = [&](const ModelStudyResult& r) {
-    o.model = r;
-    events.searches_done(o);
-  };
-  p.bound = [&](const AdmittanceBound& b) { events.bound(b); };
-  o.model = run_model_study(study, p);
-  const ModelStudyResult& r = *o.model;
-  o.baseline = r.baseline;
-  o.seconds = r.seconds;
-  if (!r.results.empty()) {
-    const ModelLayoutResult& b = r.results[r.best];
-    o.best.index = r.best;
-    o.best.layout = b.layout, o.best.expression = b.expression, o.best.values = b.values;
-    o.best.net = network::resolve(b.layout, b.values);
-    o.best.J = b.cost.J, o.best.feasible = b.cost.feasible;
-  }
-  if (options.report) o.model_figures = model_study_figures(r);
-  return o;
+  LocalExecutor local;
+  return run_engine(study, options, events ? *events : none, executor ? *executor : local);
+}
+
+StudyOutcome run_study(const ModelStudy& study, const StudyOptions& options, StudyEvents* events, StudyExecutor* executor) {
+  NoEvents none;
+  LocalExecutor local;
+  return run_engine(study, options, events ? *events : none, executor ? *executor : local);
 }
 
 }  // namespace inerta::optim

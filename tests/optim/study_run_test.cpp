@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "inerta/io/model_study_file.hpp"
 #include "inerta/io/study_file.hpp"
 #include "inerta/network/layouts.hpp"
 #include "support/run.hpp"
@@ -30,19 +32,19 @@ struct Recorder : optim::StudyEvents {
   using optim::StudyEvents::searched;
   std::vector<std::string> seen;
   void searched(std::size_t i, const optim::LayoutResult&) override { seen.push_back("searched " + std::to_string(i)); }
+  void searched(std::size_t i, const optim::ModelLayoutResult&) override { seen.push_back("searched " + std::to_string(i)); }
   void network(const optim::StructureProgress&) override { seen.push_back("network"); }
   void searches_done(const optim::StudyOutcome&) override { seen.push_back("searches_done"); }
   void bound(const optim::AdmittanceBound&) override { seen.push_back("bound"); }
 };
 
 // Runs every search of a batch in reverse order and reports them so (as a cluster might): the engine
-// must not depend on the order in which an executor finishes.
+// must not depend on the order in which an executor finishes. Either kind of study.
 struct ReverseExecutor : optim::StudyExecutor {
   int searches = 0, checks = 0;
-  std::vector<optim::LayoutResult> search(const optim::Study& s, const std::vector<optim::SearchTask>& tasks,
-                                          const std::function<void(std::size_t, const optim::LayoutResult&)>& done,
-                                          const std::function<void(std::size_t, int, int, double)>&) override {
-    std::vector<optim::LayoutResult> out(tasks.size());
+  template <class S, class Result>
+  std::vector<Result> reversed(const S& s, const std::vector<optim::SearchTask>& tasks, const Done<Result>& done) {
+    std::vector<Result> out(tasks.size());
     for (std::size_t k = tasks.size(); k-- > 0;) {
       out[k] = optim::run_search(s, tasks[k]);
       ++searches;
@@ -50,12 +52,34 @@ struct ReverseExecutor : optim::StudyExecutor {
     }
     return out;
   }
-  std::vector<optim::CheckResult> check(const optim::Study& s, const std::vector<optim::CheckTask>& tasks) override {
-    std::vector<optim::CheckResult> out;
+  template <class S>
+  auto checked(const S& s, const std::vector<optim::CheckTask>& tasks) {
+    std::vector<decltype(optim::run_check(s, tasks.front()))> out;
     for (const auto& t : tasks) out.push_back(optim::run_check(s, t)), ++checks;
     return out;
   }
+  std::vector<optim::LayoutResult> search(const optim::Study& s, const std::vector<optim::SearchTask>& tasks,
+                                          const Done<optim::LayoutResult>& done, const Searching&) override {
+    return reversed(s, tasks, done);
+  }
+  std::vector<optim::ModelLayoutResult> search(const optim::ModelStudy& s, const std::vector<optim::SearchTask>& tasks,
+                                               const Done<optim::ModelLayoutResult>& done, const Searching&) override {
+    return reversed(s, tasks, done);
+  }
+  std::vector<optim::CheckResult> check(const optim::Study& s, const std::vector<optim::CheckTask>& tasks) override {
+    return checked(s, tasks);
+  }
+  std::vector<optim::ModelCheckResult> check(const optim::ModelStudy& s, const std::vector<optim::CheckTask>& tasks) override {
+    return checked(s, tasks);
+  }
 };
+
+// A model study of the tuned mass damper (models/tmd.yaml, H∞ over 3–8 Hz) with these layouts.
+std::string model_study_text(const std::string& layouts, const std::string& extra) {
+  return std::string("name: engine model\nmodel: ") + INERTA_SOURCE_DIR +
+         "/models/tmd.yaml\nstrut: absorber\nobjective: {type: hinf, input: F, outputs: {x: 1}, band: {from: 3, to: 8, "
+         "points: 200}}\nlayouts: " + layouts + "\n" + extra;
+}
 }  // namespace
 
 TEST(StudyRun, TheDefaultDesignCanWinAndIsVerifiedWithItsOwnNetwork) {
@@ -123,6 +147,103 @@ TEST(StudyRun, AnExecutorThatFinishesInAnotherOrderGivesTheSameOutcome) {
   EXPECT_EQ(std::count(events.seen.begin(), events.seen.end(), "network"), static_cast<long>(s.layouts.size()));
   EXPECT_EQ(events.seen[s.layouts.size()], "searches_done");
   EXPECT_EQ(events.seen.back(), "bound");
+}
+
+TEST(StudyRun, AModelStudyThroughAnExecutorThatFinishesInAnotherOrderGivesTheSameOutcome) {
+  const optim::ModelStudy s = io::load_model_study(write_study(
+      "engine_model_all.yaml", model_study_text("all", "networks: {max_elements: 2}\nadmittance: [2]\n"
+                                                       "search: {starts: 1, seed: 1, lo: 0.01, hi: 1.0e7, min_step: 0.05}\n")));
+  Recorder events;
+  const optim::StudyOutcome here = optim::run_study(s, {}, &events);
+  ReverseExecutor reverse;
+  const optim::StudyOutcome there = optim::run_study(s, {}, nullptr, &reverse);
+  EXPECT_EQ(reverse.searches, static_cast<int>(s.layouts.size()));  // every network went through the executor
+  EXPECT_EQ(reverse.checks, 1);                                       // the default
+  ASSERT_TRUE(here.model && there.model);
+  const optim::ModelStudyResult &a = *here.model, &b = *there.model;
+  ASSERT_EQ(a.entries.size(), b.entries.size());
+  for (std::size_t i = 0; i < a.entries.size(); ++i) {
+    EXPECT_EQ(a.entries[i].values, b.entries[i].values) << a.entries[i].expression;
+    EXPECT_EQ(a.entries[i].J, b.entries[i].J);
+    EXPECT_EQ(a.entries[i].warm_from, b.entries[i].warm_from);
+  }
+  ASSERT_EQ(a.results.size(), b.results.size());
+  for (std::size_t i = 0; i < a.results.size(); ++i) {
+    EXPECT_EQ(a.results[i].expression, b.results[i].expression);
+    EXPECT_EQ(a.results[i].values, b.results[i].values);
+    EXPECT_EQ(a.results[i].cost.J, b.results[i].cost.J);
+    EXPECT_EQ(a.results[i].at_bounds, b.results[i].at_bounds);
+  }
+  EXPECT_EQ(a.baseline_cost.J, b.baseline_cost.J);
+  EXPECT_EQ(a.best, b.best);
+  EXPECT_EQ(here.best.expression, there.best.expression);
+  EXPECT_EQ(here.best.J, there.best.J);
+  ASSERT_EQ(a.admittance.size(), 1u);
+  ASSERT_EQ(b.admittance.size(), 1u);
+  EXPECT_EQ(a.admittance[0].result.J, b.admittance[0].result.J);
+  // layouts: all is ranked: the best is the first result, and a network of optimise_all's.
+  EXPECT_EQ(a.best, 0u);
+  std::vector<optim::ModelLayoutResult> all;
+  const auto entries = optim::optimise_all(s, all);
+  EXPECT_EQ(entries[here.order.front()].values, a.results.front().values);
+  EXPECT_EQ(std::count(events.seen.begin(), events.seen.end(), "network"), static_cast<long>(s.layouts.size()));
+  EXPECT_EQ(events.seen[s.layouts.size()], "searches_done");
+  EXPECT_EQ(events.seen.back(), "bound");
+}
+
+TEST(StudyRun, AModelStudysNamedLayoutsAreSearchedInTurnFromTheDefaultAndTheEarlierOptima) {
+  const optim::ModelStudy s = io::load_model_study(write_study(
+      "engine_model_named.yaml",
+      model_study_text("[\"k|c\", \"k|c|b\"]", "search: {starts: 1, seed: 2, lo: 0.01, hi: 1.0e7, min_step: 0.05}\n")));
+  Recorder events;
+  ReverseExecutor reverse;
+  const optim::StudyOutcome o = optim::run_study(s, {}, &events, &reverse);
+  EXPECT_EQ(reverse.searches, 2);
+  ASSERT_TRUE(o.model);
+  network::Params def;  // the default's values, then each earlier optimum
+  std::function<void(const network::Network&)> leaves = [&](const network::Network& n) {
+    if (n.is_element()) def[n.name] = n.value;
+    for (const auto& c : n.children) leaves(c);
+  };
+  leaves(optim::default_network(s));
+  std::vector<network::Params> warm{def};
+  for (std::size_t l = 0; l < s.layouts.size(); ++l) {
+    const optim::ModelLayoutResult r = optim::optimise_layout(s, s.layouts[l], {}, warm);
+    EXPECT_EQ(o.model->results[l].values, r.values) << s.layouts[l];
+    EXPECT_EQ(o.model->results[l].cost.J, r.cost.J);
+    warm.push_back(r.values);
+  }
+  EXPECT_LE(o.model->results[1].cost.J, o.model->results[0].cost.J);  // k|c|b contains k|c
+  EXPECT_EQ(events.seen, (std::vector<std::string>{"searched 0", "searched 1", "searches_done"}));
+  EXPECT_FALSE(o.model_figures.has_value());
+}
+
+TEST(StudyRun, TheBestDesignIsOneRuleForBothKinds) {
+  // Within the limits first (J), then the least excess (1e100 (1 + excess)); the first of equals.
+  EXPECT_EQ(optim::best_design({1e100 * 1.5, 3.0, 2.0, 2.0, 1e100 * 1.1}), 2u);
+  EXPECT_EQ(optim::best_design({1e100 * 1.5, 1e100 * 1.1, INFINITY}), 1u);
+  EXPECT_EQ(optim::best_design({INFINITY, INFINITY}), 0u);
+  // A J2 study and a model study: the outcome's best is the rule's.
+  const optim::Study j2 =
+      io::load_study(write_study("engine_rule.yaml", study_text("[k, S2-5]", "search: {starts: 1, seed: 2, min_step: 0.2}\n")));
+  const optim::StudyOutcome oj = optim::run_study(j2);
+  std::vector<double> cj;
+  for (const auto& r : oj.results) cj.push_back(r.cost.penalised());
+  EXPECT_EQ(oj.best.index, optim::best_design(cj));
+  // No design of this model study keeps its limit (a tyre load of 1 N rms): the best is the least excess,
+  // as the search ranks them.
+  const optim::ModelStudy m = io::load_model_study(write_study(
+      "engine_rule_model.yaml",
+      std::string("name: rule\nmodel: ") + INERTA_SOURCE_DIR +
+          "/models/quarter_car.yaml\nstrut: suspension\nobjective: {type: rms, road: {class: C, speed: 25, inputs: [road]}, "
+          "outputs: {a_body: 1}, limits: {tyre_force: 1}}\nlayouts: [c, \"k1-c\"]\n"
+          "search: {starts: 1, seed: 1, lo: 1, hi: 1.0e7, min_step: 0.1}\n"));
+  const optim::StudyOutcome om = optim::run_study(m);
+  for (const auto& r : om.model->results) EXPECT_FALSE(r.cost.feasible);
+  std::vector<double> cm;
+  for (const auto& r : om.model->results) cm.push_back(r.cost.penalised);
+  EXPECT_EQ(om.best.index, optim::best_design(cm));
+  EXPECT_EQ(om.model->best, om.best.index);
 }
 
 }  // namespace test_optim_study_run

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "inerta/optim/model_study_run.hpp"
+#include "inerta/optim/model_study_result.hpp"
 
 namespace inerta::io {
 
@@ -20,5 +20,9 @@ namespace inerta::io {
 /// Throws std::runtime_error "cannot write 'path'" if a file cannot be written.
 std::vector<std::string> write_model_study_results(const std::string& dir, const optim::ModelStudyResult& result,
                                                    const optim::ModelStudyFigures& figures);
+
+/// The table `inerta optimise` prints for a model study (the same text from Python: inerta.model_study_table):
+/// the default, each layout (the first 25 of `layouts: all`), and the line with the default and the best.
+std::string model_study_table(const optim::ModelStudyResult& result);
 
 }  // namespace inerta::io

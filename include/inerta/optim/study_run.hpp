@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "inerta/optim/admittance_search.hpp"
-#include "inerta/optim/model_study_run.hpp"
+#include "inerta/optim/model_study_result.hpp"
 #include "inerta/optim/report.hpp"
 #include "inerta/optim/structure_search.hpp"
 #include "inerta/optim/study.hpp"
@@ -37,8 +37,13 @@ struct SearchTask {
 LayoutResult run_search(const Study& study, const SearchTask& task, const numerics::Progress& progress = {},
                         const DesignBatch& batch = {});
 
+/// What a search task computes for a model study: optimise_layout(study, layout, progress, warm); a network
+/// of `layouts: all` as optimise_all does (a failed search: infeasible, no values). No coarse or refine tasks.
+ModelLayoutResult run_search(const ModelStudy& study, const SearchTask& task, const numerics::Progress& progress = {});
+
 /// What a network's search result gives optim::structure_search (J, penalised cost, feasible, evaluations).
 StructureOutcome structure_outcome(const LayoutResult& result);
+StructureOutcome structure_outcome(const ModelLayoutResult& result);
 
 /// One design to evaluate: the study's default suspension (`layout` empty) or a layout with its values,
 /// by the study's method or (`time`) by the time-domain reference.
@@ -53,29 +58,47 @@ struct CheckResult {
 };
 /// What a check task computes: evaluate or evaluate_time of the design.
 CheckResult run_check(const Study& study, const CheckTask& task);
+struct ModelCheckResult {
+  ModelCost cost;
+  std::string failure;  ///< a NumericalError's message (cost.J = ∞), else ""
+};
+/// The same for a model study: evaluate of the design (a model study has no time-domain check).
+ModelCheckResult run_check(const ModelStudy& study, const CheckTask& task);
+
+/// The one rule for a study's best design, both kinds: the first of the smallest penalised cost (within
+/// the limits first, then the least excess: StudyCost::penalised, ModelCost::penalised).
+std::size_t best_design(const std::vector<double>& penalised);
 
 /// Where a study's evaluations run: the extension point of the CLI (LocalExecutor) and of Dask
-/// (python/inerta/distributed.py). Each result must equal run_search's / run_check's.
+/// (python/inerta/distributed.py). Each result must equal run_search's / run_check's; an overload per
+/// kind of study (J2, model).
 class StudyExecutor {
  public:
+  template <class Result>
+  using Done = std::function<void(std::size_t, const Result&)>;
+  using Searching = std::function<void(std::size_t, int, int, double)>;
   virtual ~StudyExecutor() = default;
   /// Independent searches; results in task order. done(i, result) as each finishes (never two at
   /// once); searching(i, start, evaluations, best) during a search, if the executor can tell.
   virtual std::vector<LayoutResult> search(const Study& study, const std::vector<SearchTask>& tasks,
-                                           const std::function<void(std::size_t, const LayoutResult&)>& done,
-                                           const std::function<void(std::size_t, int, int, double)>& searching) = 0;
+                                           const Done<LayoutResult>& done, const Searching& searching) = 0;
+  virtual std::vector<ModelLayoutResult> search(const ModelStudy& study, const std::vector<SearchTask>& tasks,
+                                                const Done<ModelLayoutResult>& done, const Searching& searching) = 0;
   /// Independent evaluations; results in task order.
   virtual std::vector<CheckResult> check(const Study& study, const std::vector<CheckTask>& tasks) = 0;
+  virtual std::vector<ModelCheckResult> check(const ModelStudy& study, const std::vector<CheckTask>& tasks) = 0;
 };
 
 /// This process: named layouts one after another (each search's evaluations in parallel), the
 /// networks of one size in parallel (oneTBB), checks one after another (each in parallel inside).
 class LocalExecutor : public StudyExecutor {
  public:
-  std::vector<LayoutResult> search(const Study& study, const std::vector<SearchTask>& tasks,
-                                   const std::function<void(std::size_t, const LayoutResult&)>& done,
-                                   const std::function<void(std::size_t, int, int, double)>& searching) override;
+  std::vector<LayoutResult> search(const Study& study, const std::vector<SearchTask>& tasks, const Done<LayoutResult>& done,
+                                   const Searching& searching) override;
+  std::vector<ModelLayoutResult> search(const ModelStudy& study, const std::vector<SearchTask>& tasks,
+                                        const Done<ModelLayoutResult>& done, const Searching& searching) override;
   std::vector<CheckResult> check(const Study& study, const std::vector<CheckTask>& tasks) override;
+  std::vector<ModelCheckResult> check(const ModelStudy& study, const std::vector<CheckTask>& tasks) override;
 };
 
 struct StudyOutcome;
@@ -197,10 +220,12 @@ struct StudyOutcome {
   std::string refined_csv() const;
 };
 
-/// Runs a whole J2 study. The executor runs the searches and evaluations (LocalExecutor if null).
+/// Runs a whole study, J2 or model (one engine). The executor runs the searches and evaluations
+/// (LocalExecutor if null). A model study's named layouts are searched in turn, each warm-started from the
+/// default and the earlier optima; with options.report its figures (model_study_figures).
 StudyOutcome run_study(const Study& study, const StudyOptions& options = {}, StudyEvents* events = nullptr,
                        StudyExecutor* executor = nullptr);
-/// Runs a whole model study (optim::run_model_study; with options.report its figures, model_study_figures).
-StudyOutcome run_study(const ModelStudy& study, const StudyOptions& options = {}, StudyEvents* events = nullptr);
+StudyOutcome run_study(const ModelStudy& study, const StudyOptions& options = {}, StudyEvents* events = nullptr,
+                       StudyExecutor* executor = nullptr);
 
 }  // namespace inerta::optim
