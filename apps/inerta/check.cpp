@@ -163,8 +163,12 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
                  heights(d.overlap_outgoing, d.overlap_outgoing_x), heights(d.overlap_incoming, d.overlap_incoming_x));
     }
     for (const auto& [which, w] : {std::pair{"messenger", d.messenger}, std::pair{"contact wire", d.contact_wire}})
-      fmt::print("{:<13} wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h)\n", std::string(which) + ":", w.wave_speed(),
-                 3.6 * w.wave_speed());
+      fmt::print("{:<13} wave speed sqrt(T/rho A) = {:.2f} m/s ({:.1f} km/h){}\n", std::string(which) + ":", w.wave_speed(),
+                 3.6 * w.wave_speed(),
+                 std::string(which) == "contact wire" && d.wear.any() && d.wear.x.empty()
+                     ? fmt::format("; worn: {:.2f} m/s ({:.1f} km/h)", w.wave_speed() / std::sqrt(d.wear.uniform / 100),
+                                   3.6 * w.wave_speed() / std::sqrt(d.wear.uniform / 100))
+                     : "");
     fmt::print("droppers: {} a span, {} in all{}\n", n, n * static_cast<std::size_t>(d.spans),
                d.stitch.present ? fmt::format("; stitch droppers: {} a span, {} in all ({}; none at the 2 end masts)",
                                               d.stitch.dropper_x.size(), d.stitch.dropper_x.size() * static_cast<std::size_t>(d.spans),

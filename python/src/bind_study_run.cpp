@@ -76,7 +76,8 @@ class PyEvents : public optim::StudyEvents {
 
 }  // namespace
 
-void bind_study_run(py::module_& m) {
+// The units of a study's work and where they run (the executor).
+static void bind_study_tasks(py::module_& m) {
   py::class_<optim::SearchTask>(m, "SearchTask", "One search of a study: a layout and further starts (optim::SearchTask).")
       .def(py::init([](std::string layout, std::vector<network::Params> warm, bool network, bool coarse, bool refine) {
              return optim::SearchTask{std::move(layout), std::move(warm), network, coarse, refine};
@@ -169,6 +170,10 @@ void bind_study_run(py::module_& m) {
   py::class_<optim::LocalExecutor, optim::StudyExecutor>(m, "LocalExecutor", "This process (the default of run_study).")
       .def(py::init<>());
 
+}
+
+void bind_study_run(py::module_& m) {
+  bind_study_tasks(m);
   py::class_<optim::StudyOptions>(m, "StudyOptions", "What run_study computes besides the searches.")
       .def(py::init([](bool report, const py::object& ro, int rechecks) {
              optim::StudyOptions o;
