@@ -144,12 +144,14 @@ int check_catenary(const std::string& path, const std::vector<std::string>& sets
     fmt::print("type: finite_element (messenger and contact wire as tensioned beams, droppers slack in compression)\n");
     fmt::print("line: {} spans of {:g} m, length {:g} m, encumbrance {:g} m\n", d.spans, d.span, d.span * d.spans,
                d.encumbrance);
-    for (std::size_t k = 0; k < d.tension_sections.size(); ++k) {  // a line of tension sections (issue 35)
-      const catenary::FeCatenaryData& s = d.tension_sections[k];
+    const std::vector<catenary::FeLinkedSection> linked = catenary::link_sections(d);
+    for (std::size_t k = 0; k < linked.size(); ++k) {  // a line of tension sections (issue 35)
+      const catenary::FeLinkedSection& ls = linked[k];
+      const catenary::FeCatenaryData& s = ls.line;
       fmt::print("tension section {}: spans {} to {} ({:g} … {:g} m), contact wire {} (T = {:g} N), messenger T = {:g} N, "
                  "anchors {}\n",
-                 k + 1, s.first_span + 1, s.first_span + s.spans, s.line_start, s.line_start + s.spans * s.span,
-                 s.wire_label, s.contact_wire.tension, s.messenger.tension,
+                 k + 1, ls.first_span + 1, ls.first_span + s.spans, ls.line_start, ls.line_start + s.spans * s.span,
+                 ls.wire_label, s.contact_wire.tension, s.messenger.tension,
                  s.anchor.pinned ? "pinned" : fmt::format("on a tensioning device ({:g} N/m, {:g} kg)", s.anchor.stiffness, s.anchor.mass));
     }
     if (d.sectioned()) {

@@ -90,7 +90,7 @@ void bind_fe(py::module_& m) {
       .def_readwrite("window_behind", &FeCatenaryData::window_behind, "spans behind the rear pantograph's span (−1: whole line)")
       .def_readwrite("window_ahead", &FeCatenaryData::window_ahead, "spans ahead of the leading pantograph's span (−1: whole line)")
       .def_readwrite("tension_sections", &FeCatenaryData::tension_sections,
-                     "a line of tension sections: each section whole (empty: one section); then call link_sections()")
+                     "a line of tension sections as written: each section whole (empty: one section); then call join_sections()")
       .def_readwrite("overlap_spans", &FeCatenaryData::overlap_spans, "spans consecutive sections share")
       .def_readwrite("overlap_outgoing", &FeCatenaryData::overlap_outgoing, "m, the ending section's contact wire at the overlap's supports")
       .def_readwrite("overlap_incoming", &FeCatenaryData::overlap_incoming, "m, the starting section's")
@@ -101,12 +101,17 @@ void bind_fe(py::module_& m) {
       .def_readwrite("height_x", &FeCatenaryData::height_x, "m from a section's first mast: its height profile's points (empty: mast_height)")
       .def_readwrite("height_z", &FeCatenaryData::height_z, "m, up: the profile's heights")
       .def("height_at", &FeCatenaryData::height_at, py::arg("x"), "m: a section's contact-wire height at x (its profile, linear)")
-      .def_readonly("line_start", &FeCatenaryData::line_start, "m, a section's first mast along the line")
-      .def_readonly("first_span", &FeCatenaryData::first_span, "a section's first span along the line (0-based)")
-      .def_readonly("wire_label", &FeCatenaryData::wire_label, "a section's contact wire: 1 or 2")
-      .def("link_sections", &FeCatenaryData::link_sections,
-           "places the tension sections along the line and sets their mast heights from the overlap")
+      .def("join_sections", &FeCatenaryData::join_sections,
+           "checks that the tension sections form a line and sets the line's spans and span from them")
+      .def("linked_sections", [](const FeCatenaryData& d) { return catenary::link_sections(d); },
+           "the tension sections placed along the line (link_sections): FeLinkedSection each")
       .def("validate", &FeCatenaryData::validate, "InvalidArgument naming the offending value");
+
+  py::class_<catenary::FeLinkedSection>(m, "FeLinkedSection", "A tension section placed along its line (link_sections).")
+      .def_readonly("line", &catenary::FeLinkedSection::line, "the section as a line, its heights set from the overlaps")
+      .def_readonly("line_start", &catenary::FeLinkedSection::line_start, "m, its first mast along the line")
+      .def_readonly("first_span", &catenary::FeLinkedSection::first_span, "its first span along the line (0-based)")
+      .def_readonly("wire_label", &catenary::FeLinkedSection::wire_label, "its contact wire: 1 or 2");
 
   py::class_<FeLine::Dropper>(m, "FeDropper", "One dropper of the assembled line.")
       .def_readonly("x", &FeLine::Dropper::x, "m along the line")

@@ -104,6 +104,12 @@ class FeWire:
     def __init__(self, tension: float = 0.0, mass_per_length: float = 0.0, EI: float = 0.0) -> None: ...
     def wave_speed(self) -> float: ...
 
+class FeLinkedSection:
+    line: FeCatenaryData
+    line_start: float
+    first_span: int
+    wire_label: int
+
 class FeCatenaryData:
     span: float
     spans: int
@@ -141,10 +147,8 @@ class FeCatenaryData:
     height_x: list[float]
     height_z: list[float]
     def height_at(self, x: float) -> float: ...
-    line_start: float
-    first_span: int
-    wire_label: int
-    def link_sections(self) -> None: ...
+    def join_sections(self) -> None: ...
+    def linked_sections(self) -> list[FeLinkedSection]: ...
     section_first: int
     section_last: int
     def __init__(self) -> None: ...

@@ -287,6 +287,7 @@ BOUND = {
     # finite-element catenary (inspection and the lumped fit; runs through Catenary)
     "catenary::FeCatenary": "FeCatenary",
     "catenary::FeCatenaryData": "FeCatenaryData",
+    "catenary::FeLinkedSection": "FeLinkedSection",
     "catenary::FeWire": "FeWire",
     "catenary::FeLine": "FeLine",
     "catenary::fe_keys": "fe_keys",
@@ -483,7 +484,7 @@ EXCLUDED = {
     "catenary::make_direct_solver": "makes an FeLineSolver (see there)",
     "catenary::make_modal_solver": "makes an FeLineSolver (see there)",
     "catenary::FeModalLine": "the modes' cache inside FeCatenary: a catenary held in Python keeps it",
-    "catenary::FeSectionLine": "a tension section inside FeCatenary as its runs see it; its data are FeCatenaryData.tension_sections",
+    "catenary::FeSectionLine": "a tension section inside FeCatenary as its runs see it; its data are FeCatenaryData.linked_sections()",
     "catenary::FeWindow": "a window of FeModalLine (see there)",
     "catenary::FeWindowModes": "the decomposition of a window (see FeModalLine)",
     "numerics::BandInverse": "numerical kernel of the modal solve's residual flexibility",
@@ -503,6 +504,7 @@ EXCLUDED = {
                           "read_fe_catenary_data and sets it with the --set keys (stitch.*) as overrides",
     "catenary::FeIrregularity": "the irregularity section of a finite-element catenary file (irregularity.*), "
                                 "read from files and overrides",
+    "catenary::link_sections": "bound as the method FeCatenaryData.linked_sections()",
     "catenary::FeWear": "the wear section of a finite-element catenary file (wear.*), read from files and overrides",
     "catenary::FeKey": "an entry of fe_keys (bound as a dict each)",
     "catenary::FeSection": "a top-level section of the key schema (see fe_keys)",

@@ -78,6 +78,7 @@ def objects(hsx, lumped, twobar, tmp_path_factory):
     with pytest.raises(ValueError, match="best = 1 but there are 1 layout results"):
         inerta.make_report(st.replace(layouts=["S2-5"]), [lr], o)
     o.best = 0
+    out += inerta.read_fe_catenary_data(model("catenary-fe-overlap.yaml")).linked_sections()[:1]
     p = tmp_path_factory.mktemp("csv") / "m.csv"
     p.write_text("a,b\n1,2\n3,4\n")
     t = inerta.CsvTable.read(p)

@@ -36,3 +36,18 @@ def test_the_docs_key_table_is_the_schema():
         assert default == (k["default"] or "—"), (k["path"], default, k["default"])
         assert rng == k["range"], (k["path"], rng, k["range"])
         assert meaning, k["path"]
+
+
+def test_the_sections_pass_places_the_sections_and_leaves_the_data_as_written():
+    """A line of tension sections (issue 51 item 2): linked_sections() places each section along the line, its
+    heights from the overlaps; the data read from the file keep what it says."""
+    line = pathlib.Path(__file__).resolve().parents[2] / "models" / "catenary-fe-overlap.yaml"
+    d = inerta.read_fe_catenary_data(line)
+    linked = d.linked_sections()
+    assert [s.first_span for s in linked] == [0, 9, 19]  # 12, 13, 12 spans sharing 3-span overlaps
+    assert [s.line_start for s in linked] == [0.0, 585.0, 1235.0]
+    assert [s.wire_label for s in linked] == [1, 2, 1]
+    assert d.spans == 31 and d.span == 65
+    assert all(len(s.mast_height) == 0 for s in d.tension_sections)  # as written
+    assert linked[1].line.mast_height[0] == 0.5 and linked[0].line.mast_height[-1] == 0.5  # the anchors, raised
+    assert len(linked[1].line.mast_height) == linked[1].line.spans + 1

@@ -1,6 +1,6 @@
 #pragma once
 // Compiling a line's data (FeCatenaryData, what the file gives) into an FeLine, pass by pass; FeLine's
-// constructor is the pipeline (src/catenary/fe_line.cpp, docs/architecture.md "Add a line feature").
+// constructor is the pipeline (src/catenary/fe_line.cpp, docs/architecture.md "A line feature").
 // Each pass reads the data and the earlier passes' results and writes its own:
 //   mesh           fe_mesh.cpp           the marks (masts, droppers, stitch clamps), stations and DOFs
 //   wires          fe_wires.cpp          each wire's element properties, matrices and weight; supports,
@@ -10,7 +10,7 @@
 //   form_find      fe_form_finding.cpp   the static state of the designed line (spec/05 §5.3)
 //   irregularities fe_irregularities.cpp dropper-length errors and point masses on the form-found line
 //   assemble       fe_assembly.cpp       the whole line's K, K_static, M, gravity and static state
-// Tension sections and overlaps are linked before (FeCatenaryData::link_sections, fe_sections.cpp):
+// Tension sections and overlaps are placed before (link_sections, fe_sections.cpp: FeLinkedSection each):
 // each section is compiled by this pipeline as a line of its own.
 #include <Eigen/Dense>
 #include <Eigen/Sparse>

@@ -532,7 +532,7 @@ class FeCoupled final : public Coupled {
 }  // namespace
 
 FeCatenary::FeCatenary(FeCatenaryData data) : data_(std::move(data)) {
-  data_.link_sections();
+  data_.join_sections();
   data_.validate();
 }
 
@@ -540,12 +540,14 @@ void FeCatenary::build() const {
   std::call_once(built_, [&] {
     // Each tension section is a line of its own (form-finding per section); one for a plain file.
     std::vector<FeSectionLine> secs;
-    const std::vector<FeCatenaryData> one{data_};
-    for (const FeCatenaryData& d : data_.sectioned() ? data_.tension_sections : one) {
+    std::vector<FeLinkedSection> linked = link_sections(data_);  // the sections pass (fe_sections.cpp)
+    if (linked.empty()) linked.push_back({data_, 0, 0, 1});
+    for (const FeLinkedSection& ls : linked) {
+      const FeCatenaryData& d = ls.line;
       FeSectionLine s;
       auto line = std::make_shared<const FeLine>(d);
       if (d.solver == FeCatenaryData::Solver::Modal) s.modal = std::make_shared<FeModalLine>(line, ModeStore::from_environment());
-      s.start = d.line_start, s.end = d.line_start + line->length(), s.wire = d.wire_label;
+      s.start = ls.line_start, s.end = ls.line_start + line->length(), s.wire = ls.wire_label;
       s.line = std::move(line);
       secs.push_back(std::move(s));
     }
@@ -626,8 +628,9 @@ double FeCatenary::line_length() const { return data_.span * data_.spans; }
 
 std::vector<Section> FeCatenary::overlaps() const {
   std::vector<Section> o;
-  const std::vector<FeCatenaryData>& s = data_.tension_sections;
-  for (std::size_t k = 0; k + 1 < s.size(); ++k) o.push_back({s[k + 1].line_start, s[k].line_start + s[k].spans * s[k].span});
+  const std::vector<FeLinkedSection> s = link_sections(data_);
+  for (std::size_t k = 0; k + 1 < s.size(); ++k)
+    o.push_back({s[k + 1].line_start, s[k].line_start + s[k].line.spans * s[k].line.span});
   return o;
 }
 

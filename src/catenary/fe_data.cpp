@@ -60,16 +60,17 @@ double FeCatenaryData::height_at(double x) const {
 // Each key's range from the schema (check_fe_ranges); here what relates keys to each other.
 void FeCatenaryData::validate() const {
   if (sectioned()) {
-    for (std::size_t k = 0; k < tension_sections.size(); ++k) {
-      const int ks = static_cast<int>(k);
+    const std::vector<FeLinkedSection> linked = link_sections(*this);
+    for (std::size_t k = 0; k < linked.size(); ++k) {
       try {
-        tension_sections[k].validate();
+        linked[k].line.validate();
       } catch (const FeKeyError& e) {  // at the section's own key (tension_sections[k].<key>)
-        throw FeKeyError({ks, e.at.key, e.at.index}, fmt::format("section {}: {}", k + 1, e.problem()));
+        throw FeKeyError({static_cast<int>(k), e.at.key, e.at.index}, fmt::format("section {}: {}", k + 1, e.problem()));
       }
-      if (tension_sections[k].spans + tension_sections[k].first_span > spans || tension_sections[k].line_start < 0)
-        throw FeKeyError({ks, "", -1}, "the sections are not linked into a line (FeCatenaryData::link_sections)");
     }
+    if (spans != line_spans())
+      fail("line.spans", fmt::format("a line of tension sections has its sections' spans ({}), got {}: join_sections sets them",
+                                     line_spans(), spans));
     if (irregularity.any())
       fail("irregularity", "irregularities on a line of tension sections are not modelled yet; give them on a single-section line");
     if (!wear.x.empty())

@@ -16,8 +16,9 @@ LumpedFit fit_lumped(const FeLine& line, int span, int points) {
     throw InvalidArgument(fmt::format("lumped fit: span {} does not exist (the line has {} spans)", span, d.spans));
   if (points < 16) throw InvalidArgument(fmt::format("lumped fit: needs at least 16 points a span, got {}", points));
   // An overlap span carries two contact wires: a point model of one wire has no meaning there (issue 52).
-  for (std::size_t k = 1; k < d.tension_sections.size(); ++k) {
-    const int from = d.tension_sections[k].first_span + 1, to = from + d.overlap_spans - 1;  // 1-based
+  const std::vector<FeLinkedSection> sections = link_sections(d);
+  for (std::size_t k = 1; k < sections.size(); ++k) {
+    const int from = sections[k].first_span + 1, to = from + d.overlap_spans - 1;  // 1-based
     if (span >= from && span <= to)
       throw InvalidArgument(fmt::format("lumped fit: span {} is in the overlap of sections {} and {} (spans {} … {}: two "
                                         "contact wires); fit a span of one wire (--span)",

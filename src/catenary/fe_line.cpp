@@ -1,4 +1,5 @@
-// The finite-element line: mesh, matrices, form-finding, statics (catenary/fe_catenary.hpp, spec/05 §5.3).
+// The finite-element line (catenary/fe_line.hpp, spec/05 §5.3): the pipeline of its compile passes
+// (fe_compile.hpp), the shape functions and the statics of the compiled line.
 #include <fmt/format.h>
 
 #include <algorithm>

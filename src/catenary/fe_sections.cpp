@@ -12,10 +12,15 @@
 
 namespace inerta::catenary {
 
-void FeCatenaryData::link_sections() {
-  if (!sectioned()) return;
+std::vector<FeLinkedSection> link_sections(const FeCatenaryData& line) {
+  std::vector<FeLinkedSection> out;
+  if (!line.sectioned()) return out;
+  const std::vector<FeCatenaryData>& tension_sections = line.tension_sections;
   const std::size_t ns = tension_sections.size();
-  const int N = overlap_spans;
+  const int N = line.overlap_spans;
+  const double encumbrance = line.encumbrance;
+  const std::vector<double>&overlap_outgoing = line.overlap_outgoing, &overlap_incoming = line.overlap_incoming,
+                       &overlap_outgoing_x = line.overlap_outgoing_x, &overlap_incoming_x = line.overlap_incoming_x;
   auto fail = [](int k, const std::string& key, const std::string& problem) { throw FeKeyError({k, key, -1}, problem); };
   if (ns < 2) fail(-1, "tension_sections", fmt::format("a line of tension sections needs at least two, got {}", ns));
   if (ns > 100) fail(-1, "tension_sections", fmt::format("at most 100 sections, got {}", ns));
@@ -84,7 +89,9 @@ void FeCatenaryData::link_sections() {
   double start = 0;
   int first = 0;
   for (std::size_t k = 0; k < ns; ++k) {
-    FeCatenaryData& s = tension_sections[k];
+    const FeCatenaryData& given = tension_sections[k];
+    FeLinkedSection linked{given, 0, 0, 1};
+    FeCatenaryData& s = linked.line;
     const bool middle = k > 0 && k + 1 < ns;
     const int need = middle ? 2 * N + 1 : N + 1;
     if (s.spans < need)
@@ -94,19 +101,19 @@ void FeCatenaryData::link_sections() {
                        s.spans, middle ? "its two overlaps" : "its overlap", N, need,
                        middle ? ": its two overlaps must not cross" : ": one of its own besides the overlap"));
     if (k > 0) {
-      const FeCatenaryData& p = tension_sections[k - 1];
+      const FeLinkedSection& p = out[k - 1];
       for (int i = 0; i <= N; ++i) {
-        const double mine = start + i * s.span, theirs = p.line_start + (p.spans - N + i) * p.span;
+        const double mine = start + i * s.span, theirs = p.line_start + (p.line.spans - N + i) * p.line.span;
         if (std::abs(mine - theirs) > 1e-6)
           fail(static_cast<int>(k), "span",
                fmt::format("section {} does not share its overlap supports with section {}: its mast {} is at {:.6g} m, "
                            "theirs at {:.6g} m (spans {} m and {} m); consecutive sections share overlap.spans + 1 = {} masts",
-                           k + 1, k, i + 1, mine, theirs, s.span, p.span, N + 1));
+                           k + 1, k, i + 1, mine, theirs, s.span, p.line.span, N + 1));
       }
     }
-    s.line_start = start;
-    s.first_span = first;
-    s.wire_label = static_cast<int>(k % 2) + 1;
+    linked.line_start = start;
+    linked.first_span = first;
+    linked.wire_label = static_cast<int>(k % 2) + 1;
     // The section's profile: 0 at its masts outside the overlaps, each overlap's profile over it.
     const double len = s.spans * s.span, out_from = (s.spans - N) * s.span;
     s.height_x.clear(), s.height_z.clear();
@@ -123,7 +130,14 @@ void FeCatenaryData::link_sections() {
     s.tension_sections.clear();
     start += (s.spans - N) * s.span;
     first += s.spans - N;
+    out.push_back(std::move(linked));
   }
+  return out;
+}
+
+void FeCatenaryData::join_sections() {
+  if (!sectioned()) return;
+  (void)link_sections(*this);  // they form a line (FeKeyError otherwise)
   spans = line_spans();
   span = tension_sections.front().span;
 }

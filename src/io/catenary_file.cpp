@@ -353,7 +353,7 @@ YAML::Node locate(const YAML::Node& root, const FeLocation& l) {
   return at;
 }
 
-// A located complaint (FeCatenaryData::validate, link_sections) at the line of its key.
+// A located complaint (FeCatenaryData::validate, join_sections) at the line of its key.
 [[noreturn]] void fe_fail(const detail::Reader& rd, const YAML::Node& root, const FeKeyError& e) {
   const FeLocation& l = e.at;
   const YAML::Node at = locate(root, l);
@@ -514,7 +514,7 @@ void read_fe_sections(const detail::Reader& rd, const YAML::Node& root, catenary
     d.tension_sections.push_back(std::move(s));
   }
   try {
-    d.link_sections();
+    d.join_sections();
   } catch (const FeKeyError& e) {
     fe_fail(rd, root, e);
   }
@@ -651,7 +651,7 @@ void apply_override(Parsed& c, const std::string& o) {
         throw ModelError(fmt::format("--set '{}': a line of tension sections takes its spans from its sections", o));
       for (catenary::FeCatenaryData& s : c.fe.tension_sections) set_fe(s, section + "." + key, value, o);
       try {
-        c.fe.link_sections();
+        c.fe.join_sections();
       } catch (const InvalidArgument& e) {
         throw ModelError(fmt::format("--set '{}': {}", o, e.what()));
       }

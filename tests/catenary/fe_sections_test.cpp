@@ -42,7 +42,7 @@ FeCatenaryData two_sections(int spans, const std::vector<std::string>& sets = {}
     d.overlap_outgoing = {0, 0, 0.2, 0.5}, d.overlap_incoming = {0.5, 0.2, 0, 0};
     d.overlap_outgoing_x.clear(), d.overlap_incoming_x.clear();
   }
-  d.link_sections();
+  d.join_sections();
   return d;
 }
 
@@ -53,8 +53,10 @@ TEST(FeSections, AwayFromItsOverlapASectionIsTheSingleSectionLine) {
   // which carry load across each mast, pass the raised spans' influence on, ≈ 100 × weaker a span:
   // 5e-9 m in span 7, 6e-3 m in span 10.)
   const FeCatenaryData line = io::read_fe_catenary_data(kOverlap, {});
-  const FeCatenaryData& sec = line.tension_sections.front();
+  const std::vector<catenary::FeLinkedSection> linked = catenary::link_sections(line);
+  const FeCatenaryData& sec = linked.front().line;
   ASSERT_EQ(sec.spans, 12);
+  EXPECT_TRUE(line.tension_sections.front().mast_height.empty());  // the data as written: the pass placed a copy
   ASSERT_EQ(sec.mast_height.back(), 0.5);
   FeCatenaryData plain = io::read_fe_catenary_data(INERTA_SOURCE_DIR "/models/catenary-fe-stitched.yaml", {"line.spans=12"});
   const FeLine a(sec), b(plain);
@@ -77,18 +79,20 @@ TEST(FeSections, AwayFromItsOverlapASectionIsTheSingleSectionLine) {
 TEST(FeSections, EverySectionsStaticStateIsAnEquilibrium) {
   const FeCatenaryData line = io::read_fe_catenary_data(kOverlap, {});
   ASSERT_EQ(line.tension_sections.size(), 3u);
-  for (const FeCatenaryData& s : line.tension_sections) {
+  const std::vector<catenary::FeLinkedSection> linked = catenary::link_sections(line);
+  for (const catenary::FeLinkedSection& ls : linked) {
+    const FeCatenaryData& s = ls.line;
     const FeLine L(s);
     const FeLine::Residual r = L.equilibrium_residual();
-    EXPECT_LT(r.force, 1e-8 * r.load_scale) << s.first_span;
-    EXPECT_LT(r.dropper, 1e-6) << s.first_span;
+    EXPECT_LT(r.force, 1e-8 * r.load_scale) << ls.first_span;
+    EXPECT_LT(r.dropper, 1e-6) << ls.first_span;
     // Pre-sag 0: the contact wire at its height profile at every dropper and mast.
     for (const FeLine::Dropper& dr : L.droppers()) EXPECT_NEAR(L.static_height(dr.x), s.height_at(dr.x), 1e-9) << dr.x;
     for (int m = 0; m <= s.spans; ++m)
       EXPECT_NEAR(L.static_height(m * s.span), s.mast_height[static_cast<std::size_t>(m)], 1e-9) << m;
   }
   // A tensioning device at the anchors instead of pins: still an equilibrium, the ends at their heights.
-  FeCatenaryData s = line.tension_sections[1];
+  FeCatenaryData s = linked[1].line;
   s.anchor = {false, 2e5, 30};
   const FeLine L(s);
   const FeLine::Residual r = L.equilibrium_residual();
@@ -120,8 +124,7 @@ TEST(FeSections, WithTheOtherWireOutOfReachThePantographSeesOnlyItsOwn) {
   // line of its own) to round-off, and the incoming wire carries nothing.
   const FeCatenaryData d = two_sections(6, {}, true);
   const double span = d.span, t_end = (4 * span - 1) / (250 / 3.6);  // the contact point short of mast 4 (o1)
-  FeCatenaryData alone = d.tension_sections.front();
-  alone.tension_sections.clear();
+  FeCatenaryData alone = catenary::link_sections(d).front().line;
   const auto both = run(d, t_end), one = run(alone, t_end);
   const auto F2 = column(both, "F_contact"), F1 = column(one, "F_contact"), w2 = column(both, "F_contact_w2");
   ASSERT_EQ(F1.size(), F2.size());
@@ -187,7 +190,8 @@ TEST(FeSections, TheBundledOverlapHasBothWiresAtTheRunningHeightOverHalfItsMiddl
   // wire above the running one elsewhere in the overlap, and every dropper in tension (the rise
   // within what gravity lets a wire that droppers only pull take).
   const FeCatenaryData line = io::read_fe_catenary_data(kOverlap, {});
-  const FeCatenaryData &out = line.tension_sections[0], &in = line.tension_sections[1];
+  const std::vector<catenary::FeLinkedSection> linked = catenary::link_sections(line);
+  const FeCatenaryData &out = linked[0].line, &in = linked[1].line;
   const double span = line.span, o0 = (out.spans - 3) * span;  // the overlap's first support, along the line
   const FeLine a(out), b(in);
   int common = 0;

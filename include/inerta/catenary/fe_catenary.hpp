@@ -26,7 +26,7 @@ struct FeSectionLine {
   std::shared_ptr<const FeLine> line;
   std::shared_ptr<const class FeModalLine> modal;
   double start = 0, end = 0;  ///< m along the whole line: its first and last mast (its anchors)
-  int wire = 1;               ///< 1 or 2 (FeCatenaryData::wire_label)
+  int wire = 1;               ///< 1 or 2 (FeLinkedSection::wire_label)
 };
 
 /// The finite-element catenary as a catenary type (co-simulated: the line is stepped by

@@ -62,7 +62,8 @@ struct FeCatenaryData {
   /// m: the contact wire's height profile, piecewise linear through the points (height_x from the
   /// section's first mast, strictly increasing from 0 to its length; height_z up): the droppers'
   /// targets between masts, e.g. an overlap's middle span with both wires at the running height over
-  /// part of it. Empty: mast_height, linear between the masts. link_sections sets both.
+  /// part of it. Empty: mast_height, linear between the masts. A linked section's are set from the
+  /// overlaps (link_sections); a file's sections do not give them.
   std::vector<double> height_x, height_z;
   /// The height at x (m from the section's first mast): height_x/z, else mast_height, else 0.
   double height_at(double x) const;
@@ -72,11 +73,8 @@ struct FeCatenaryData {
     bool pinned = true;
     double stiffness = 0, mass = 0;
   } anchor;
-  double line_start = 0;  ///< m: x of this section's first mast along the whole line
-  int first_span = 0;     ///< its first span among the line's (0-based)
-  int wire_label = 1;     ///< which contact wire it is along the line: 1 (odd sections) or 2 (even)
-
-  /// The line's tension sections, each a whole section (the fields above set); consecutive ones
+  /// The line's tension sections as written, each a whole section (the line's keys with its own over
+  /// them); link_sections places them along the line. Consecutive ones
   /// overlap over `overlap_spans` spans (they share overlap_spans + 1 masts). Empty: the line is one
   /// section, pinned at height 0 at both ends (every file before issue 35).
   std::vector<FeCatenaryData> tension_sections;
@@ -91,12 +89,26 @@ struct FeCatenaryData {
   bool sectioned() const { return !tension_sections.empty(); }
   /// The whole line's spans (the sections' less the overlaps), for a sectioned line.
   int line_spans() const;
-  /// Sets each section's place along the line (line_start, first_span, wire_label), its mast
-  /// heights from the overlaps and the line's `spans`; InvalidArgument naming the key
-  /// (tension_sections[k].…, overlap.…) when the sections cannot form a line.
-  void link_sections();
+  /// A line of tension sections: checks that its sections form a line (link_sections) and sets the
+  /// whole line's `spans` (line_spans) and `span` (the first section's) from them; FeKeyError naming
+  /// the key (tension_sections[k].…, overlap.…) when they cannot. The sections themselves are left as
+  /// written. Nothing for a single-section line.
+  void join_sections();
   /// InvalidArgument naming the offending value.
   void validate() const;
 };
+
+/// A tension section placed along its line (the sections pass, src/catenary/fe_sections.cpp): its
+/// data with its heights set from the overlaps (a line of its own for FeLine), where it starts and which
+/// contact wire it is.
+struct FeLinkedSection {
+  FeCatenaryData line;     ///< the section as a line: its keys, its mast_height and height profile
+  double line_start = 0;   ///< m: x of its first mast along the whole line
+  int first_span = 0;      ///< its first span among the line's (0-based)
+  int wire_label = 1;      ///< which contact wire it is along the line: 1 (odd sections) or 2 (even)
+};
+/// The sections of a line of tension sections placed along it (empty for a single-section line);
+/// FeKeyError (tension_sections[k].…, overlap.…) when they cannot form a line. `line` is unchanged.
+std::vector<FeLinkedSection> link_sections(const FeCatenaryData& line);
 
 }  // namespace inerta::catenary
