@@ -592,7 +592,11 @@ bool set_fe(catenary::FeCatenaryData& d, std::string path, const std::string& va
       return true;
     }
     case T::Csv:
-      read_csv_profile(value, std::get<catenary::FeCsvRef>(r));
+      try {
+        read_csv_profile(value, std::get<catenary::FeCsvRef>(r));
+      } catch (const ModelError& e) {
+        throw ModelError(fmt::format("--set '{}': {}", o, e.what()));
+      }
       return true;
     case T::SpanRange: {
       const auto colon = value.find(':');

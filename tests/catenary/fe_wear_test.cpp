@@ -99,7 +99,12 @@ TEST(FeWear, FileErrorsNameTheKey) {
   };
   EXPECT_NE(error({"wear.uniform=0"}).find("wear: uniform: must be > 0 (%), got 0"), std::string::npos) << error({"wear.uniform=0"});
   EXPECT_NE(error({"wear.uniform=120"}).find("must be <= 100 (%)"), std::string::npos);
-  EXPECT_NE(error({"wear.profile=/nonexistent/w.csv"}).find("w.csv"), std::string::npos);
+  EXPECT_NE(error({"wear.profile=/nonexistent/w.csv"}).find("--set 'wear.profile=/nonexistent/w.csv': /nonexistent/w.csv"), std::string::npos)
+      << error({"wear.profile=/nonexistent/w.csv"});
+  EXPECT_NE(error({"wear.profile=/dev/zero"}).find("not a regular file"), std::string::npos) << error({"wear.profile=/dev/zero"});
+  EXPECT_NE(error({"wear.uniform=nan"}).find("must be > 0 (%), got nan"), std::string::npos) << error({"wear.uniform=nan"});
+  EXPECT_NE(error({"stitch.droppers.EA=1e300"}).find("must be <= 1e+09 (N), got 1e+300"), std::string::npos)
+      << error({"stitch.droppers.EA=1e300"});
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("inerta_wear3_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "bad.csv") << "x,percent\n0,100\n100,130\n";
