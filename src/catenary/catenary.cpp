@@ -10,6 +10,10 @@
 namespace inerta::catenary {
 
 std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& pantographs, double speed) const {
+  return make_coupled(running(pantographs, speed), speed);
+}
+
+std::vector<PantographOnLine> Catenary::running(const std::vector<PantographOnLine>& pantographs, double speed) const {
   if (pantographs.empty()) throw InvalidArgument("couple: no pantograph given");
   if (!(speed > 0) || !std::isfinite(speed))
     throw InvalidArgument(fmt::format("couple: the speed must be a positive number of m/s, got {}", speed));
@@ -33,7 +37,63 @@ std::unique_ptr<Coupled> Catenary::couple(const std::vector<PantographOnLine>& p
   }
   std::vector<PantographOnLine> running = pantographs;  // with each one's aerodynamic uplift at this speed
   for (PantographOnLine& p : running) p.pantograph = pantograph::at_speed(p.pantograph, speed);
-  return make_coupled(running, speed);
+  return running;
+}
+
+std::unique_ptr<CoupledLanes> Catenary::couple_lanes(const std::vector<std::vector<PantographOnLine>>& trains,
+                                                     double speed) const {
+  if (trains.empty()) throw InvalidArgument("couple_lanes: no train given");
+  std::vector<std::vector<PantographOnLine>> run;
+  for (std::size_t i = 0; i < trains.size(); ++i) {
+    if (trains[i].size() != trains.front().size())
+      throw InvalidArgument(fmt::format("couple_lanes: train {} has {} pantograph(s), train 1 has {}", i + 1,
+                                        trains[i].size(), trains.front().size()));
+    for (std::size_t k = 0; k < trains[i].size(); ++k)
+      if (trains[i][k].x0 != trains.front()[k].x0)
+        throw InvalidArgument(fmt::format("couple_lanes: pantograph {} of train {} is at x0 = {:g} m, of train 1 at {:g} m; "
+                                          "lanes run at the same positions",
+                                          k + 1, i + 1, trains[i][k].x0, trains.front()[k].x0));
+    run.push_back(running(trains[i], speed));
+  }
+  return make_lanes(run, speed);
+}
+
+std::unique_ptr<CoupledLanes> Catenary::make_lanes(const std::vector<std::vector<PantographOnLine>>& trains,
+                                                   double speed) const {
+  std::vector<std::unique_ptr<Coupled>> lanes;
+  for (const auto& t : trains) lanes.push_back(make_coupled(t, speed));
+  return std::make_unique<CoupledLanes>(std::move(lanes));
+}
+
+CoupledLanes::CoupledLanes(std::vector<std::unique_ptr<Coupled>> lanes)
+    : lanes_(std::move(lanes)), errors_(lanes_.size()) {}
+
+Coupled& CoupledLanes::lane(int i) {
+  if (i < 0 || i >= lanes()) throw InvalidArgument(fmt::format("lane {} does not exist: there are {}", i, lanes()));
+  return *lanes_[static_cast<std::size_t>(i)];
+}
+const Coupled& CoupledLanes::lane(int i) const { return const_cast<CoupledLanes*>(this)->lane(i); }
+
+void CoupledLanes::fail(int i, std::exception_ptr e) {
+  lane(i);
+  errors_[static_cast<std::size_t>(i)] = std::move(e);
+}
+
+std::exception_ptr CoupledLanes::error(int i) const {
+  lane(i);
+  return errors_[static_cast<std::size_t>(i)];
+}
+
+void CoupledLanes::advance(double t_end, double dt, const solve::IntegratorOptions& options, const LaneObserver& observer,
+                           bool accelerations) {
+  for (int i = 0; i < lanes(); ++i) {
+    if (!running(i)) continue;
+    try {
+      lane(i).advance(t_end, dt, options, [&](const Sample& s) { observer(i, s); }, accelerations);
+    } catch (...) {
+      fail(i, std::current_exception());
+    }
+  }
 }
 
 double Catenary::estimated_seconds(const std::vector<PantographOnLine>& pantographs, double speed, double t_end) const {

@@ -10,6 +10,7 @@
 //     contact points with the pantographs' multibody models, which it integrates in between.
 // Contacts are addressed by typed handles (ContactId), one per pantograph, in the order given.
 #include <array>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -113,6 +114,36 @@ class Coupled {
                                   const SampleObserver& observer, bool accelerations = false) = 0;
 };
 
+/// One sample of lane `lane` of a CoupledLanes.
+using LaneObserver = std::function<void(int lane, const Sample&)>;
+
+/// Several designs on one line at one speed, stepped together (issue 50: a study's batch of designs):
+/// lane i is the Coupled of the i-th train, the trains' pantographs at the same positions. Each lane's
+/// samples and results are those of coupling its train alone, bit for bit. A lane that fails (no static
+/// equilibrium, a numerical failure in its run) stops with its exception kept (error(i)); the others go
+/// on. Catenary::couple_lanes makes one.
+class CoupledLanes {
+ public:
+  explicit CoupledLanes(std::vector<std::unique_ptr<Coupled>> lanes);
+  virtual ~CoupledLanes() = default;
+  int lanes() const { return static_cast<int>(lanes_.size()); }
+  Coupled& lane(int i);
+  const Coupled& lane(int i) const;
+  /// Lane i stops with this exception (e.g. its equilibrate() threw): not advanced any more.
+  void fail(int i, std::exception_ptr e);
+  std::exception_ptr error(int i) const;  ///< nullptr while it runs
+  bool running(int i) const { return !error(i); }
+  /// Every running lane from its time() to t_end: observer(i, s) receives what lane i's own
+  /// Coupled::advance would give its observer, in the same order for that lane. A lane's exception
+  /// (from its run or from the observer) fails that lane alone.
+  virtual void advance(double t_end, double dt, const solve::IntegratorOptions& options, const LaneObserver& observer,
+                       bool accelerations = false);
+
+ protected:
+  std::vector<std::unique_ptr<Coupled>> lanes_;
+  std::vector<std::exception_ptr> errors_;
+};
+
 /// A catenary type (lumped.hpp, wire_profile.hpp, ...).
 class Catenary {
  public:
@@ -146,6 +177,10 @@ class Catenary {
   std::unique_ptr<Coupled> couple(const std::vector<PantographOnLine>& pantographs, double speed) const;
   /// One pantograph at x0 = 0.
   std::unique_ptr<Coupled> couple(const pantograph::Pantograph& p, const Contact& contact, double speed) const;
+  /// Several trains (designs) on the line at `speed`, stepped together (CoupledLanes): each train
+  /// checked as couple does; InvalidArgument unless every train has its pantographs at the same x0.
+  /// A catenary that cannot share work between them (the point models) advances them one after another.
+  std::unique_ptr<CoupledLanes> couple_lanes(const std::vector<std::vector<PantographOnLine>>& trains, double speed) const;
   /// The work runs with these pantographs need once (a finite-element line's modes, in parallel);
   /// sweeps call it before their parallel loop. Nothing for most catenaries; couple does it too.
   virtual void prepare(const std::vector<PantographOnLine>& /*pantographs*/) const {}
@@ -174,6 +209,13 @@ class Catenary {
   /// After couple's checks (count, speed, contact laws valid, contact markers present).
   virtual std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs,
                                                 double speed) const = 0;
+  /// After couple_lanes' checks: by default each train coupled on its own (CoupledLanes' own advance).
+  virtual std::unique_ptr<CoupledLanes> make_lanes(const std::vector<std::vector<PantographOnLine>>& trains,
+                                                   double speed) const;
+
+ private:
+  /// couple's checks; the pantographs with their aerodynamic uplift at this speed.
+  std::vector<PantographOnLine> running(const std::vector<PantographOnLine>& pantographs, double speed) const;
 };
 
 }  // namespace inerta::catenary
