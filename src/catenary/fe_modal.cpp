@@ -1,5 +1,9 @@
 // The per-run modal solver of the finite-element line (catenary/fe_modal.hpp, spec/05 §5.3): the
 // modal state in the current window, the HHT-α step with the rank-one local forces, window moves.
+// Several runs with their loads at the same places step together as lanes (issue 50): the window,
+// its matrices and the loads' modal rows and couplings are the group's, each lane holds its state
+// and does its own arithmetic in the order a lone run does it (the droppers' rows meet every lane's
+// vector in one pass over them, each vector summed as alone: kernels::rows_dot_each).
 // The windows and their modes: fe_modal_windows.cpp; the eigensolver and band algebra: numerics.
 #include "inerta/catenary/fe_modal.hpp"
 
@@ -8,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "inerta/error.hpp"
@@ -17,344 +22,118 @@ namespace inerta::catenary {
 
 namespace {
 
-// The modal solve of one run: the current window and the modal state in it.
-class ModalSolver final : public FeLineSolver {
+// A local force of shape w (at most 4 window DOFs l with weights w): p = Φᵀw, pw = Ω⁻² p, ks = K₀⁻¹w
+// at the special DOFs; a dropper or an absorbing end is itself a combination (s, sw) of special
+// DOFs. d and coeff as in fe_integrator.cpp (stiffness term and load coefficient).
+struct Mod {
+  std::array<int, 4> l{-1, -1, -1, -1};
+  std::array<double, 4> w{};
+  Eigen::VectorXd p, pw, ks;
+  std::array<int, 2> s{-1, -1};
+  std::array<double, 2> sw{};
+  double d = 0, coeff = 0;
+  double x = NAN;  // m: a contact point's place (NaN: a special DOF)
+};
+struct Contact {
+  int load;
+  double k, fh;
+};
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// The modal solve of one or more runs (lanes) in one window.
+class ModalLanes final : public FeLineLanes {
  public:
-  ModalSolver(std::shared_ptr<const FeModalLine> modal, double spread)
+  ModalLanes(std::shared_ptr<const FeModalLine> modal, double spread, int lanes)
       : ml_(std::move(modal)), L_(ml_->line()), W_(ml_->window_spans(spread)) {
     const FeCatenaryData& d = L_.data();
     h_ = d.time_step, alpha_ = d.hht_alpha;
     if (!(h_ > 0) || !std::isfinite(h_)) throw InvalidArgument("finite-element catenary", "time_step", "must be > 0 (s)");
     if (!(alpha_ >= -1.0 / 3.0 && alpha_ <= 0))
       throw InvalidArgument("finite-element catenary", "alpha", fmt::format("HHT-α needs −1/3 <= α <= 0, got {}", alpha_));
+    if (lanes < 1) throw InvalidArgument(fmt::format("modal lanes: {} lanes; at least one", lanes));
     gamma_ = 0.5 - alpha_;
     beta_ = 0.25 * (1 - alpha_) * (1 - alpha_);
     c0_ = 1 / (beta_ * h_ * h_), c1_ = gamma_ / (beta_ * h_), c2_ = 1 / (beta_ * h_);
     c3_ = 1 / (2 * beta_) - 1, c4_ = gamma_ / beta_ - 1, c5_ = h_ * (gamma_ / (2 * beta_) - 1);
-    slack_.assign(L_.droppers().size(), 0);
+    for (int i = 0; i < lanes; ++i) lanes_.push_back(std::make_unique<Lane>(*this, i));
   }
-  double dt() const override { return h_; }
-  double time() const override { return t_; }
-
-  void start(const std::vector<double>& x, const std::vector<double>& F, double t) override {
-    if (W_ < L_.data().spans) ml_->prepare(W_);
-    t_ = t;
-    std::vector<char> slack;
-    const Eigen::VectorXd u = L_.static_displacement(x, F, &slack);
-    enter(first_span_for(x));
-    // In equilibrium: q = Ω⁻² Φᵀ f under the contact forces and the slack droppers' corrections;
-    // the modes left out give the residual displacement at the contact points.
-    const auto& md = *win_->modes;
-    std::fill(slack_.begin(), slack_.end(), 0);
-    mods_.clear();
-    for (std::size_t k = 0; k < x.size(); ++k) mods_.push_back(contact_mod(L_.contact_shape(x[k]), 0, F[k], x[k]));
-    const auto& drs = L_.droppers();
-    for (int k : droppers_)
-      if (slack[static_cast<std::size_t>(k)]) {
-        const auto& dr = drs[static_cast<std::size_t>(k)];
-        slack_[static_cast<std::size_t>(k)] = 1;
-        const int j = static_cast<int>(std::find(droppers_.begin(), droppers_.end(), k) - droppers_.begin());
-        mods_.push_back(special_mod(2 * j, 2 * j + 1, 0, dr.tension + dr.stiffness * (u[dr.dof_m] - u[dr.dof_c])));
-      }
-    q_.setZero(md.omega2.size());
-    for (const Mod& m : mods_) q_ += m.coeff * m.pw;  // coeff: the force here
-    md.check_intact(t);
-    qd_.setZero(q_.size()), qdd_.setZero(q_.size()), qi_.setZero(q_.size());
-    last_x_ = x;
-    last_F_ = F;
-    last_res_.assign(x.size(), 0.0);
-    res_ready_.assign(x.size(), 1);
-    load_p_.resize(x.size()), load_px_.resize(x.size());
-    for (std::size_t k = 0; k < x.size(); ++k) {
-      for (const Mod& m : mods_)
-        if (m.coeff != 0) last_res_[k] += residual(mods_[k], m) * m.coeff;
-      load_p_[k] = mods_[k].p;
-      load_px_[k] = shape_slope(L_.contact_shape(x[k]));
-    }
+  int lanes() const override { return static_cast<int>(lanes_.size()); }
+  FeLineSolver& lane(int i) override {
+    if (i < 0 || i >= lanes()) throw InvalidArgument(fmt::format("modal lanes: lane {} of {}", i, lanes()));
+    return *lanes_[static_cast<std::size_t>(i)];
   }
-
-  // One step. The set of rank-one terms: active contacts (changing every step) and the special
-  // terms, absorbing ends (always) and slack droppers; everything the active-set passes need of the
-  // special terms is precomputed per window (enter), so a pass costs O(droppers × set), not O(modes).
-  void step(const std::vector<FeLoad>& loads, std::vector<double>& forces) override {
-    const double t1 = t_ + h_, ap = 1 + alpha_;
-    xs_.clear();
-    for (const FeLoad& ld : loads) xs_.push_back(ld.x);
-    if (const int first = first_span_for(xs_); first != win_->first_span) move_to(first);
-    const auto& md = *win_->modes;
-    const std::size_t nd = droppers_.size(), ns = smods_.size();
-    // Right-hand side and the diagonal step matrix, a mode each (one pass over the modes).
-    const Eigen::Index nm = q_.size();
-    vt_.resize(nm), r_.resize(nm);
-    {
-      const double *q = q_.data(), *qd = qd_.data(), *qdd = qdd_.data(), *qi = qi_.data(), *dm = damp_.data();
-      double *vt = vt_.data(), *r = r_.data();
-      for (Eigen::Index i = 0; i < nm; ++i) {
-        const double w1 = c0_ * q[i] + c2_ * qd[i] + c3_ * qdd[i];
-        vt[i] = c1_ * q[i] + c4_ * qd[i] + c5_ * qdd[i];
-        r[i] = w1 + ap * (dm[i] * vt[i]);
-        if (alpha_ != 0) r[i] += alpha_ * qi[i];
-      }
-    }
-    forces.assign(loads.size(), 0.0);
-    contacts_.clear();
-    mods_.clear();
-    prescribed_.clear();
-    load_p_.resize(loads.size()), load_px_.resize(loads.size());
-    for (std::size_t k = 0; k < loads.size(); ++k) {
-      const FeLoad& ld = loads[k];
-      const FeLine::Shape sh = L_.contact_shape(ld.x);
-      Mod m = contact_mod(sh, 0, 0, ld.x, &load_px_[k]);
-      load_p_[k] = m.p;  // kept for height, height_rate and uplift at this point after the step
-      if (!ld.penalty) {
-        r_ += (ap * ld.force) * m.p;
-        prescribed_.push_back({std::move(m), ld.force});
-        forces[k] = ld.force;
-        continue;
-      }
-      const double Nvt = m.p.dot(vt_), w_x = load_px_[k].dot(q_);
-      const double conv = ld.speed * (L_.static_slope(ld.x) + w_x);
-      const double fh = ld.stiffness * (ld.head_y - L_.static_height(ld.x)) + ld.damping * (ld.head_v - conv + Nvt);
-      const double kc = ld.stiffness + ld.damping * c1_;
-      contacts_.push_back({static_cast<int>(k), kc, fh});
-      m.d = ap * kc, m.coeff = ap * fh;
-      mods_.push_back(std::move(m));
-    }
-    const std::size_t nc = mods_.size();
-    if (active_.size() != nc) active_.assign(nc, 1);
-    contact_w_.assign(nc, 0.0);
-    for (std::size_t e = 0; e < win_->ends.size(); ++e)  // the dashpots: F = −c v = c vt − c c1 u
-      smods_[nd + e].coeff = ap * win_->ends[e].damping * md.phi.row(win_->ends[e].local).dot(vt_);
-    x0_ = r_.cwiseProduct(invA_);
-    // Displacements without the set (Wx0: contacts, then specials; D0: droppers), the prescribed
-    // forces' residual included.
-    const Eigen::Index N = static_cast<Eigen::Index>(nc + ns);
-    wx0_.resize(N);
-    // The droppers' rows with x0 and with each contact's A⁻¹p − Ω⁻²p/(1+α) (the step's largest cost:
-    // droppers × modes).
-    const Eigen::Index m = A_.size();
-    xz_.resize(m, static_cast<Eigen::Index>(1 + nc));
-    xz_.col(0) = x0_;
-    for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(1 + c)) = mods_[c].p.cwiseProduct(dz_);  // A⁻¹p − Ω⁻²p/(1+α)
-    dxz_.resize(static_cast<Eigen::Index>(nd), xz_.cols());
-    {  // x0 against the droppers' rows (every step); a contact's column from its DOFs' (kept per shape)
-      const double* xs[1] = {x0_.data()};
-      kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), xs, 1, dxz_.col(0).data());
-      std::array<int, 8> missing{};
-      int nmiss = 0;
-      for (std::size_t c = 0; c < nc && nmiss + 4 <= 8; ++c)
-        for (int l : mods_[c].l)
-          if (l >= 0 && !dropper_columns_.count(l) && std::find(missing.begin(), missing.begin() + nmiss, l) == missing.begin() + nmiss)
-            missing[static_cast<std::size_t>(nmiss++)] = l;
-      if (nmiss > 0) make_dropper_columns(missing.data(), nmiss);
-      for (std::size_t c = 0; c < nc; ++c) {
-        auto col = dxz_.col(static_cast<Eigen::Index>(1 + c));
-        col.setZero();
-        for (int a = 0; a < 4; ++a)
-          if (const int l = mods_[c].l[static_cast<std::size_t>(a)]; l >= 0) col += mods_[c].w[static_cast<std::size_t>(a)] * dropper_column(l);
-      }
-    }
-    d0_ = dxz_.col(0);
-    for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] = mods_[c].p.dot(x0_);
-    for (std::size_t j = 0; j < nd; ++j) wx0_[static_cast<Eigen::Index>(nc + j)] = d0_[static_cast<Eigen::Index>(j)];
-    for (std::size_t e = 0; e < win_->ends.size(); ++e) wx0_[static_cast<Eigen::Index>(nc + nd + e)] = smods_[nd + e].p.dot(x0_);
-    for (const auto& [f, F] : prescribed_) {
-      if (F == 0) continue;  // a window's placeholder for a pantograph on another section (fe_coupled.cpp)
-      for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] += residual(mods_[c], f) * F;
-      for (std::size_t s2 = 0; s2 < ns; ++s2) wx0_[static_cast<Eigen::Index>(nc + s2)] += residual(smods_[s2], f) * F;
-      d0_ += residual_droppers(f) * F;
-    }
-    // Coupling of each contact with everything: G(c, ·) and its effect on the droppers.
-    gc_.resize(N, static_cast<Eigen::Index>(nc));
-    dwc_.resize(static_cast<Eigen::Index>(nd), static_cast<Eigen::Index>(nc));
-    for (std::size_t c = 0; c < nc; ++c) {
-      const Mod& mc = mods_[c];
-      const auto zc = xz_.col(static_cast<Eigen::Index>(1 + c));  // Z part and the modal part of the residual
-      Eigen::VectorXd col(N);
-      for (std::size_t c2 = 0; c2 < nc; ++c2) col[static_cast<Eigen::Index>(c2)] = mods_[c2].p.dot(mc.p.cwiseProduct(invA_)) + residual(mods_[c2], mc) / ap;
-      const auto dz = dxz_.col(static_cast<Eigen::Index>(1 + c));
-      for (std::size_t j = 0; j < nd; ++j)
-        col[static_cast<Eigen::Index>(nc + j)] = dz[static_cast<Eigen::Index>(j)] + (mc.ks[static_cast<Eigen::Index>(2 * j)] - mc.ks[static_cast<Eigen::Index>(2 * j + 1)]) / ap;
-      for (std::size_t e = 0; e < win_->ends.size(); ++e)
-        col[static_cast<Eigen::Index>(nc + nd + e)] = smods_[nd + e].p.dot(zc) + mc.ks[static_cast<Eigen::Index>(2 * nd + e)] / ap;
-      gc_.col(static_cast<Eigen::Index>(c)) = col;
-      dwc_.col(static_cast<Eigen::Index>(c)) = col.segment(static_cast<Eigen::Index>(nc), static_cast<Eigen::Index>(nd));
-    }
-    const auto& drs = L_.droppers();
-    for (int pass = 0;; ++pass) {
-      if (pass > 60)
-        throw NumericalError(fmt::format(
-            "finite-element catenary (modal): t = {:.6g} s: the set of slack droppers and open contacts does not "
-            "settle in 60 passes (a dropper or contact chattering; try a smaller time step)",
-            t1));
-      // The set, as indices into [contacts, specials].
-      set_.clear();
-      for (std::size_t c = 0; c < nc; ++c)
-        if (active_[c]) set_.push_back(static_cast<int>(c));
-      for (std::size_t e = 0; e < win_->ends.size(); ++e) set_.push_back(static_cast<int>(nc + nd + e));
-      for (std::size_t j = 0; j < nd; ++j)
-        if (slack_[static_cast<std::size_t>(droppers_[j])]) set_.push_back(static_cast<int>(nc + j));
-      const Eigen::Index r = static_cast<Eigen::Index>(set_.size());
-      auto G = [&](int i, int j) {  // G between entries of [contacts, specials]
-        if (j < static_cast<int>(nc)) return gc_(i, j);
-        if (i < static_cast<int>(nc)) return gc_(j, i);
-        return gs_(i - static_cast<int>(nc), j - static_cast<int>(nc));
-      };
-      coef_.resize(r);
-      if (r > 0) {
-        Eigen::VectorXd sv(r), Wx0(r);
-        Eigen::MatrixXd Gm(r, r), cap(r, r);
-        for (Eigen::Index i = 0; i < r; ++i) {
-          const int si = set_[static_cast<std::size_t>(i)];
-          const Mod& mi = si < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(si)] : smods_[static_cast<std::size_t>(si) - nc];
-          sv[i] = mi.coeff;
-          Wx0[i] = wx0_[si];
-          for (Eigen::Index j = 0; j < r; ++j) Gm(i, j) = G(si, set_[static_cast<std::size_t>(j)]);
-          cap.row(i) = Gm.row(i);
-          cap(i, i) += 1 / mi.d;
-        }
-        coef_ = sv - cap.partialPivLu().solve(Wx0 + Gm * sv);
-      }
-      bool changed = false;
-      for (std::size_t c = 0; c < nc; ++c) {
-        double w = wx0_[static_cast<Eigen::Index>(c)];
-        for (Eigen::Index j = 0; j < r; ++j) w += G(static_cast<int>(c), set_[static_cast<std::size_t>(j)]) * coef_[j];
-        contact_w_[c] = w;
-        const double F = contacts_[c].fh - contacts_[c].k * w;
-        forces[static_cast<std::size_t>(contacts_[c].load)] = F > 0 ? F : 0.0;
-        if ((F > 0) != static_cast<bool>(active_[c])) active_[c] = F > 0, changed = true;
-      }
-      du_ = d0_;
-      for (Eigen::Index j = 0; j < r; ++j) {
-        const int sj = set_[static_cast<std::size_t>(j)];
-        du_ += coef_[j] * (sj < static_cast<int>(nc) ? dwc_.col(sj) : dws_.col(sj - static_cast<int>(nc)));
-      }
-      for (std::size_t j = 0; j < nd; ++j) {
-        const int k = droppers_[j];
-        const double T = drs[static_cast<std::size_t>(k)].tension + drs[static_cast<std::size_t>(k)].stiffness * du_[static_cast<Eigen::Index>(j)];
-        if ((T < 0) != static_cast<bool>(slack_[static_cast<std::size_t>(k)])) slack_[static_cast<std::size_t>(k)] = T < 0, changed = true;
-      }
-      if (!changed) break;
-    }
-    // The modal solution: u = x0 + Σ coef_j A⁻¹ p_j, then the Newmark update of q̇, q̈ (one pass).
-    sum_.setZero(nm);
-    for (std::size_t j = 0; j < set_.size(); ++j) {
-      const int sj = set_[j];
-      const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
-      sum_ += coef_[static_cast<Eigen::Index>(j)] * m.p;
-    }
-    {
-      double *q = q_.data(), *qd = qd_.data(), *qdd = qdd_.data();
-      const double *x0 = x0_.data(), *iA = invA_.data(), *sm = sum_.data();
-      for (Eigen::Index i = 0; i < nm; ++i) {
-        const double u = x0[i] + iA[i] * sm[i], du = u - q[i];
-        const double a1 = c0_ * du - c2_ * qd[i] - c3_ * qdd[i];
-        qd[i] = c1_ * du - c4_ * qd[i] - c5_ * qdd[i];
-        qdd[i] = a1, q[i] = u;
-      }
-    }
-    md.check_intact(t1);  // a mapped mode file cut short: no result from its zeros (catenary/mode_store.hpp)
-    t_ = t1;
-    // The residual (quasi-static) displacement at each load point, for height() and uplift().
-    last_x_ = xs_;
-    last_F_ = forces;
-    last_res_.assign(loads.size(), 0.0);
-    for (std::size_t c = 0; c < nc; ++c) last_res_[static_cast<std::size_t>(contacts_[c].load)] = contact_w_[c] - mods_[c].p.dot(q_);
-    // Prescribed forces: their residual displacement (from every force of the step); at a zero
-    // force (a placeholder: it adds nothing to the energy) only when its uplift is asked for.
-    prescribed_load_.assign(loads.size(), -1);
-    res_ready_.assign(loads.size(), 1);
-    for (std::size_t k = 0, i = 0; k < loads.size(); ++k)
-      if (!loads[k].penalty) {
-        prescribed_load_[k] = static_cast<int>(i);
-        if (prescribed_[i].second != 0) last_res_[k] = prescribed_residual(i);
-        else res_ready_[k] = 0;
-        ++i;
-      }
-    if (alpha_ != 0) {  // q = C v + K₀ u − f at t_{n+1}, in modal coordinates (f: the set's forces)
-      qi_ = damp_.cwiseProduct(qd_) + md.omega2.cwiseProduct(q_);
-      for (std::size_t j = 0; j < set_.size(); ++j) {
-        const int sj = set_[j];
-        const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
-        qi_ -= (coef_[static_cast<Eigen::Index>(j)] / ap) * m.p;
-      }
-      for (const auto& [f, F] : prescribed_) qi_ -= F * f.p;
-    }
-  }
-
-  // At a load point of the last step, its shape's modal rows were kept (load_p_, load_px_).
-  int load_at(double x) const {
-    for (std::size_t k = 0; k < last_x_.size() && k < load_p_.size(); ++k)
-      if (last_x_[k] == x) return static_cast<int>(k);
-    return -1;
-  }
-  double uplift(double x) const override {
-    if (const int k = load_at(x); k >= 0) {  // with the quasi-static part of the modes left out
-      const std::size_t kk = static_cast<std::size_t>(k);
-      if (kk < res_ready_.size() && !res_ready_[kk])
-        last_res_[kk] = prescribed_residual(static_cast<std::size_t>(prescribed_load_[kk])), res_ready_[kk] = 1;
-      return load_p_[kk].dot(q_) + last_res_[kk];
-    }
-    const FeLine::Shape sh = L_.contact_shape(x);
-    double w = 0;
-    for (int a = 0; a < 4; ++a)
-      if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) w += sh.N[a] * win_->modes->phi.row(l).dot(q_);
-    win_->modes->check_intact(t_);
-    return w;
-  }
-  double height(double x) const override { return L_.static_height(x) + uplift(x); }
-  double height_rate(double x, double speed) const override {
-    if (const int k = load_at(x); k >= 0)
-      return load_p_[static_cast<std::size_t>(k)].dot(qd_) + speed * (L_.static_slope(x) + load_px_[static_cast<std::size_t>(k)].dot(q_));
-    const FeLine::Shape sh = L_.contact_shape(x);
-    double w_dot = 0, w_x = 0;
-    for (int a = 0; a < 4; ++a)
-      if (const int l = sh.dofs[a] >= 0 ? win_->local(sh.dofs[a]) : -1; l >= 0) {
-        w_dot += sh.N[a] * win_->modes->phi.row(l).dot(qd_);
-        w_x += sh.dN[a] * win_->modes->phi.row(l).dot(q_);
-      }
-    win_->modes->check_intact(t_);
-    return w_dot + speed * (L_.static_slope(x) + w_x);
-  }
-  // ½ q̇ᵀq̇ + ½ qᵀΩ²q, the residual springs ½ Σ F_k ρ_k of the loads, minus the slack droppers'.
-  double energy() const override {
-    double E = 0.5 * qd_.squaredNorm() + 0.5 * q_.dot(win_->modes->omega2.cwiseProduct(q_));
-    for (std::size_t k = 0; k < last_res_.size(); ++k) E += 0.5 * last_F_[k] * last_res_[k];
-    const auto& drs = L_.droppers();
-    for (std::size_t j = 0; j < droppers_.size(); ++j)
-      if (const auto& dr = drs[static_cast<std::size_t>(droppers_[j])]; slack_[static_cast<std::size_t>(droppers_[j])] && static_cast<Eigen::Index>(j) < du_.size()) {
-        const double e = dr.tension / dr.stiffness + du_[static_cast<Eigen::Index>(j)];
-        E -= 0.5 * dr.stiffness * e * e;
-      }
-    return E;
-  }
-  std::vector<double> support_uplift() const override {
-    std::vector<double> u(L_.support_dofs().size(), 0.0);  // 0 outside the window
-    if (support_p_.rows() == 0) return u;
-    Eigen::VectorXd h(support_p_.rows());
-    const double* xs[1] = {q_.data()};
-    kernels::rows_dot(support_p_.data(), q_.size(), static_cast<int>(support_p_.rows()), static_cast<int>(q_.size()), xs, 1, h.data());
-    for (std::size_t i = 0; i < support_of_.size(); ++i) u[static_cast<std::size_t>(support_of_[i])] = h[static_cast<Eigen::Index>(i)];
-    return u;
-  }
+  void step(const std::vector<int>& which, const std::vector<std::vector<FeLoad>>& loads,
+            std::vector<std::vector<double>>& forces, std::vector<std::exception_ptr>& errors) override;
 
  private:
-  // A local force of shape w (at most 4 window DOFs l with weights w): p = Φᵀw, pw = Ω⁻² p, ks = K₀⁻¹w
-  // at the special DOFs; a dropper or an absorbing end is itself a combination (s, sw) of special
-  // DOFs. d and coeff as in fe_integrator.cpp (stiffness term and load coefficient).
-  struct Mod {
-    std::array<int, 4> l{-1, -1, -1, -1};
-    std::array<double, 4> w{};
-    Eigen::VectorXd p, pw, ks;
-    std::array<int, 2> s{-1, -1};
-    std::array<double, 2> sw{};
-    double d = 0, coeff = 0;
-    double x = NAN;  // m: a contact point's place (NaN: a special DOF)
+  class Lane;
+  // One run's state in the group's window, and its solver's queries (FeLineSolver).
+  class Lane final : public FeLineSolver {
+   public:
+    Lane(ModalLanes& g, int index) : g_(g), index_(index) { slack_.assign(g.L_.droppers().size(), 0); }
+    double dt() const override { return g_.h_; }
+    double time() const override { return t_; }
+    void start(const std::vector<double>& x, const std::vector<double>& F, double t) override;
+    // Alone: a group of one (a lane of several steps with them, FeLineLanes::step).
+    void step(const std::vector<FeLoad>& loads, std::vector<double>& forces) override {
+      if (g_.lanes() > 1) throw std::logic_error("modal lanes: a lane of several steps with the others (FeLineLanes::step)");
+      const std::vector<FeLoad>* l[1] = {&loads};
+      std::vector<double>* f[1] = {&forces};
+      std::exception_ptr e[1];
+      const int which[1] = {index_};
+      g_.step_lanes(which, 1, l, f, e);
+      if (e[0]) std::rethrow_exception(e[0]);
+    }
+    double uplift(double x) const override;
+    double height(double x) const override { return g_.L_.static_height(x) + uplift(x); }
+    double height_rate(double x, double speed) const override;
+    double energy() const override;
+    std::vector<double> support_uplift() const override;
+
+    // The step's parts, in the order a lone run does them (ModalLanes::step_lanes).
+    void rhs();
+    void loads(const std::vector<FeLoad>& loads, std::vector<double>& forces);
+    void settle(std::vector<double>& forces);
+    void finish(const std::vector<FeLoad>& loads, std::vector<double>& forces);
+    double prescribed_residual(std::size_t i) const;
+    double coeff(int si) const {  // of an entry of [contacts, specials]
+      const int nc = static_cast<int>(cc_.size()), nd = static_cast<int>(g_.droppers_.size());
+      if (si < nc) return cc_[static_cast<std::size_t>(si)];
+      if (si < nc + nd) return g_.smods_[static_cast<std::size_t>(si - nc)].coeff;
+      return ends_coeff_[si - nc - nd];
+    }
+    double d(int si) const {
+      const int nc = static_cast<int>(cd_.size());
+      return si < nc ? cd_[static_cast<std::size_t>(si)] : g_.smods_[static_cast<std::size_t>(si - nc)].d;
+    }
+    const Mod& mod(int si) const {
+      const int nc = static_cast<int>(g_.mods_.size());
+      return si < nc ? g_.mods_[static_cast<std::size_t>(si)] : g_.smods_[static_cast<std::size_t>(si - nc)];
+    }
+
+    ModalLanes& g_;
+    int index_;
+    double t_ = 0;
+    Eigen::VectorXd q_, qd_, qdd_, qi_;
+    std::vector<char> slack_;    // per dropper of the line
+    std::vector<char> active_;   // per penalty load
+    std::vector<double> last_F_;
+    mutable std::vector<double> last_res_;  // a placeholder's computed when asked (res_ready_)
+    mutable std::vector<char> res_ready_;
+    std::vector<int> prescribed_load_;  // per load: its index in prescribed_ (−1: a contact)
+    // Step scratch.
+    Eigen::VectorXd vt_, r_, x0_, du_, coef_, sum_, wx0_, d0_, ends_coeff_;
+    std::vector<Contact> contacts_;
+    std::vector<double> cd_, cc_, pf_;  // per contact: its d and coeff; per prescribed load: its force
+    std::vector<int> set_;
+    std::vector<double> contact_w_;
+    RowMajor uva_;  // a window move: u, v, a (and M⁻¹-side force) on the old window's DOFs
+    Eigen::VectorXd fi_;
   };
-  struct Contact {
-    int load;
-    double k, fh;
-  };
+
+  // lanes which[0 … n) one step (FeLineLanes::step); a lane's exception into errors[j].
+  void step_lanes(const int* which, int n, const std::vector<FeLoad>* const* loads, std::vector<double>* const* forces,
+                  std::exception_ptr* errors);
 
   int first_span_for(const std::vector<double>& x) const {
     const FeCatenaryData& d = L_.data();
@@ -397,21 +176,6 @@ class ModalSolver final : public FeLineSolver {
     for (auto& [l, c] : columns_) spare_columns_.push_back(std::move(c));
     columns_.clear();
     column_order_.clear();
-  }
-  // The residual displacement at prescribed force i after the step: from every prescribed force
-  // and the set's terms.
-  double prescribed_residual(std::size_t i) const {
-    const Mod& f = prescribed_[i].first;
-    const double ap = 1 + alpha_;
-    const std::size_t nc = mods_.size();
-    double w = 0;
-    for (const auto& [g, F] : prescribed_) w += residual(f, g) * F;
-    for (std::size_t j = 0; j < set_.size(); ++j) {
-      const int sj = set_[j];
-      const Mod& m = sj < static_cast<int>(nc) ? mods_[static_cast<std::size_t>(sj)] : smods_[static_cast<std::size_t>(sj) - nc];
-      w += residual(f, m) * coef_[static_cast<Eigen::Index>(j)] / ap;
-    }
-    return w;
   }
   // With `px`: Φᵀ N'(x) too (shape_slope), from the same rows in the same pass.
   Mod contact_mod(const FeLine::Shape& sh, double d, double coeff, double x, Eigen::VectorXd* px = nullptr) const {
@@ -568,12 +332,19 @@ class ModalSolver final : public FeLineSolver {
     }
   }
 
-  // The window moves: the physical state on the shared DOFs is carried over and projected.
-  void move_to(int first) {
+  // At a load point of the last step, its shape's modal rows were kept (load_p_, load_px_).
+  int load_at(double x) const {
+    for (std::size_t k = 0; k < last_x_.size() && k < load_p_.size(); ++k)
+      if (last_x_[k] == x) return static_cast<int>(k);
+    return -1;
+  }
+
+  // The window moves for the lanes which[0 … n): each one's physical state on the DOFs both windows
+  // share is carried over and projected (q' = Φ'ᵀ M' u).
+  void move_to(int first, const int* which, int n) {
     const std::shared_ptr<const FeWindow> old = win_;
     const auto& mo = *old->modes;
     const int C = alpha_ != 0 ? 4 : 3;  // one pass over Φ for the state's vectors
-    const double* qs[4] = {q_.data(), qd_.data(), qdd_.data(), qi_.data()};
     const Eigen::Index no = mo.phi.rows(), mm = mo.phi.cols();
     // Only the old window's rows on DOFs the new one shares are needed (with a margin of M's band for
     // M u): the span left behind is not read.
@@ -583,84 +354,551 @@ class ModalSolver final : public FeLineSolver {
     const Eigen::Index margin = 32;
     const Eigen::Index r0 = std::max<Eigen::Index>(0, (lo - old->dofs.begin()) - margin);
     const Eigen::Index r1 = std::min<Eigen::Index>(no, (hi - old->dofs.begin()) + margin);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> uva = Eigen::MatrixXd::Zero(no, C);
-    if (r1 > r0)
-      kernels::rows_dot(mo.phi.data() + r0 * mm, mm, static_cast<int>(r1 - r0), static_cast<int>(mm), qs, C, uva.data() + r0 * C);
-    const auto u = uva.col(0), v = uva.col(1), a = uva.col(2);
-    mo.check_intact(t_);
-    Eigen::VectorXd fi;
-    if (alpha_ != 0) fi = mo.M * uva.col(3);
+    for (int j = 0; j < n; ++j) {
+      Lane& s = *lanes_[static_cast<std::size_t>(which[j])];
+      const double* qs[4] = {s.q_.data(), s.qd_.data(), s.qdd_.data(), s.qi_.data()};
+      s.uva_ = RowMajor::Zero(no, C);
+      if (r1 > r0)
+        kernels::rows_dot(mo.phi.data() + r0 * mm, mm, static_cast<int>(r1 - r0), static_cast<int>(mm), qs, C, s.uva_.data() + r0 * C);
+    }
+    mo.check_intact(lanes_[static_cast<std::size_t>(which[0])]->t_);
+    for (int j = 0; j < n; ++j) {
+      Lane& s = *lanes_[static_cast<std::size_t>(which[j])];
+      if (alpha_ != 0) s.fi_ = mo.M * s.uva_.col(3);
+    }
     enter(first);
     const auto& mn = *win_->modes;
-    const Eigen::Index n = static_cast<Eigen::Index>(win_->dofs.size());
-    Eigen::VectorXd u2 = Eigen::VectorXd::Zero(n), v2 = u2, a2 = u2, f2 = u2;
-    for (std::size_t i = 0, j = 0; i < old->dofs.size() && j < win_->dofs.size();) {
-      if (old->dofs[i] < win_->dofs[j]) ++i;
-      else if (old->dofs[i] > win_->dofs[j]) ++j;
-      else {
-        const Eigen::Index oi = static_cast<Eigen::Index>(i), nj = static_cast<Eigen::Index>(j);
-        u2[nj] = u[oi], v2[nj] = v[oi], a2[nj] = a[oi];
-        if (alpha_ != 0) f2[nj] = fi[oi];
-        ++i, ++j;
+    const Eigen::Index nn = static_cast<Eigen::Index>(win_->dofs.size());
+    for (int jl = 0; jl < n; ++jl) {
+      Lane& s = *lanes_[static_cast<std::size_t>(which[jl])];
+      const auto u = s.uva_.col(0), v = s.uva_.col(1), a = s.uva_.col(2);
+      Eigen::VectorXd u2 = Eigen::VectorXd::Zero(nn), v2 = u2, a2 = u2, f2 = u2;
+      for (std::size_t i = 0, j = 0; i < old->dofs.size() && j < win_->dofs.size();) {
+        if (old->dofs[i] < win_->dofs[j]) ++i;
+        else if (old->dofs[i] > win_->dofs[j]) ++j;
+        else {
+          const Eigen::Index oi = static_cast<Eigen::Index>(i), nj = static_cast<Eigen::Index>(j);
+          u2[nj] = u[oi], v2[nj] = v[oi], a2[nj] = a[oi];
+          if (alpha_ != 0) f2[nj] = s.fi_[oi];
+          ++i, ++j;
+        }
       }
+      RowMajor rhs(nn, C);
+      rhs.col(0) = mn.M * u2, rhs.col(1) = mn.M * v2, rhs.col(2) = mn.M * a2;
+      if (alpha_ != 0) rhs.col(3) = f2;
+      const Eigen::Index m = mn.phi.cols();
+      s.q_.setZero(m), s.qd_.setZero(m), s.qdd_.setZero(m), s.qi_.setZero(m);
+      double* qn[4] = {s.q_.data(), s.qd_.data(), s.qdd_.data(), s.qi_.data()};
+      kernels::rows_axpy(mn.phi.data(), m, static_cast<int>(nn), static_cast<int>(m), rhs.data(), C, qn);
+      // Droppers left behind are forgotten; those ahead start taut.
+      std::vector<char> keep(s.slack_.size(), 0);
+      for (int k : droppers_) keep[static_cast<std::size_t>(k)] = s.slack_[static_cast<std::size_t>(k)];
+      s.slack_.swap(keep);
+      s.uva_.resize(0, 0);
     }
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rhs(n, C);
-    rhs.col(0) = mn.M * u2, rhs.col(1) = mn.M * v2, rhs.col(2) = mn.M * a2;
-    if (alpha_ != 0) rhs.col(3) = f2;
-    const Eigen::Index m = mn.phi.cols();
-    q_.setZero(m), qd_.setZero(m), qdd_.setZero(m), qi_.setZero(m);
-    double* qn[4] = {q_.data(), qd_.data(), qdd_.data(), qi_.data()};
-    kernels::rows_axpy(mn.phi.data(), m, static_cast<int>(n), static_cast<int>(m), rhs.data(), C, qn);
-    // Droppers left behind are forgotten; those ahead start taut.
-    std::vector<char> keep(slack_.size(), 0);
-    for (int k : droppers_) keep[static_cast<std::size_t>(k)] = slack_[static_cast<std::size_t>(k)];
-    slack_.swap(keep);
   }
 
   std::shared_ptr<const FeModalLine> ml_;
   const FeLine& L_;
   int W_;
   double h_ = 0, alpha_ = 0, beta_ = 0, gamma_ = 0, c0_ = 0, c1_ = 0, c2_ = 0, c3_ = 0, c4_ = 0, c5_ = 0;
-  double t_ = 0;
+  std::vector<std::unique_ptr<Lane>> lanes_;
   std::shared_ptr<const FeWindow> win_;
-  Eigen::VectorXd q_, qd_, qdd_, qi_, damp_, A_, invA_, invw2_, dz_;  // dz_ = A⁻¹ − Ω⁻²/(1+α)
+  Eigen::VectorXd damp_, A_, invA_, invw2_, dz_;  // dz_ = A⁻¹ − Ω⁻²/(1+α)
   std::vector<int> droppers_;  // global indices of the window's droppers
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> dropper_p_;  // a row per window dropper: Φᵀ(e_m − e_c)
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> support_p_;  // a row per window support: Φᵀe_s
+  RowMajor dropper_p_;  // a row per window dropper: Φᵀ(e_m − e_c)
+  RowMajor support_p_;  // a row per window support: Φᵀe_s
   std::vector<int> support_of_;  // their indices in the line's supports
-  std::vector<char> slack_;    // per dropper of the line
-  std::vector<char> active_;   // per penalty load
-  std::vector<double> last_x_, last_F_;
-  mutable std::vector<double> last_res_;  // a placeholder's computed when asked (res_ready_)
-  mutable std::vector<char> res_ready_;
-  std::vector<int> prescribed_load_;  // per load: its index in prescribed_ (−1: a contact)
-  std::vector<Eigen::VectorXd> load_p_, load_px_;  // per load of the last step: Φᵀ N(x) and Φᵀ N'(x)
+  // The loads of the last step (the same places in every lane): x, Φᵀ N(x) and Φᵀ N'(x).
+  std::vector<double> last_x_;
+  std::vector<Eigen::VectorXd> load_p_, load_px_;
   static constexpr std::size_t kColumnBytes = std::size_t{256} << 20;
   static constexpr double kFarSpans = 3;
   mutable std::unordered_map<int, Eigen::VectorXd> columns_;  // K₀⁻¹ e_l of the window shape beyond its band (several contacts)
   mutable std::deque<int> column_order_;                      // their l, oldest first
   mutable std::vector<Eigen::VectorXd> spare_columns_;        // buffers of a previous shape
   std::unordered_map<int, Eigen::VectorXd> dropper_columns_;  // dropper_column(l) of the window shape
-  // Step scratch.
+  // The step's shared part: the penalty loads' and the prescribed loads' modal rows (d, coeff per
+  // lane), each contact's A⁻¹p − Ω⁻²p/(1+α) and its effect on the droppers, G of each contact.
   std::vector<double> xs_;
-  Eigen::VectorXd vt_, r_, x0_, du_, coef_, sum_;
-  std::vector<Mod> mods_;
-  std::vector<Contact> contacts_;
-  std::vector<int> set_;
-  std::vector<std::pair<Mod, double>> prescribed_;
-  Eigen::VectorXd wx0_, d0_;
+  std::vector<Mod> mods_, prescribed_;
   Eigen::MatrixXd gc_, dwc_, xz_, dxz_;
-  std::vector<double> contact_w_, dot_scratch_;
+  std::vector<double> d0_all_;  // the droppers' rows against every lane's x0 (a row per dropper)
   // Per window: the special terms (droppers as slack ones, then the absorbing ends' dashpots), their
   // G among themselves and their effect on every dropper's elongation (a column per special term).
   std::vector<Mod> smods_;
   Eigen::MatrixXd gs_, dws_;
 };
 
+void ModalLanes::Lane::start(const std::vector<double>& x, const std::vector<double>& F, double t) {
+  ModalLanes& g = g_;
+  const FeLine& L = g.L_;
+  if (g.W_ < L.data().spans) g.ml_->prepare(g.W_);
+  t_ = t;
+  std::vector<char> slack;
+  const Eigen::VectorXd u = L.static_displacement(x, F, &slack);
+  if (const int first = g.first_span_for(x); !g.win_ || g.ml_->window(first, g.W_) != g.win_) g.enter(first);
+  // In equilibrium: q = Ω⁻² Φᵀ f under the contact forces and the slack droppers' corrections;
+  // the modes left out give the residual displacement at the contact points.
+  const auto& md = *g.win_->modes;
+  std::fill(slack_.begin(), slack_.end(), 0);
+  std::vector<Mod> ms;
+  for (std::size_t k = 0; k < x.size(); ++k) ms.push_back(g.contact_mod(L.contact_shape(x[k]), 0, F[k], x[k]));
+  const auto& drs = L.droppers();
+  for (int k : g.droppers_)
+    if (slack[static_cast<std::size_t>(k)]) {
+      const auto& dr = drs[static_cast<std::size_t>(k)];
+      slack_[static_cast<std::size_t>(k)] = 1;
+      const int j = static_cast<int>(std::find(g.droppers_.begin(), g.droppers_.end(), k) - g.droppers_.begin());
+      ms.push_back(g.special_mod(2 * j, 2 * j + 1, 0, dr.tension + dr.stiffness * (u[dr.dof_m] - u[dr.dof_c])));
+    }
+  q_.setZero(md.omega2.size());
+  for (const Mod& m : ms) q_ += m.coeff * m.pw;  // coeff: the force here
+  md.check_intact(t);
+  qd_.setZero(q_.size()), qdd_.setZero(q_.size()), qi_.setZero(q_.size());
+  g.last_x_ = x;
+  last_F_ = F;
+  last_res_.assign(x.size(), 0.0);
+  res_ready_.assign(x.size(), 1);
+  g.load_p_.resize(x.size()), g.load_px_.resize(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    for (const Mod& m : ms)
+      if (m.coeff != 0) last_res_[k] += g.residual(ms[k], m) * m.coeff;
+    g.load_p_[k] = ms[k].p;
+    g.load_px_[k] = g.shape_slope(L.contact_shape(x[k]));
+  }
+}
+
+// Right-hand side and the diagonal step matrix, a mode each (one pass over the modes).
+void ModalLanes::Lane::rhs() {
+  const ModalLanes& g = g_;
+  const double ap = 1 + g.alpha_;
+  const Eigen::Index nm = q_.size();
+  vt_.resize(nm), r_.resize(nm);
+  const double *q = q_.data(), *qd = qd_.data(), *qdd = qdd_.data(), *qi = qi_.data(), *dm = g.damp_.data();
+  double *vt = vt_.data(), *r = r_.data();
+  for (Eigen::Index i = 0; i < nm; ++i) {
+    const double w1 = g.c0_ * q[i] + g.c2_ * qd[i] + g.c3_ * qdd[i];
+    vt[i] = g.c1_ * q[i] + g.c4_ * qd[i] + g.c5_ * qdd[i];
+    r[i] = w1 + ap * (dm[i] * vt[i]);
+    if (g.alpha_ != 0) r[i] += g.alpha_ * qi[i];
+  }
+}
+
+// The loads on this lane's state: prescribed forces into the right-hand side, each penalty contact's
+// stiffness and predicted force, the absorbing ends' dashpot forces; x0 = A⁻¹ r.
+void ModalLanes::Lane::loads(const std::vector<FeLoad>& loads, std::vector<double>& forces) {
+  const ModalLanes& g = g_;
+  const FeLine& L = g.L_;
+  const double ap = 1 + g.alpha_;
+  forces.assign(loads.size(), 0.0);
+  contacts_.clear(), cd_.clear(), cc_.clear(), pf_.clear();
+  std::size_t ci = 0, pi = 0;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    const FeLoad& ld = loads[k];
+    if (!ld.penalty) {
+      r_ += (ap * ld.force) * g.prescribed_[pi++].p;
+      pf_.push_back(ld.force);
+      forces[k] = ld.force;
+      continue;
+    }
+    const Mod& m = g.mods_[ci++];
+    const double Nvt = m.p.dot(vt_), w_x = g.load_px_[k].dot(q_);
+    const double conv = ld.speed * (L.static_slope(ld.x) + w_x);
+    const double fh = ld.stiffness * (ld.head_y - L.static_height(ld.x)) + ld.damping * (ld.head_v - conv + Nvt);
+    const double kc = ld.stiffness + ld.damping * g.c1_;
+    contacts_.push_back({static_cast<int>(k), kc, fh});
+    cd_.push_back(ap * kc), cc_.push_back(ap * fh);
+  }
+  const std::size_t nc = contacts_.size();
+  if (active_.size() != nc) active_.assign(nc, 1);
+  contact_w_.assign(nc, 0.0);
+  const auto& md = *g.win_->modes;
+  ends_coeff_.resize(static_cast<Eigen::Index>(g.win_->ends.size()));
+  for (std::size_t e = 0; e < g.win_->ends.size(); ++e)  // the dashpots: F = −c v = c vt − c c1 u
+    ends_coeff_[static_cast<Eigen::Index>(e)] = ap * g.win_->ends[e].damping * md.phi.row(g.win_->ends[e].local).dot(vt_);
+  x0_ = r_.cwiseProduct(g.invA_);
+}
+
+// The active set of slack droppers and open contacts (d0_: the droppers' rows against x0, set by the
+// group), solved in the modal space by the Woodbury identity.
+void ModalLanes::Lane::settle(std::vector<double>& forces) {
+  const ModalLanes& g = g_;
+  const double t1 = t_ + g.h_;
+  const std::size_t nc = g.mods_.size(), nd = g.droppers_.size(), ns = g.smods_.size();
+  // Displacements without the set (Wx0: contacts, then specials; D0: droppers), the prescribed
+  // forces' residual included.
+  const Eigen::Index N = static_cast<Eigen::Index>(nc + ns);
+  wx0_.resize(N);
+  for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] = g.mods_[c].p.dot(x0_);
+  for (std::size_t j = 0; j < nd; ++j) wx0_[static_cast<Eigen::Index>(nc + j)] = d0_[static_cast<Eigen::Index>(j)];
+  for (std::size_t e = 0; e < g.win_->ends.size(); ++e) wx0_[static_cast<Eigen::Index>(nc + nd + e)] = g.smods_[nd + e].p.dot(x0_);
+  for (std::size_t i = 0; i < g.prescribed_.size(); ++i) {
+    const Mod& f = g.prescribed_[i];
+    const double F = pf_[i];
+    if (F == 0) continue;  // a window's placeholder for a pantograph on another section (fe_coupled.cpp)
+    for (std::size_t c = 0; c < nc; ++c) wx0_[static_cast<Eigen::Index>(c)] += g.residual(g.mods_[c], f) * F;
+    for (std::size_t s2 = 0; s2 < ns; ++s2) wx0_[static_cast<Eigen::Index>(nc + s2)] += g.residual(g.smods_[s2], f) * F;
+    d0_ += g.residual_droppers(f) * F;
+  }
+  const auto& drs = g.L_.droppers();
+  for (int pass = 0;; ++pass) {
+    if (pass > 60)
+      throw NumericalError(fmt::format(
+          "finite-element catenary (modal): t = {:.6g} s: the set of slack droppers and open contacts does not "
+          "settle in 60 passes (a dropper or contact chattering; try a smaller time step)",
+          t1));
+    // The set, as indices into [contacts, specials].
+    set_.clear();
+    for (std::size_t c = 0; c < nc; ++c)
+      if (active_[c]) set_.push_back(static_cast<int>(c));
+    for (std::size_t e = 0; e < g.win_->ends.size(); ++e) set_.push_back(static_cast<int>(nc + nd + e));
+    for (std::size_t j = 0; j < nd; ++j)
+      if (slack_[static_cast<std::size_t>(g.droppers_[j])]) set_.push_back(static_cast<int>(nc + j));
+    const Eigen::Index r = static_cast<Eigen::Index>(set_.size());
+    auto G = [&](int i, int j) {  // G between entries of [contacts, specials]
+      if (j < static_cast<int>(nc)) return g.gc_(i, j);
+      if (i < static_cast<int>(nc)) return g.gc_(j, i);
+      return g.gs_(i - static_cast<int>(nc), j - static_cast<int>(nc));
+    };
+    coef_.resize(r);
+    if (r > 0) {
+      Eigen::VectorXd sv(r), Wx0(r);
+      Eigen::MatrixXd Gm(r, r), cap(r, r);
+      for (Eigen::Index i = 0; i < r; ++i) {
+        const int si = set_[static_cast<std::size_t>(i)];
+        sv[i] = coeff(si);
+        Wx0[i] = wx0_[si];
+        for (Eigen::Index j = 0; j < r; ++j) Gm(i, j) = G(si, set_[static_cast<std::size_t>(j)]);
+        cap.row(i) = Gm.row(i);
+        cap(i, i) += 1 / d(si);
+      }
+      coef_ = sv - cap.partialPivLu().solve(Wx0 + Gm * sv);
+    }
+    bool changed = false;
+    for (std::size_t c = 0; c < nc; ++c) {
+      double w = wx0_[static_cast<Eigen::Index>(c)];
+      for (Eigen::Index j = 0; j < r; ++j) w += G(static_cast<int>(c), set_[static_cast<std::size_t>(j)]) * coef_[j];
+      contact_w_[c] = w;
+      const double F = contacts_[c].fh - contacts_[c].k * w;
+      forces[static_cast<std::size_t>(contacts_[c].load)] = F > 0 ? F : 0.0;
+      if ((F > 0) != static_cast<bool>(active_[c])) active_[c] = F > 0, changed = true;
+    }
+    du_ = d0_;
+    for (Eigen::Index j = 0; j < r; ++j) {
+      const int sj = set_[static_cast<std::size_t>(j)];
+      du_ += coef_[j] * (sj < static_cast<int>(nc) ? g.dwc_.col(sj) : g.dws_.col(sj - static_cast<int>(nc)));
+    }
+    for (std::size_t j = 0; j < nd; ++j) {
+      const int k = g.droppers_[j];
+      const double T = drs[static_cast<std::size_t>(k)].tension + drs[static_cast<std::size_t>(k)].stiffness * du_[static_cast<Eigen::Index>(j)];
+      if ((T < 0) != static_cast<bool>(slack_[static_cast<std::size_t>(k)])) slack_[static_cast<std::size_t>(k)] = T < 0, changed = true;
+    }
+    if (!changed) break;
+  }
+}
+
+// The modal solution u = x0 + Σ coef_j A⁻¹ p_j, the Newmark update of q̇, q̈, and what the queries
+// after the step need.
+void ModalLanes::Lane::finish(const std::vector<FeLoad>& loads, std::vector<double>& forces) {
+  const ModalLanes& g = g_;
+  const double t1 = t_ + g.h_, ap = 1 + g.alpha_;
+  const std::size_t nc = g.mods_.size();
+  const Eigen::Index nm = q_.size();
+  sum_.setZero(nm);
+  for (std::size_t j = 0; j < set_.size(); ++j) sum_ += coef_[static_cast<Eigen::Index>(j)] * mod(set_[j]).p;
+  {
+    double *q = q_.data(), *qd = qd_.data(), *qdd = qdd_.data();
+    const double *x0 = x0_.data(), *iA = g.invA_.data(), *sm = sum_.data();
+    const double c0 = g.c0_, c1 = g.c1_, c2 = g.c2_, c3 = g.c3_, c4 = g.c4_, c5 = g.c5_;
+    for (Eigen::Index i = 0; i < nm; ++i) {
+      const double u = x0[i] + iA[i] * sm[i], du = u - q[i];
+      const double a1 = c0 * du - c2 * qd[i] - c3 * qdd[i];
+      qd[i] = c1 * du - c4 * qd[i] - c5 * qdd[i];
+      qdd[i] = a1, q[i] = u;
+    }
+  }
+  const auto& md = *g.win_->modes;
+  md.check_intact(t1);  // a mapped mode file cut short: no result from its zeros (catenary/mode_store.hpp)
+  t_ = t1;
+  // The residual (quasi-static) displacement at each load point, for height() and uplift().
+  last_F_ = forces;
+  last_res_.assign(loads.size(), 0.0);
+  for (std::size_t c = 0; c < nc; ++c) last_res_[static_cast<std::size_t>(contacts_[c].load)] = contact_w_[c] - g.mods_[c].p.dot(q_);
+  // Prescribed forces: their residual displacement (from every force of the step); at a zero
+  // force (a placeholder: it adds nothing to the energy) only when its uplift is asked for.
+  prescribed_load_.assign(loads.size(), -1);
+  res_ready_.assign(loads.size(), 1);
+  for (std::size_t k = 0, i = 0; k < loads.size(); ++k)
+    if (!loads[k].penalty) {
+      prescribed_load_[k] = static_cast<int>(i);
+      if (pf_[i] != 0) last_res_[k] = prescribed_residual(i);
+      else res_ready_[k] = 0;
+      ++i;
+    }
+  if (g.alpha_ != 0) {  // q = C v + K₀ u − f at t_{n+1}, in modal coordinates (f: the set's forces)
+    qi_ = g.damp_.cwiseProduct(qd_) + md.omega2.cwiseProduct(q_);
+    for (std::size_t j = 0; j < set_.size(); ++j) qi_ -= (coef_[static_cast<Eigen::Index>(j)] / ap) * mod(set_[j]).p;
+    for (std::size_t i = 0; i < g.prescribed_.size(); ++i) qi_ -= pf_[i] * g.prescribed_[i].p;
+  }
+}
+
+// The residual displacement at prescribed force i after the step: from every prescribed force and
+// the set's terms.
+double ModalLanes::Lane::prescribed_residual(std::size_t i) const {
+  const ModalLanes& g = g_;
+  const Mod& f = g.prescribed_[i];
+  const double ap = 1 + g.alpha_;
+  double w = 0;
+  for (std::size_t k = 0; k < g.prescribed_.size(); ++k) w += g.residual(f, g.prescribed_[k]) * pf_[k];
+  for (std::size_t j = 0; j < set_.size(); ++j) w += g.residual(f, mod(set_[j])) * coef_[static_cast<Eigen::Index>(j)] / ap;
+  return w;
+}
+
+double ModalLanes::Lane::uplift(double x) const {
+  const ModalLanes& g = g_;
+  if (const int k = g.load_at(x); k >= 0) {  // with the quasi-static part of the modes left out
+    const std::size_t kk = static_cast<std::size_t>(k);
+    if (kk < res_ready_.size() && !res_ready_[kk])
+      last_res_[kk] = prescribed_residual(static_cast<std::size_t>(prescribed_load_[kk])), res_ready_[kk] = 1;
+    return g.load_p_[kk].dot(q_) + last_res_[kk];
+  }
+  const FeLine::Shape sh = g.L_.contact_shape(x);
+  double w = 0;
+  for (int a = 0; a < 4; ++a)
+    if (const int l = sh.dofs[a] >= 0 ? g.win_->local(sh.dofs[a]) : -1; l >= 0) w += sh.N[a] * g.win_->modes->phi.row(l).dot(q_);
+  g.win_->modes->check_intact(t_);
+  return w;
+}
+
+double ModalLanes::Lane::height_rate(double x, double speed) const {
+  const ModalLanes& g = g_;
+  if (const int k = g.load_at(x); k >= 0)
+    return g.load_p_[static_cast<std::size_t>(k)].dot(qd_) + speed * (g.L_.static_slope(x) + g.load_px_[static_cast<std::size_t>(k)].dot(q_));
+  const FeLine::Shape sh = g.L_.contact_shape(x);
+  double w_dot = 0, w_x = 0;
+  for (int a = 0; a < 4; ++a)
+    if (const int l = sh.dofs[a] >= 0 ? g.win_->local(sh.dofs[a]) : -1; l >= 0) {
+      w_dot += sh.N[a] * g.win_->modes->phi.row(l).dot(qd_);
+      w_x += sh.dN[a] * g.win_->modes->phi.row(l).dot(q_);
+    }
+  g.win_->modes->check_intact(t_);
+  return w_dot + speed * (g.L_.static_slope(x) + w_x);
+}
+
+// ½ q̇ᵀq̇ + ½ qᵀΩ²q, the residual springs ½ Σ F_k ρ_k of the loads, minus the slack droppers'.
+double ModalLanes::Lane::energy() const {
+  const ModalLanes& g = g_;
+  double E = 0.5 * qd_.squaredNorm() + 0.5 * q_.dot(g.win_->modes->omega2.cwiseProduct(q_));
+  for (std::size_t k = 0; k < last_res_.size(); ++k) E += 0.5 * last_F_[k] * last_res_[k];
+  const auto& drs = g.L_.droppers();
+  for (std::size_t j = 0; j < g.droppers_.size(); ++j)
+    if (const auto& dr = drs[static_cast<std::size_t>(g.droppers_[j])]; slack_[static_cast<std::size_t>(g.droppers_[j])] && static_cast<Eigen::Index>(j) < du_.size()) {
+      const double e = dr.tension / dr.stiffness + du_[static_cast<Eigen::Index>(j)];
+      E -= 0.5 * dr.stiffness * e * e;
+    }
+  return E;
+}
+
+std::vector<double> ModalLanes::Lane::support_uplift() const {
+  const ModalLanes& g = g_;
+  std::vector<double> u(g.L_.support_dofs().size(), 0.0);  // 0 outside the window
+  if (g.support_p_.rows() == 0) return u;
+  Eigen::VectorXd h(g.support_p_.rows());
+  const double* xs[1] = {q_.data()};
+  kernels::rows_dot(g.support_p_.data(), q_.size(), static_cast<int>(g.support_p_.rows()), static_cast<int>(q_.size()), xs, 1, h.data());
+  for (std::size_t i = 0; i < g.support_of_.size(); ++i) u[static_cast<std::size_t>(g.support_of_[i])] = h[static_cast<Eigen::Index>(i)];
+  return u;
+}
+
+void ModalLanes::step(const std::vector<int>& which, const std::vector<std::vector<FeLoad>>& loads,
+                      std::vector<std::vector<double>>& forces, std::vector<std::exception_ptr>& errors) {
+  const std::size_t n = which.size();
+  if (loads.size() != n) throw std::logic_error("modal lanes: a list of loads per lane stepped");
+  forces.resize(n), errors.assign(n, nullptr);
+  if (n == 0) return;
+  std::vector<const std::vector<FeLoad>*> l(n);
+  std::vector<std::vector<double>*> f(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (which[j] < 0 || which[j] >= lanes() || (j > 0 && which[j] <= which[j - 1]))
+      throw std::logic_error("modal lanes: the lanes stepped must be distinct, ascending and exist");
+    l[j] = &loads[j], f[j] = &forces[j];
+  }
+  step_lanes(which.data(), static_cast<int>(n), l.data(), f.data(), errors.data());
+}
+
+// One step of the lanes which[0 … n) (header comment): the window (moved for all of them), the
+// loads' modal rows and couplings once; each lane's own arithmetic as a lone run does it.
+void ModalLanes::step_lanes(const int* which, int n, const std::vector<FeLoad>* const* loads,
+                            std::vector<double>* const* forces, std::exception_ptr* errors) {
+  auto lane_at = [&](int j) -> Lane& { return *lanes_[static_cast<std::size_t>(which[j])]; };
+  const std::vector<FeLoad>& ld0 = *loads[0];
+  for (int j = 0; j < n; ++j) {
+    errors[j] = nullptr;
+    const std::vector<FeLoad>& lj = *loads[j];
+    bool same = lane_at(j).t_ == lane_at(0).t_ && lj.size() == ld0.size();
+    for (std::size_t k = 0; same && k < lj.size(); ++k) same = lj[k].x == ld0[k].x && lj[k].penalty == ld0[k].penalty;
+    if (!same)
+      throw std::logic_error("modal lanes: the lanes stepped together must be at the same time, their loads at the same places");
+  }
+  // Each lane's part, its exception kept for it.
+  auto each = [&](auto&& part) {
+    for (int j = 0; j < n; ++j)
+      if (!errors[j]) try {
+          part(j);
+        } catch (...) {
+          errors[j] = std::current_exception();
+        }
+  };
+  // The shared part: its exception is every lane's.
+  auto shared = [&](auto&& part) {
+    try {
+      part();
+      return true;
+    } catch (...) {
+      for (int j = 0; j < n; ++j)
+        if (!errors[j]) errors[j] = std::current_exception();
+      return false;
+    }
+  };
+  const double ap = 1 + alpha_;
+  if (!shared([&] {
+        xs_.clear();
+        for (const FeLoad& ld : ld0) xs_.push_back(ld.x);
+        if (const int first = first_span_for(xs_); first != win_->first_span) move_to(first, which, n);
+        // The loads' modal rows (Φᵀ N(x), Φᵀ N'(x)): the same in every lane.
+        mods_.clear(), prescribed_.clear();
+        load_p_.resize(ld0.size()), load_px_.resize(ld0.size());
+        for (std::size_t k = 0; k < ld0.size(); ++k) {
+          Mod m = contact_mod(L_.contact_shape(ld0[k].x), 0, 0, ld0[k].x, &load_px_[k]);
+          load_p_[k] = m.p;  // kept for height, height_rate and uplift at this point after the step
+          (ld0[k].penalty ? mods_ : prescribed_).push_back(std::move(m));
+        }
+        last_x_ = xs_;
+      }))
+    return;
+  each([&](int j) {
+    Lane& s = lane_at(j);
+    s.rhs();
+    s.loads(*loads[j], *forces[j]);
+  });
+  const std::size_t nc = mods_.size(), nd = droppers_.size();
+  const Eigen::Index m = A_.size();
+  if (!shared([&] {
+        // The droppers' rows with every lane's x0 (the step's largest cost: droppers × modes × lanes),
+        // each row read once for all of them.
+        std::vector<const double*> x0s;
+        std::vector<int> alive;
+        for (int j = 0; j < n; ++j)
+          if (!errors[j]) x0s.push_back(lane_at(j).x0_.data()), alive.push_back(j);
+        const int C = static_cast<int>(x0s.size());
+        if (C == 0) return;
+        d0_all_.resize(nd * static_cast<std::size_t>(C));
+        if (C == 1)
+          kernels::rows_dot(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), x0s.data(), 1, d0_all_.data());
+        else
+          kernels::rows_dot_each(dropper_p_.data(), m, static_cast<int>(nd), static_cast<int>(m), x0s.data(), C, d0_all_.data());
+        for (int c = 0; c < C; ++c) {
+          Eigen::VectorXd& d0 = lane_at(alive[static_cast<std::size_t>(c)]).d0_;
+          d0.resize(static_cast<Eigen::Index>(nd));
+          for (std::size_t r = 0; r < nd; ++r) d0[static_cast<Eigen::Index>(r)] = d0_all_[r * static_cast<std::size_t>(C) + static_cast<std::size_t>(c)];
+        }
+        // Each contact's A⁻¹p − Ω⁻²p/(1+α), its effect on the droppers (from its DOFs' columns, kept
+        // per shape), and its coupling G(c, ·) with everything.
+        xz_.resize(m, static_cast<Eigen::Index>(nc));
+        for (std::size_t c = 0; c < nc; ++c) xz_.col(static_cast<Eigen::Index>(c)) = mods_[c].p.cwiseProduct(dz_);
+        dxz_.resize(static_cast<Eigen::Index>(nd), static_cast<Eigen::Index>(nc));
+        std::array<int, 8> missing{};
+        int nmiss = 0;
+        for (std::size_t c = 0; c < nc && nmiss + 4 <= 8; ++c)
+          for (int l : mods_[c].l)
+            if (l >= 0 && !dropper_columns_.count(l) && std::find(missing.begin(), missing.begin() + nmiss, l) == missing.begin() + nmiss)
+              missing[static_cast<std::size_t>(nmiss++)] = l;
+        if (nmiss > 0) make_dropper_columns(missing.data(), nmiss);
+        for (std::size_t c = 0; c < nc; ++c) {
+          auto col = dxz_.col(static_cast<Eigen::Index>(c));
+          col.setZero();
+          for (int a = 0; a < 4; ++a)
+            if (const int l = mods_[c].l[static_cast<std::size_t>(a)]; l >= 0) col += mods_[c].w[static_cast<std::size_t>(a)] * dropper_column(l);
+        }
+        const std::size_t ns = smods_.size();
+        const Eigen::Index N = static_cast<Eigen::Index>(nc + ns);
+        gc_.resize(N, static_cast<Eigen::Index>(nc));
+        dwc_.resize(static_cast<Eigen::Index>(nd), static_cast<Eigen::Index>(nc));
+        for (std::size_t c = 0; c < nc; ++c) {
+          const Mod& mc = mods_[c];
+          const auto zc = xz_.col(static_cast<Eigen::Index>(c));  // Z part and the modal part of the residual
+          Eigen::VectorXd col(N);
+          for (std::size_t c2 = 0; c2 < nc; ++c2) col[static_cast<Eigen::Index>(c2)] = mods_[c2].p.dot(mc.p.cwiseProduct(invA_)) + residual(mods_[c2], mc) / ap;
+          const auto dz = dxz_.col(static_cast<Eigen::Index>(c));
+          for (std::size_t j = 0; j < nd; ++j)
+            col[static_cast<Eigen::Index>(nc + j)] = dz[static_cast<Eigen::Index>(j)] + (mc.ks[static_cast<Eigen::Index>(2 * j)] - mc.ks[static_cast<Eigen::Index>(2 * j + 1)]) / ap;
+          for (std::size_t e = 0; e < win_->ends.size(); ++e)
+            col[static_cast<Eigen::Index>(nc + nd + e)] = smods_[nd + e].p.dot(zc) + mc.ks[static_cast<Eigen::Index>(2 * nd + e)] / ap;
+          gc_.col(static_cast<Eigen::Index>(c)) = col;
+          dwc_.col(static_cast<Eigen::Index>(c)) = col.segment(static_cast<Eigen::Index>(nc), static_cast<Eigen::Index>(nd));
+        }
+      }))
+    return;
+  each([&](int j) {
+    Lane& s = lane_at(j);
+    s.settle(*forces[j]);
+    s.finish(*loads[j], *forces[j]);
+  });
+}
+
 }  // namespace
 
 std::unique_ptr<FeLineSolver> make_modal_solver(std::shared_ptr<const FeModalLine> modal, double spread) {
-  return std::make_unique<ModalSolver>(std::move(modal), spread);
+  // A group of one that owns its lane: the lone run's solver.
+  struct One final : FeLineSolver {
+    explicit One(std::unique_ptr<FeLineLanes> g) : g_(std::move(g)), s_(g_->lane(0)) {}
+    double dt() const override { return s_.dt(); }
+    double time() const override { return s_.time(); }
+    void start(const std::vector<double>& x, const std::vector<double>& F, double t) override { s_.start(x, F, t); }
+    void step(const std::vector<FeLoad>& loads, std::vector<double>& forces) override { s_.step(loads, forces); }
+    double height(double x) const override { return s_.height(x); }
+    double height_rate(double x, double speed) const override { return s_.height_rate(x, speed); }
+    double uplift(double x) const override { return s_.uplift(x); }
+    std::vector<double> support_uplift() const override { return s_.support_uplift(); }
+    double energy() const override { return s_.energy(); }
+    std::unique_ptr<FeLineLanes> g_;
+    FeLineSolver& s_;
+  };
+  return std::make_unique<One>(std::make_unique<ModalLanes>(std::move(modal), spread, 1));
+}
+
+std::unique_ptr<FeLineLanes> make_modal_lanes(std::shared_ptr<const FeModalLine> modal, double spread, int lanes) {
+  return std::make_unique<ModalLanes>(std::move(modal), spread, lanes);
+}
+
+namespace {
+// Solvers that share nothing, stepped one after the other.
+class SeparateLanes final : public FeLineLanes {
+ public:
+  explicit SeparateLanes(std::vector<std::unique_ptr<FeLineSolver>> s) : s_(std::move(s)) {}
+  int lanes() const override { return static_cast<int>(s_.size()); }
+  FeLineSolver& lane(int i) override {
+    if (i < 0 || i >= lanes()) throw InvalidArgument(fmt::format("lanes: lane {} of {}", i, lanes()));
+    return *s_[static_cast<std::size_t>(i)];
+  }
+  void step(const std::vector<int>& which, const std::vector<std::vector<FeLoad>>& loads,
+            std::vector<std::vector<double>>& forces, std::vector<std::exception_ptr>& errors) override {
+    forces.resize(which.size()), errors.assign(which.size(), nullptr);
+    for (std::size_t j = 0; j < which.size(); ++j) try {
+        lane(which[j]).step(loads[j], forces[j]);
+      } catch (...) {
+        errors[j] = std::current_exception();
+      }
+  }
+
+ private:
+  std::vector<std::unique_ptr<FeLineSolver>> s_;
+};
+}  // namespace
+
+std::unique_ptr<FeLineLanes> make_separate_lanes(std::vector<std::unique_ptr<FeLineSolver>> solvers) {
+  return std::make_unique<SeparateLanes>(std::move(solvers));
 }
 
 }  // namespace inerta::catenary

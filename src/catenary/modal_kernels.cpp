@@ -2,6 +2,7 @@
 #include "modal_kernels.hpp"
 
 #include <Eigen/Dense>
+#include <vector>
 
 namespace inerta::catenary::kernels {
 
@@ -31,6 +32,24 @@ typedef double v4 __attribute__((vector_size(32), aligned(8)));
 #define INERTA_LD(p) (*reinterpret_cast<const v4*>(p))
 #define INERTA_ST(p) (*reinterpret_cast<v4*>(p))
 
+// aᵀx with four sums (half the loads of a pair's pass): rows_dot's one vector, rows_dot_each's every one.
+__attribute__((target("arch=x86-64-v3"))) inline double dot_avx2(const double* a, const double* x0, int n) {
+  v4 s0 = {}, s1 = {}, s2 = {}, s3 = {};
+  const int n16 = n - n % 16;
+  int i = 0;
+  for (; i < n16; i += 16) {
+    s0 += INERTA_LD(a + i) * INERTA_LD(x0 + i);
+    s1 += INERTA_LD(a + i + 4) * INERTA_LD(x0 + i + 4);
+    s2 += INERTA_LD(a + i + 8) * INERTA_LD(x0 + i + 8);
+    s3 += INERTA_LD(a + i + 12) * INERTA_LD(x0 + i + 12);
+  }
+  for (; i + 4 <= n; i += 4) s0 += INERTA_LD(a + i) * INERTA_LD(x0 + i);
+  s0 += s1, s2 += s3, s0 += s2;
+  double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]);
+  for (; i < n; ++i) t0 += a[i] * x0[i];
+  return t0;
+}
+
 __attribute__((target("arch=x86-64-v3"))) void rows_dot_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
                                                                const double* const* x, int C, double* y) {
   const int n8 = n - n % 8;
@@ -52,23 +71,16 @@ __attribute__((target("arch=x86-64-v3"))) void rows_dot_avx2(const double* A, st
       for (int i = n8; i < n; ++i) t0 += a[i] * x0[i], t1 += a[i] * x1[i];
       y[r * C + c0] = t0, y[r * C + c0 + 1] = t1;
     }
-    if (c0 < C) {  // the last vector alone (four sums: half the loads of a pair's pass)
-      const double* x0 = x[c0];
-      v4 s0 = {}, s1 = {}, s2 = {}, s3 = {};
-      const int n16 = n - n % 16;
-      int i = 0;
-      for (; i < n16; i += 16) {
-        s0 += INERTA_LD(a + i) * INERTA_LD(x0 + i);
-        s1 += INERTA_LD(a + i + 4) * INERTA_LD(x0 + i + 4);
-        s2 += INERTA_LD(a + i + 8) * INERTA_LD(x0 + i + 8);
-        s3 += INERTA_LD(a + i + 12) * INERTA_LD(x0 + i + 12);
-      }
-      for (; i + 4 <= n; i += 4) s0 += INERTA_LD(a + i) * INERTA_LD(x0 + i);
-      s0 += s1, s2 += s3, s0 += s2;
-      double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]);
-      for (; i < n; ++i) t0 += a[i] * x0[i];
-      y[r * C + c0] = t0;
-    }
+    if (c0 < C) y[r * C + c0] = dot_avx2(a, x[c0], n);  // the last vector alone
+  }
+}
+
+// Each vector as rows_dot with C = 1 gives it (dot_avx2), a row read from memory once for all of them.
+__attribute__((target("arch=x86-64-v3"))) void rows_dot_each_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
+                                                                    const double* const* x, int C, double* y) {
+  for (int r = 0; r < rows; ++r) {
+    const double* a = A + r * lda;
+    for (int c = 0; c < C; ++c) y[r * C + c] = dot_avx2(a, x[c], n);
   }
 }
 
@@ -104,6 +116,17 @@ void rows_dot(const double* A, std::ptrdiff_t lda, int rows, int n, const double
   if (avx2()) return rows_dot_avx2(A, lda, rows, n, x, C, y);
 #endif
   rows_dot_base(A, lda, rows, n, x, C, y);
+}
+
+void rows_dot_each(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, double* y) {
+#ifdef INERTA_HAVE_AVX2
+  if (avx2()) return rows_dot_each_avx2(A, lda, rows, n, x, C, y);
+#endif
+  std::vector<double> t(static_cast<std::size_t>(rows));
+  for (int c = 0; c < C; ++c) {  // rows_dot_base of one vector, as C = 1 gives it
+    rows_dot_base(A, lda, rows, n, x + c, 1, t.data());
+    for (int r = 0; r < rows; ++r) y[r * C + c] = t[static_cast<std::size_t>(r)];
+  }
 }
 
 void rows_axpy(const double* A, std::ptrdiff_t lda, int rows, int n, const double* coef, int C, double* const* y) {

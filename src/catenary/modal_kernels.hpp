@@ -9,6 +9,10 @@ namespace inerta::catenary::kernels {
 /// y[r·C + c] = Σ_{i<n} A[r·lda + i] · x[c][i]  for r < rows, c < C (1 <= C <= 4).
 void rows_dot(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, double* y);
 
+/// The same for any number of vectors C >= 1, each exactly as rows_dot with C = 1 gives it (lanes
+/// stepped together give each lane's one-at-a-time numbers), each row read from memory once.
+void rows_dot_each(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, double* y);
+
 /// y[c][i] += Σ_{r<rows} coef[r·C + c] · A[r·lda + i]  for i < n, c < C (1 <= C <= 4): Aᵀ·coef.
 void rows_axpy(const double* A, std::ptrdiff_t lda, int rows, int n, const double* coef, int C, double* const* y);
 

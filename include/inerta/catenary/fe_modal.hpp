@@ -146,5 +146,8 @@ class FeModalLine {
 
 /// The modal solve of a run (header comment).
 std::unique_ptr<FeLineSolver> make_modal_solver(std::shared_ptr<const FeModalLine> modal, double spread);
+/// The modal solve of `lanes` runs stepped together (FeLineLanes): one window, its matrices, the
+/// loads' modal rows and couplings shared; the droppers' rows applied to every lane's state in one pass.
+std::unique_ptr<FeLineLanes> make_modal_lanes(std::shared_ptr<const FeModalLine> modal, double spread, int lanes);
 
 }  // namespace inerta::catenary

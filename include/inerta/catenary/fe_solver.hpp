@@ -2,6 +2,7 @@
 // Solving a finite-element line in time: the loads, the state and the direct HHT-α integrator
 // (fe_line.hpp's header comment).
 #include <Eigen/Dense>
+#include <exception>
 #include <memory>
 #include <vector>
 
@@ -97,5 +98,26 @@ class FeIntegrator {
 
 /// The direct solve of the whole line (FeIntegrator) as a run's solver.
 std::unique_ptr<FeLineSolver> make_direct_solver(const FeLine& line);
+
+/// The solvers of several runs on one line stepped together (issue 50: lanes, one a design), their
+/// loads at the same places every step: what depends on the line and the load positions only (the
+/// window and its modes, the loads' modal rows and couplings) made once for all of them, each lane its
+/// own state. Each lane's numbers are those of its solver stepped alone, bit for bit.
+class FeLineLanes {
+ public:
+  virtual ~FeLineLanes() = default;
+  virtual int lanes() const = 0;
+  /// Lane i's solver: start() and the queries; its step() steps it alone (the others left as they are
+  /// only where the lanes share nothing: a lane alone in its group).
+  virtual FeLineSolver& lane(int i) = 0;
+  /// One step of the lanes `which` (ascending, each started): loads[j], forces[j] those of lane which[j]
+  /// (the same positions x in every lane). A lane's exception is caught into errors[j] (its state then
+  /// undefined: the caller stops it); the other lanes step on.
+  virtual void step(const std::vector<int>& which, const std::vector<std::vector<FeLoad>>& loads,
+                    std::vector<std::vector<double>>& forces, std::vector<std::exception_ptr>& errors) = 0;
+};
+
+/// Independent solvers stepped one after the other (the direct solve shares nothing between runs).
+std::unique_ptr<FeLineLanes> make_separate_lanes(std::vector<std::unique_ptr<FeLineSolver>> solvers);
 
 }  // namespace inerta::catenary
