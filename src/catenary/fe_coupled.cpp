@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <stdexcept>
 #include <cmath>
 
 #include "inerta/catenary/fe_catenary.hpp"
@@ -113,17 +114,45 @@ class TrackContact : public mbs::ForceElement {
 // has reached yet is at rest in its static state (nothing has acted on it): it starts when the
 // first one reaches its anchor. Once the last pantograph has left it by more than window_behind + 1
 // spans, it can no longer act on any contact: it is no longer stepped (its supports' uplift held).
+//
+// Several such systems with their pantographs at the same places (lanes: a study's designs, issue
+// 50) share each section's solver group (FeLineLanes) and step through advance's parts together
+// (advance_lanes); a lone system is a group of one and steps the same way.
+struct LineGroup {
+  std::vector<std::unique_ptr<FeLineLanes>> sections;  // a solver per lane on each section
+  int lanes = 1;
+};
+std::shared_ptr<LineGroup> line_group(const std::vector<FeSectionLine>& sections, const std::vector<PantographOnLine>& ps,
+                                      double length, int lanes) {
+  double lo = length, hi = 0;
+  for (const PantographOnLine& p : ps) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
+  auto g = std::make_shared<LineGroup>();
+  g->lanes = lanes;
+  for (const FeSectionLine& s : sections) {
+    if (s.modal) {
+      g->sections.push_back(make_modal_lanes(s.modal, std::max(0.0, hi - lo), lanes));
+    } else {
+      std::vector<std::unique_ptr<FeLineSolver>> d;
+      for (int i = 0; i < lanes; ++i) d.push_back(make_direct_solver(*s.line));
+      g->sections.push_back(make_separate_lanes(std::move(d)));
+    }
+  }
+  return g;
+}
+
 class FeCoupled final : public Coupled {
  public:
+  /// Lane `lane` of `group` (line_group of these sections and positions).
   FeCoupled(const std::vector<FeSectionLine>& sections, const std::vector<PantographOnLine>& ps, double speed,
-            Section section, double length, double span, std::vector<Section> overlaps)
-      : v_(speed), section_(section), length_(length), span_(span), overlaps_(std::move(overlaps)) {
-    double lo = length_, hi = 0;
-    for (const PantographOnLine& p : ps) lo = std::min(lo, p.x0), hi = std::max(hi, p.x0);
-    for (const FeSectionLine& s : sections) {
+            Section section, double length, double span, std::vector<Section> overlaps, std::shared_ptr<LineGroup> group,
+            int lane)
+      : v_(speed), section_(section), length_(length), span_(span), overlaps_(std::move(overlaps)), group_(std::move(group)),
+        lane_(lane) {
+    for (std::size_t i = 0; i < sections.size(); ++i) {
+      const FeSectionLine& s = sections[i];
       Run r;
       r.sec = s;
-      r.fe = s.modal ? make_modal_solver(s.modal, std::max(0.0, hi - lo)) : make_direct_solver(*s.line);
+      r.fe = &group_->sections[i]->lane(lane);
       const int behind = s.line->data().window_behind;
       r.stop_after = behind < 0 || sections.size() == 1 ? INFINITY : s.end + (behind + 1) * s.line->data().span;
       runs_.push_back(std::move(r));
@@ -308,6 +337,121 @@ class FeCoupled final : public Coupled {
 
   solve::RunStats advance(double t_end, double dt, const solve::IntegratorOptions& options,
                           const SampleObserver& observer, bool accelerations) override {
+    if (group_->lanes > 1)
+      throw std::logic_error("finite-element catenary: a lane of several advances with the others (CoupledLanes::advance)");
+    std::vector<FeCoupled*> one{this};
+    std::vector<std::exception_ptr> error(1);
+    const std::vector<solve::RunStats> st =
+        advance_lanes(*group_, one, error, t_end, dt, options, [&](int, const Sample& s) { observer(s); }, accelerations);
+    if (error[0]) std::rethrow_exception(error[0]);
+    return st[0];
+  }
+
+  /// The lanes ls (of `group`, each at the same time) from their time() to t_end, step by step
+  /// together: each lane's pantographs predicted, each section's lanes stepped as one group, each
+  /// lane's pantographs integrated over the step and sampled. A lane's exception is caught into
+  /// errors[j] (already set: not advanced); the others go on.
+  static std::vector<solve::RunStats> advance_lanes(LineGroup& group, const std::vector<FeCoupled*>& ls,
+                                                    std::vector<std::exception_ptr>& errors, double t_end, double dt,
+                                                    const solve::IntegratorOptions& options, const LaneObserver& observer,
+                                                    bool accelerations) {
+    const std::size_t n = ls.size();
+    std::vector<solve::RunStats> stats(n);
+    auto each = [&](auto&& part) {
+      for (std::size_t j = 0; j < n; ++j)
+        if (!errors[j]) try {
+            part(j);
+          } catch (...) {
+            errors[j] = std::current_exception();
+          }
+    };
+    long n_steps = -1;
+    each([&](std::size_t j) {
+      const long k = ls[j]->begin(t_end, dt, options, [&observer, j](const Sample& s) { observer(static_cast<int>(j), s); },
+                                  accelerations);
+      if (n_steps >= 0 && k != n_steps)
+        throw std::logic_error("finite-element catenary: lanes advanced together must be at the same time");
+      n_steps = k;
+    });
+    std::vector<int> which;
+    std::vector<std::size_t> of;
+    std::vector<std::vector<FeLoad>> loads(n), batch;
+    std::vector<std::vector<double>> forces;
+    std::vector<std::exception_ptr> errs;
+    for (long i = 0; i < n_steps; ++i) {
+      each([&](std::size_t j) { ls[j]->predict(); });
+      for (std::size_t sec = 0; sec < group.sections.size(); ++sec) {
+        which.clear(), of.clear();
+        std::size_t used = 0;
+        each([&](std::size_t j) {
+          if (ls[j]->load(sec, loads[used])) which.push_back(ls[j]->lane_), of.push_back(j), ++used;
+        });
+        if (which.empty()) continue;
+        batch.resize(used);
+        for (std::size_t u = 0; u < used; ++u) std::swap(batch[u], loads[u]);  // buffers kept from step to step
+        group.sections[sec]->step(which, batch, forces, errs);
+        for (std::size_t u = 0; u < used; ++u) std::swap(batch[u], loads[u]);
+        for (std::size_t u = 0; u < of.size(); ++u)
+          if (errs[u]) errors[of[u]] = errs[u];
+        each([&](std::size_t j) {
+          if (std::find(of.begin(), of.end(), j) != of.end()) ls[j]->stepped(sec);
+        });
+      }
+      each([&](std::size_t j) { ls[j]->pantographs(); });
+    }
+    each([&](std::size_t j) { stats[j] = ls[j]->end(); });
+    return stats;
+  }
+
+ private:
+  // advance's parts (advance_lanes), with what they share over one advance.
+  struct Advance {
+    double h = 0;
+    long every = 1, step_index = 0;
+    SampleObserver observer;
+    bool accelerations = false;
+    std::chrono::steady_clock::time_point wall0;
+    double t = 0, t1 = 0, rear = 0;  // the current step
+    std::vector<double> heads, head_rates;
+  } adv_;
+
+  // Samples of every pantograph at t.
+  void deliver(double t) {
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      Part& p = *parts_[k];
+      const mbs::State& x = p.stepper->state();
+      if (adv_.accelerations || mbs::needs_accelerations(p.force))
+        mbs::accelerations(p.model, t, x, *p.ws);
+      else
+        p.ws->set_state(x);
+      const double F = mbs::evaluate_output(p.force, p.model, t, x, *p.ws);
+      const double xc = at(p.x0, t);
+      if (adv_.observer) {
+        Sample smp{ContactId{static_cast<int>(k)}, t, xc, F, p.model, x, *p.ws};
+        if (runs_.size() == 1) {
+          smp.wire_uplift = runs_.front().fe->uplift(xc);
+          smp.force_wire[0] = F;
+          smp.uplift_wire[0] = smp.wire_uplift;
+        } else {
+          double lowest = INFINITY;
+          for (const Run& r : runs_)
+            if (r.started && !r.stopped && covers(r, xc)) {
+              const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
+              const double xl = xc - r.sec.start, up = r.fe->uplift(xl), y = r.sec.line->static_height(xl) + up;
+              smp.uplift_wire[w] = up;
+              smp.force_wire[w] = p.contact->wire_force(static_cast<int>(w), t, *p.ws);
+              if (y < lowest) lowest = y, smp.wire_uplift = up;
+            }
+        }
+        adv_.observer(smp);
+      }
+    }
+  }
+
+  // The start of an advance: the line at rest if not yet started, the steppers, the first sample.
+  // Returns the number of structural steps to t_end.
+  long begin(double t_end, double dt, const solve::IntegratorOptions& options, SampleObserver observer,
+             bool accelerations) {
     if (!(dt > 0)) throw InvalidArgument("advance: the sample interval must be > 0 s");
     start_line();
     const double h = runs_.front().fe->dt();
@@ -317,106 +461,100 @@ class FeCoupled final : public Coupled {
       for (auto& p : parts_) p->stepper = std::make_unique<solve::Stepper>(p->model, state_of(*p), time(), options_);
       started_ = true;
     }
-    const auto wall0 = std::chrono::steady_clock::now();
+    adv_.wall0 = std::chrono::steady_clock::now();
+    adv_.h = h;
     // Samples every k-th structural step, k = round(dt / h) >= 1 (uniform; dt rounded to a multiple of h).
-    const long every = std::max(1L, std::lround(dt / h));
-    long step_index = 0;
-    auto deliver = [&](double t) {
-      for (std::size_t k = 0; k < parts_.size(); ++k) {
-        Part& p = *parts_[k];
-        const mbs::State& x = p.stepper->state();
-        if (accelerations || mbs::needs_accelerations(p.force))
-          mbs::accelerations(p.model, t, x, *p.ws);
-        else
-          p.ws->set_state(x);
-        const double F = mbs::evaluate_output(p.force, p.model, t, x, *p.ws);
-        const double xc = at(p.x0, t);
-        if (observer) {
-          Sample smp{ContactId{static_cast<int>(k)}, t, xc, F, p.model, x, *p.ws};
-          if (runs_.size() == 1) {
-            smp.wire_uplift = runs_.front().fe->uplift(xc);
-            smp.force_wire[0] = F;
-            smp.uplift_wire[0] = smp.wire_uplift;
-          } else {
-            double lowest = INFINITY;
-            for (const Run& r : runs_)
-              if (r.started && !r.stopped && covers(r, xc)) {
-                const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
-                const double xl = xc - r.sec.start, up = r.fe->uplift(xl), y = r.sec.line->static_height(xl) + up;
-                smp.uplift_wire[w] = up;
-                smp.force_wire[w] = p.contact->wire_force(static_cast<int>(w), t, *p.ws);
-                if (y < lowest) lowest = y, smp.wire_uplift = up;
-              }
-          }
-          observer(smp);
-        }
-      }
-    };
+    adv_.every = std::max(1L, std::lround(dt / h));
+    adv_.step_index = 0;
+    adv_.observer = std::move(observer);
+    adv_.accelerations = accelerations;
+    adv_.heads.resize(parts_.size()), adv_.head_rates.resize(parts_.size());
     if (!sampled_start_) deliver(time());
-    std::vector<double> heads(parts_.size()), head_rates(parts_.size());
-    const int n_steps = static_cast<int>(std::floor((t_end - time()) / h + 1e-6));
-    for (int i = 0; i < n_steps; ++i) {
-      const double t = time(), t1 = t + h;
-      double rear = INFINITY;
-      for (std::size_t k = 0; k < parts_.size(); ++k) {
-        Part& p = *parts_[k];
-        const double xc1 = at(p.x0, t1);
-        rear = std::min(rear, xc1);
-        if (xc1 > length_)
-          throw NumericalError(fmt::format(
-              "t = {:.6g} s: pantograph {} (contact point at x = {:.6g} m) has run off the end of the line ({:g} m)", t1,
-              k + 1, xc1, length_));
-        const mbs::State& x = p.stepper->state();
-        const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(x, p.body), p.u);
-        const double y = pk.r.y(), yd = pk.v.y();
-        heads[k] = y + h * yd + 0.5 * h * h * p.acc_y - p.offset;
-        head_rates[k] = yd + h * p.acc_y;
-        p.yd_prev = yd;
-      }
-      for (Run& r : runs_) {
-        if (r.stopped) continue;
-        bool any = false;
-        for (const auto& p : parts_) any = any || covers(r, at(p->x0, t1));
-        if (!r.started) {
-          if (!any) continue;
-          std::vector<double> xs, F(parts_.size(), 0.0);
-          for (const auto& p : parts_) xs.push_back(local(r, at(p->x0, t)));
-          r.fe->start(xs, F, t);
-          r.started = true;
-        }
-        r.loads.resize(parts_.size());
-        for (std::size_t k = 0; k < parts_.size(); ++k) {
-          const Part& p = *parts_[k];
-          const double xc1 = at(p.x0, t1);
-          r.loads[k] = covers(r, xc1) ? FeLoad{xc1 - r.sec.start, true, 0, heads[k], head_rates[k], p.ks, p.cs, v_}
-                                      : FeLoad{local(r, xc1), false, 0, 0, 0, 0, 0, v_};
-        }
-        r.fe->step(r.loads, r.forces);
-        if (rear > r.stop_after) r.held = r.fe->support_uplift(), r.stopped = true;
-      }
-      if (runs_.size() > 1) t_ = t1;
-      for (std::size_t k = 0; k < parts_.size(); ++k) {
-        Part& p = *parts_[k];
-        const double xc = at(p.x0, t), xc1 = at(p.x0, t1);
-        p.track->present = {false, false};
-        for (const Run& r : runs_) {
-          if (!r.started || r.stopped || !covers(r, xc1)) continue;
-          const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
-          const double y1 = r.fe->height(xc1 - r.sec.start), v1 = r.fe->height_rate(xc1 - r.sec.start, v_);
-          if (runs_.size() > 1 && !covers(r, xc)) {  // the wire reached at this step: from its anchor
-            p.y_wire[w] = r.sec.line->static_height(local(r, xc));
-            p.v_wire[w] = 0;
-          }
-          p.track->wire[w] = WireTrack{t, t1, p.offset + p.y_wire[w], p.offset + y1, p.v_wire[w], v1};
-          p.track->present[w] = true;
-          p.y_wire[w] = y1, p.v_wire[w] = v1;
-        }
-        p.stepper->advance(t1);
-        const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(p.stepper->state(), p.body), p.u);
-        p.acc_y = (pk.v.y() - p.yd_prev) / h;
-      }
-      if (++step_index % every == 0) deliver(time());
+    return static_cast<long>(std::floor((t_end - time()) / h + 1e-6));
+  }
+
+  // Each pantograph's contact point predicted at the step's end (second-order Taylor).
+  void predict() {
+    const double h = adv_.h, t = time(), t1 = t + h;
+    adv_.t = t, adv_.t1 = t1;
+    double rear = INFINITY;
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      Part& p = *parts_[k];
+      const double xc1 = at(p.x0, t1);
+      rear = std::min(rear, xc1);
+      if (xc1 > length_)
+        throw NumericalError(fmt::format(
+            "t = {:.6g} s: pantograph {} (contact point at x = {:.6g} m) has run off the end of the line ({:g} m)", t1,
+            k + 1, xc1, length_));
+      const mbs::State& x = p.stepper->state();
+      const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(x, p.body), p.u);
+      const double y = pk.r.y(), yd = pk.v.y();
+      adv_.heads[k] = y + h * yd + 0.5 * h * h * p.acc_y - p.offset;
+      adv_.head_rates[k] = yd + h * p.acc_y;
+      p.yd_prev = yd;
     }
+    adv_.rear = rear;
+  }
+
+  // Section sec's loads for this step (false: it is not stepped — stopped, or not reached yet); a
+  // section a pantograph reaches now starts at rest.
+  bool load(std::size_t sec, std::vector<FeLoad>& loads) {
+    Run& r = runs_[sec];
+    if (r.stopped) return false;
+    const double t = adv_.t, t1 = adv_.t1;
+    bool any = false;
+    for (const auto& p : parts_) any = any || covers(r, at(p->x0, t1));
+    if (!r.started) {
+      if (!any) return false;
+      std::vector<double> xs, F(parts_.size(), 0.0);
+      for (const auto& p : parts_) xs.push_back(local(r, at(p->x0, t)));
+      r.fe->start(xs, F, t);
+      r.started = true;
+    }
+    loads.resize(parts_.size());
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      const Part& p = *parts_[k];
+      const double xc1 = at(p.x0, t1);
+      loads[k] = covers(r, xc1) ? FeLoad{xc1 - r.sec.start, true, 0, adv_.heads[k], adv_.head_rates[k], p.ks, p.cs, v_}
+                                : FeLoad{local(r, xc1), false, 0, 0, 0, 0, 0, v_};
+    }
+    return true;
+  }
+
+  // After section sec's step: held once the rearmost pantograph has left it far enough.
+  void stepped(std::size_t sec) {
+    Run& r = runs_[sec];
+    if (adv_.rear > r.stop_after) r.held = r.fe->support_uplift(), r.stopped = true;
+  }
+
+  // The pantographs over the step against the wires' motion at their contact points; the samples.
+  void pantographs() {
+    const double h = adv_.h, t = adv_.t, t1 = adv_.t1;
+    if (runs_.size() > 1) t_ = t1;
+    for (std::size_t k = 0; k < parts_.size(); ++k) {
+      Part& p = *parts_[k];
+      const double xc = at(p.x0, t), xc1 = at(p.x0, t1);
+      p.track->present = {false, false};
+      for (const Run& r : runs_) {
+        if (!r.started || r.stopped || !covers(r, xc1)) continue;
+        const std::size_t w = static_cast<std::size_t>(r.sec.wire - 1);
+        const double y1 = r.fe->height(xc1 - r.sec.start), v1 = r.fe->height_rate(xc1 - r.sec.start, v_);
+        if (runs_.size() > 1 && !covers(r, xc)) {  // the wire reached at this step: from its anchor
+          p.y_wire[w] = r.sec.line->static_height(local(r, xc));
+          p.v_wire[w] = 0;
+        }
+        p.track->wire[w] = WireTrack{t, t1, p.offset + p.y_wire[w], p.offset + y1, p.v_wire[w], v1};
+        p.track->present[w] = true;
+        p.y_wire[w] = y1, p.v_wire[w] = v1;
+      }
+      p.stepper->advance(t1);
+      const mbs::PointKinematics pk = mbs::point_kinematics(p.model.frame(p.stepper->state(), p.body), p.u);
+      p.acc_y = (pk.v.y() - p.yd_prev) / h;
+    }
+    if (++adv_.step_index % adv_.every == 0) deliver(time());
+  }
+
+  solve::RunStats end() {
     sampled_start_ = true;
     solve::RunStats total;
     for (auto& p : parts_) {
@@ -425,11 +563,11 @@ class FeCoupled final : public Coupled {
       total.rhs_evals += st.rhs_evals - p->rhs_reported;
       p->steps_reported = st.steps, p->rhs_reported = st.rhs_evals;
     }
-    total.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+    total.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - adv_.wall0).count();
+    adv_.observer = nullptr;
     return total;
   }
 
- private:
   struct Part {
     mbs::Model model;
     mbs::State x;  // before the first advance
@@ -448,11 +586,10 @@ class FeCoupled final : public Coupled {
   };
   struct Run {
     FeSectionLine sec;
-    std::unique_ptr<FeLineSolver> fe;
+    FeLineSolver* fe = nullptr;  // this lane's solver in the group's section
     bool started = false, stopped = false;
     double stop_after = INFINITY;  // m: past this (the rearmost pantograph) it is no longer stepped
-    std::vector<FeLoad> loads;
-    std::vector<double> forces, held;
+    std::vector<double> held;
   };
   struct Support {
     double x;
@@ -527,6 +664,25 @@ class FeCoupled final : public Coupled {
   std::vector<double> start_x_, start_F_;
   mutable bool line_started_ = false;
   mutable double t_ = 0;
+  std::shared_ptr<LineGroup> group_;
+  int lane_ = 0;
+
+  friend class FeLanes;
+};
+
+// Lanes on the finite-element line (Catenary::couple_lanes): FeCoupled lanes of one group.
+class FeLanes final : public CoupledLanes {
+ public:
+  FeLanes(std::vector<std::unique_ptr<Coupled>> lanes, std::vector<FeCoupled*> fe, std::shared_ptr<LineGroup> group)
+      : CoupledLanes(std::move(lanes)), fe_(std::move(fe)), group_(std::move(group)) {}
+  void advance(double t_end, double dt, const solve::IntegratorOptions& options, const LaneObserver& observer,
+               bool accelerations) override {
+    FeCoupled::advance_lanes(*group_, fe_, errors_, t_end, dt, options, observer, accelerations);
+  }
+
+ private:
+  std::vector<FeCoupled*> fe_;
+  std::shared_ptr<LineGroup> group_;
 };
 
 }  // namespace
@@ -654,7 +810,24 @@ std::shared_ptr<const Catenary> FeCatenary::mean() const {
 std::unique_ptr<Coupled> FeCatenary::make_coupled(const std::vector<PantographOnLine>& pantographs,
                                                   double speed) const {
   build();
-  return std::make_unique<FeCoupled>(sections_, pantographs, speed, section(), line_length(), data_.span, overlaps());
+  return std::make_unique<FeCoupled>(sections_, pantographs, speed, section(), line_length(), data_.span, overlaps(),
+                                     line_group(sections_, pantographs, line_length(), 1), 0);
+}
+
+std::unique_ptr<CoupledLanes> FeCatenary::make_lanes(const std::vector<std::vector<PantographOnLine>>& trains,
+                                                     double speed) const {
+  build();
+  const int n = static_cast<int>(trains.size());
+  const std::shared_ptr<LineGroup> group = line_group(sections_, trains.front(), line_length(), n);
+  std::vector<std::unique_ptr<Coupled>> lanes;
+  std::vector<FeCoupled*> fe;
+  for (int i = 0; i < n; ++i) {
+    auto c = std::make_unique<FeCoupled>(sections_, trains[static_cast<std::size_t>(i)], speed, section(), line_length(),
+                                         data_.span, overlaps(), group, i);
+    fe.push_back(c.get());
+    lanes.push_back(std::move(c));
+  }
+  return std::make_unique<FeLanes>(std::move(lanes), std::move(fe), group);
 }
 
 }  // namespace inerta::catenary

@@ -63,6 +63,9 @@ class FeCatenary final : public Catenary {
 
  protected:
   std::unique_ptr<Coupled> make_coupled(const std::vector<PantographOnLine>& pantographs, double speed) const override;
+  /// Lanes stepped together: one solver group per section (fe_modal.hpp make_modal_lanes).
+  std::unique_ptr<CoupledLanes> make_lanes(const std::vector<std::vector<PantographOnLine>>& trains,
+                                           double speed) const override;
 
  private:
   void build() const;
