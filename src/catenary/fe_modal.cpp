@@ -354,13 +354,17 @@ class ModalLanes final : public FeLineLanes {
     const Eigen::Index margin = 32;
     const Eigen::Index r0 = std::max<Eigen::Index>(0, (lo - old->dofs.begin()) - margin);
     const Eigen::Index r1 = std::min<Eigen::Index>(no, (hi - old->dofs.begin()) + margin);
+    std::vector<const double*> qs;  // every lane's state vectors: Φ read once for all of them
+    std::vector<double*> ys;
     for (int j = 0; j < n; ++j) {
       Lane& s = *lanes_[static_cast<std::size_t>(which[j])];
-      const double* qs[4] = {s.q_.data(), s.qd_.data(), s.qdd_.data(), s.qi_.data()};
+      for (const Eigen::VectorXd* v : {&s.q_, &s.qd_, &s.qdd_, &s.qi_}) qs.push_back(v->data());
+      qs.resize(static_cast<std::size_t>((j + 1) * C));
       s.uva_ = RowMajor::Zero(no, C);
-      if (r1 > r0)
-        kernels::rows_dot(mo.phi.data() + r0 * mm, mm, static_cast<int>(r1 - r0), static_cast<int>(mm), qs, C, s.uva_.data() + r0 * C);
+      ys.push_back(s.uva_.data() + r0 * C);
     }
+    if (r1 > r0)
+      kernels::rows_dot_lanes(mo.phi.data() + r0 * mm, mm, static_cast<int>(r1 - r0), static_cast<int>(mm), qs.data(), C, n, ys.data());
     mo.check_intact(lanes_[static_cast<std::size_t>(which[0])]->t_);
     for (int j = 0; j < n; ++j) {
       Lane& s = *lanes_[static_cast<std::size_t>(which[j])];
@@ -369,6 +373,10 @@ class ModalLanes final : public FeLineLanes {
     enter(first);
     const auto& mn = *win_->modes;
     const Eigen::Index nn = static_cast<Eigen::Index>(win_->dofs.size());
+    const Eigen::Index m = mn.phi.cols();
+    std::vector<RowMajor> rhs(static_cast<std::size_t>(n));
+    std::vector<const double*> coef;
+    std::vector<double*> qn;
     for (int jl = 0; jl < n; ++jl) {
       Lane& s = *lanes_[static_cast<std::size_t>(which[jl])];
       const auto u = s.uva_.col(0), v = s.uva_.col(1), a = s.uva_.col(2);
@@ -383,18 +391,22 @@ class ModalLanes final : public FeLineLanes {
           ++i, ++j;
         }
       }
-      RowMajor rhs(nn, C);
-      rhs.col(0) = mn.M * u2, rhs.col(1) = mn.M * v2, rhs.col(2) = mn.M * a2;
-      if (alpha_ != 0) rhs.col(3) = f2;
-      const Eigen::Index m = mn.phi.cols();
+      RowMajor& r = rhs[static_cast<std::size_t>(jl)];
+      r.resize(nn, C);
+      r.col(0) = mn.M * u2, r.col(1) = mn.M * v2, r.col(2) = mn.M * a2;
+      if (alpha_ != 0) r.col(3) = f2;
       s.q_.setZero(m), s.qd_.setZero(m), s.qdd_.setZero(m), s.qi_.setZero(m);
-      double* qn[4] = {s.q_.data(), s.qd_.data(), s.qdd_.data(), s.qi_.data()};
-      kernels::rows_axpy(mn.phi.data(), m, static_cast<int>(nn), static_cast<int>(m), rhs.data(), C, qn);
-      // Droppers left behind are forgotten; those ahead start taut.
+      for (Eigen::VectorXd* q : {&s.q_, &s.qd_, &s.qdd_, &s.qi_}) qn.push_back(q->data());
+      qn.resize(static_cast<std::size_t>((jl + 1) * C));
+      coef.push_back(r.data());
+      s.uva_.resize(0, 0);
+    }
+    kernels::rows_axpy_lanes(mn.phi.data(), m, static_cast<int>(nn), static_cast<int>(m), coef.data(), C, n, qn.data());
+    for (int jl = 0; jl < n; ++jl) {  // droppers left behind are forgotten; those ahead start taut
+      Lane& s = *lanes_[static_cast<std::size_t>(which[jl])];
       std::vector<char> keep(s.slack_.size(), 0);
       for (int k : droppers_) keep[static_cast<std::size_t>(k)] = s.slack_[static_cast<std::size_t>(k)];
       s.slack_.swap(keep);
-      s.uva_.resize(0, 0);
     }
   }
 

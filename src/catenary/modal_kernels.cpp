@@ -50,29 +50,40 @@ __attribute__((target("arch=x86-64-v3"))) inline double dot_avx2(const double* a
   return t0;
 }
 
+// One row a against C vectors (pairs in one pass, an odd last one alone): yr[c] = aᵀx[c].
+__attribute__((target("arch=x86-64-v3"))) inline void row_dot_avx2(const double* a, int n, const double* const* x, int C,
+                                                                    double* yr) {
+  const int n8 = n - n % 8;
+  int c0 = 0;
+  for (; c0 + 1 < C; c0 += 2) {  // two vectors a pass: the row is read at most twice
+    const double *x0 = x[c0], *x1 = x[c0 + 1];
+    v4 s0 = {}, s0b = {}, s1 = {}, s1b = {};
+    for (int i = 0; i < n8; i += 8) {
+      const v4 a0 = INERTA_LD(a + i), a1 = INERTA_LD(a + i + 4);
+      s0 += a0 * INERTA_LD(x0 + i);
+      s0b += a1 * INERTA_LD(x0 + i + 4);
+      s1 += a0 * INERTA_LD(x1 + i);
+      s1b += a1 * INERTA_LD(x1 + i + 4);
+    }
+    s0 += s0b, s1 += s1b;
+    double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]), t1 = (s1[0] + s1[2]) + (s1[1] + s1[3]);
+    for (int i = n8; i < n; ++i) t0 += a[i] * x0[i], t1 += a[i] * x1[i];
+    yr[c0] = t0, yr[c0 + 1] = t1;
+  }
+  if (c0 < C) yr[c0] = dot_avx2(a, x[c0], n);  // the last vector alone
+}
+
 __attribute__((target("arch=x86-64-v3"))) void rows_dot_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
                                                                const double* const* x, int C, double* y) {
-  const int n8 = n - n % 8;
-  for (int r = 0; r < rows; ++r) {
-    const double* a = A + r * lda;
-    int c0 = 0;
-    for (; c0 + 1 < C; c0 += 2) {  // two vectors a pass: the row is read at most twice
-      const double *x0 = x[c0], *x1 = x[c0 + 1];
-      v4 s0 = {}, s0b = {}, s1 = {}, s1b = {};
-      for (int i = 0; i < n8; i += 8) {
-        const v4 a0 = INERTA_LD(a + i), a1 = INERTA_LD(a + i + 4);
-        s0 += a0 * INERTA_LD(x0 + i);
-        s0b += a1 * INERTA_LD(x0 + i + 4);
-        s1 += a0 * INERTA_LD(x1 + i);
-        s1b += a1 * INERTA_LD(x1 + i + 4);
-      }
-      s0 += s0b, s1 += s1b;
-      double t0 = (s0[0] + s0[2]) + (s0[1] + s0[3]), t1 = (s1[0] + s1[2]) + (s1[1] + s1[3]);
-      for (int i = n8; i < n; ++i) t0 += a[i] * x0[i], t1 += a[i] * x1[i];
-      y[r * C + c0] = t0, y[r * C + c0 + 1] = t1;
-    }
-    if (c0 < C) y[r * C + c0] = dot_avx2(a, x[c0], n);  // the last vector alone
-  }
+  for (int r = 0; r < rows; ++r) row_dot_avx2(A + r * lda, n, x, C, y + r * C);
+}
+
+// Each lane's C vectors as rows_dot gives them, every row read once for all the lanes.
+__attribute__((target("arch=x86-64-v3"))) void rows_dot_lanes_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
+                                                                     const double* const* x, int C, int lanes,
+                                                                     double* const* y) {
+  for (int r = 0; r < rows; ++r)
+    for (int l = 0; l < lanes; ++l) row_dot_avx2(A + r * lda, n, x + l * C, C, y[l] + r * C);
 }
 
 // Each vector as rows_dot with C = 1 gives it (dot_avx2), a row read from memory once for all of them.
@@ -84,20 +95,30 @@ __attribute__((target("arch=x86-64-v3"))) void rows_dot_each_avx2(const double* 
   }
 }
 
+// y[c] += coef[c] a for one row a (a zero coefficient skipped).
+__attribute__((target("arch=x86-64-v3"))) inline void row_axpy_avx2(const double* a, int n, const double* coef, int C,
+                                                                     double* const* y) {
+  const int n4 = n - n % 4;
+  for (int c = 0; c < C; ++c) {
+    const double k = coef[c];
+    if (k == 0) continue;
+    double* yc = y[c];
+    const v4 kv = {k, k, k, k};
+    for (int i = 0; i < n4; i += 4) INERTA_ST(yc + i) = INERTA_LD(yc + i) + kv * INERTA_LD(a + i);
+    for (int i = n4; i < n; ++i) yc[i] += k * a[i];
+  }
+}
+
 __attribute__((target("arch=x86-64-v3"))) void rows_axpy_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
                                                                 const double* coef, int C, double* const* y) {
-  const int n4 = n - n % 4;
-  for (int r = 0; r < rows; ++r) {
-    const double* a = A + r * lda;
-    for (int c = 0; c < C; ++c) {
-      const double k = coef[r * C + c];
-      if (k == 0) continue;
-      double* yc = y[c];
-      const v4 kv = {k, k, k, k};
-      for (int i = 0; i < n4; i += 4) INERTA_ST(yc + i) = INERTA_LD(yc + i) + kv * INERTA_LD(a + i);
-      for (int i = n4; i < n; ++i) yc[i] += k * a[i];
-    }
-  }
+  for (int r = 0; r < rows; ++r) row_axpy_avx2(A + r * lda, n, coef + r * C, C, y);
+}
+
+__attribute__((target("arch=x86-64-v3"))) void rows_axpy_lanes_avx2(const double* A, std::ptrdiff_t lda, int rows, int n,
+                                                                      const double* const* coef, int C, int lanes,
+                                                                      double* const* y) {
+  for (int r = 0; r < rows; ++r)
+    for (int l = 0; l < lanes; ++l) row_axpy_avx2(A + r * lda, n, coef[l] + r * C, C, y + l * C);
 }
 
 bool avx2() {
@@ -134,6 +155,22 @@ void rows_axpy(const double* A, std::ptrdiff_t lda, int rows, int n, const doubl
   if (avx2()) return rows_axpy_avx2(A, lda, rows, n, coef, C, y);
 #endif
   rows_axpy_base(A, lda, rows, n, coef, C, y);
+}
+
+void rows_dot_lanes(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, int lanes,
+                    double* const* y) {
+#ifdef INERTA_HAVE_AVX2
+  if (avx2()) return rows_dot_lanes_avx2(A, lda, rows, n, x, C, lanes, y);
+#endif
+  for (int l = 0; l < lanes; ++l) rows_dot_base(A, lda, rows, n, x + l * C, C, y[l]);
+}
+
+void rows_axpy_lanes(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* coef, int C, int lanes,
+                     double* const* y) {
+#ifdef INERTA_HAVE_AVX2
+  if (avx2()) return rows_axpy_lanes_avx2(A, lda, rows, n, coef, C, lanes, y);
+#endif
+  for (int l = 0; l < lanes; ++l) rows_axpy_base(A, lda, rows, n, coef[l], C, y + l * C);
 }
 
 }  // namespace inerta::catenary::kernels

@@ -16,4 +16,13 @@ void rows_dot_each(const double* A, std::ptrdiff_t lda, int rows, int n, const d
 /// y[c][i] += Σ_{r<rows} coef[r·C + c] · A[r·lda + i]  for i < n, c < C (1 <= C <= 4): Aᵀ·coef.
 void rows_axpy(const double* A, std::ptrdiff_t lda, int rows, int n, const double* coef, int C, double* const* y);
 
+/// Several lanes' rows_dot over the same rows: lane l's C vectors x[l·C … l·C + C) into y[l], each as
+/// rows_dot gives it, every row read once for all the lanes.
+void rows_dot_lanes(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* x, int C, int lanes,
+                    double* const* y);
+
+/// Several lanes' rows_axpy: lane l's coefficients coef[l] into its vectors y[l·C … l·C + C).
+void rows_axpy_lanes(const double* A, std::ptrdiff_t lda, int rows, int n, const double* const* coef, int C, int lanes,
+                     double* const* y);
+
 }  // namespace inerta::catenary::kernels
