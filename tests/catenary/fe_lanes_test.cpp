@@ -102,15 +102,19 @@ void expect_lanes_are_lone_runs(const catenary::Catenary& cat, const std::string
 const std::string kModels = INERTA_SOURCE_DIR "/models/";
 
 TEST(FeLanes, OnTheSimpleLineEachLaneIsItsLoneRunBitForBit) {
-  const auto c = io::load_catenary(kModels + "catenary-fe.yaml", {"line.spans=8"});
+  const auto c = io::load_catenary(kModels + "catenary-fe.yaml", {"line.spans=8", "solver.cutoff=60"});
   expect_lanes_are_lone_runs(*c.catenary, "pantograph-3mass.yaml", {0.0}, 250 / 3.6, 2.0);
 }
 
 TEST(FeLanes, OnTheStitchedAndIrregularLinesTooWithTheHsxAndAnotherSuspension) {
-  const auto c = io::load_catenary(kModels + "catenary-fe-stitched.yaml", {"line.spans=8"});
+  // Fewer modes and a shorter window than the file's: the decompositions of a test (the property does
+  // not depend on them).
+  const std::vector<std::string> small = {"line.spans=8", "solver.cutoff=60", "solver.window_ahead=3"};
+  const auto c = io::load_catenary(kModels + "catenary-fe-stitched.yaml", small);
   expect_lanes_are_lone_runs(*c.catenary, "hsx.yaml", {0.0}, 300 / 3.6, 2.5, "k|(k2-c)");
-  const auto irr = io::load_catenary(kModels + "catenary-fe-stitched.yaml",
-                                     {"line.spans=8", "irregularity.dropper_length_std=0.01", "irregularity.seed=2"});
+  std::vector<std::string> irregular = small;
+  irregular.insert(irregular.end(), {"irregularity.dropper_length_std=0.01", "irregularity.seed=2"});
+  const auto irr = io::load_catenary(kModels + "catenary-fe-stitched.yaml", irregular);
   expect_lanes_are_lone_runs(*irr.catenary, "pantograph-3mass.yaml", {0.0}, 250 / 3.6, 2.0);
 }
 
@@ -118,6 +122,7 @@ TEST(FeLanes, TwoPantographsThroughAnOverlapEachLaneIsItsLoneRun) {
   catenary::FeCatenaryData d = io::read_fe_catenary_data(kModels + "catenary-fe-overlap.yaml", {});
   d.tension_sections.resize(2);
   for (catenary::FeCatenaryData& s : d.tension_sections) s.spans = 6;
+  d.modal_cutoff = 60, d.window_ahead = 3;  // the decompositions of a test
   d.join_sections();
   const catenary::FeCatenary cat(d);
   // The leading pantograph through the overlap's middle span (masts 4–5 of 9): both wires, both sections.
