@@ -522,6 +522,12 @@ EXCLUDED = {
     "analysis::Commissioned": "commission returns it as a (Model, Commissioning) pair",
     "analysis::assess_static": "the static force rows of a commissioned design: in StudyCost.binding and the "
                                "study report's acceptance margins",
+    "analysis::run_lanes": "lanes of designs on a finite line, run by evaluate_batch; run_speed gives one train's",
+    "analysis::sweep_lanes": "lanes of designs, run by evaluate_batch; sweep gives one train's",
+    "analysis::LaneResult": "result of run_lanes (see there)",
+    "analysis::LaneSweep": "result of sweep_lanes (see there)",
+    "catenary::CoupledLanes": "several catenary::Coupled stepped together with a C++ observer (see catenary::Coupled); "
+                              "evaluate_batch runs them",
     "optim::DesignPantographs": "what evaluate runs; its commissioning is StudyCost.commissioning",
     "optim::design_pantographs": "inside evaluate / evaluate_time; commission gives a design's commissioned model",
     "optim::objective_name": "Study.objective",
