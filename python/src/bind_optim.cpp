@@ -273,6 +273,27 @@ void bind_design_costs(py::module_& m) {
         "J2 of the pantograph with its suspension replaced by `network` (a Network, or a layout/expression with "
         "`params`), by the study's method (the periodic fast path, or the time domain on a finite-element line) "
         "with its limits (optim::evaluate).");
+  m.def("evaluate_batch", [](const Study& s, const py::list& designs) {
+    // Every design read first (a wrong one raises before any run), as evaluate reads its one.
+    std::vector<network::Network> nets;
+    for (const py::handle d : designs) {
+      const auto design = py::reinterpret_borrow<py::object>(d);
+      if ((py::isinstance<py::tuple>(design) || py::isinstance<py::list>(design)) && py::len(design) == 2) {
+        const py::sequence t = design.cast<py::sequence>();
+        nets.push_back(net_arg(t[0], t[1]));
+      } else {
+        nets.push_back(net_arg(design, py::none()));
+      }
+    }
+    const std::vector<optim::BatchEvaluation> got = run(py::none(), [&](Call&) { return optim::evaluate_batch(s, nets); });
+    std::vector<optim::StudyCost> costs;
+    for (const optim::BatchEvaluation& e : got) costs.push_back(e.get());  // the first failing design's exception
+    return costs;
+  }, py::arg("study"), py::arg("designs"),
+        "evaluate of several designs, each a (layout or expression, params) pair or a Network: the list of "
+        "StudyCost that evaluate gives one by one, bit for bit; a time-domain study steps them together on each line "
+        "(lanes, optim::evaluate_batch). If a design's evaluation raises, the first such design's exception is "
+        "raised (after every design ran); a design that cannot be read raises before any run.");
   m.def("evaluate_time", [](const Study& s, const py::object& net, const py::object& params) {
     const network::Network n = net_arg(net, params);
     return run(py::none(), [&](Call&) { return optim::evaluate_time(s, n); });

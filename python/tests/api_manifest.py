@@ -80,6 +80,7 @@ BOUND = {
     "optim::ModelCheckResult": "ModelCheckResult",
     "optim::best_design": "best_design",
     "optim::run_check": "run_check",
+    "optim::evaluate_batch": "evaluate_batch",
     "optim::StudyExecutor": "StudyExecutor",
     "optim::LocalExecutor": "LocalExecutor",
     "optim::StudyOptions": "StudyOptions",
@@ -522,6 +523,17 @@ EXCLUDED = {
     "analysis::Commissioned": "commission returns it as a (Model, Commissioning) pair",
     "analysis::assess_static": "the static force rows of a commissioned design: in StudyCost.binding and the "
                                "study report's acceptance margins",
+    "optim::BatchEvaluation": "evaluate_batch returns the StudyCosts, or raises the first failing design's exception",
+    "optim::evaluate_time_batch": "inside evaluate_batch (a time-domain study) and the engine's re-checks; "
+                                  "evaluate_time one design at a time gives the same",
+    "optim::design_costs": "the engine's local DesignBatch (lanes); design_cost one design at a time gives the same",
+    "optim::run_checks": "the LocalExecutor's checks; run_check one task at a time gives the same",
+    "analysis::run_lanes": "lanes of designs on a finite line, run by evaluate_batch; run_speed gives one train's",
+    "analysis::sweep_lanes": "lanes of designs, run by evaluate_batch; sweep gives one train's",
+    "analysis::LaneResult": "result of run_lanes (see there)",
+    "analysis::LaneSweep": "result of sweep_lanes (see there)",
+    "catenary::CoupledLanes": "several catenary::Coupled stepped together with a C++ observer (see catenary::Coupled); "
+                              "evaluate_batch runs them",
     "optim::DesignPantographs": "what evaluate runs; its commissioning is StudyCost.commissioning",
     "optim::design_pantographs": "inside evaluate / evaluate_time; commission gives a design's commissioned model",
     "optim::objective_name": "Study.objective",

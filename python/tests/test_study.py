@@ -219,3 +219,40 @@ def test_a_study_of_two_pantographs_keeps_their_positions(tmp_path):
     assert s.positions == [0.0, 200.0] and inerta.load_study(f"{SRC}/studies/hsx-s2-fe-line.yaml").positions == [0.0]
     assert inerta.estimated_evaluation_seconds(s) > inerta.estimated_evaluation_seconds(
         inerta.load_study(f"{SRC}/studies/hsx-s2-fe-line.yaml"))
+
+
+def test_evaluate_batch_equals_evaluate_one_by_one(tmp_path):
+    """Issue 50: a batch of designs on a time-domain study (a short FE line, stepped together in lanes) gives the
+    StudyCosts of evaluate one by one, bit for bit (pickled: every field); a failing design raises its exception."""
+    p = tmp_path / "batch.yaml"
+    p.write_text(f"""name: batch
+model: {SRC}/models/hsx.yaml
+catenary: {SRC}/models/catenary-fe.yaml
+catenaries: [[line.spans=3, solver.cutoff=30]]
+speeds: {{from: 200, to: 200, step: 10, unit: kmh}}
+layouts: [S2-5]
+""")
+    s = inerta.load_study(p)
+    assert s.method == "time"
+    designs = [inerta.default_suspension(s), ("k", {"k": 1e4}), ["c|k", {"c": 2e3, "k": 3e3}], "S2-default",
+               (inerta.parse("b|c"), {"b": 10, "c": 100})]
+    one = [inerta.evaluate(s, d[0], d[1]) if isinstance(d, (tuple, list)) else inerta.evaluate(s, d) for d in designs]
+    got = inerta.evaluate_batch(s, designs)
+    import pickle
+
+    assert [pickle.dumps(c) for c in got] == [pickle.dumps(c) for c in one]
+    assert inerta.evaluate_batch(s, []) == []
+    # A rigid design among good ones: evaluate's exception.
+    with pytest.raises(inerta.ModelError) as alone:
+        inerta.evaluate(s, "k", {"k": float("inf")})
+    with pytest.raises(inerta.ModelError) as batch:
+        inerta.evaluate_batch(s, [("k", {"k": 1e4}), ("k", {"k": float("inf")}), ("c", {"c": 1e3})])
+    assert str(batch.value) == str(alone.value)
+
+
+def test_evaluate_batch_on_the_periodic_path(study):
+    designs = [("S2-5", {"k": 1e4}), ("S2-3", {"b": 5, "c": 2e3}), inerta.default_suspension(study)]
+    import pickle
+
+    assert [pickle.dumps(c) for c in inerta.evaluate_batch(study, designs)] == [
+        pickle.dumps(inerta.evaluate(study, *d) if isinstance(d, tuple) else inerta.evaluate(study, d)) for d in designs]

@@ -11,6 +11,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <optional>
 
 #include "inerta/analysis/contact_quality.hpp"
 #include "inerta/analysis/simulate.hpp"
@@ -69,57 +70,96 @@ void check_speed(double span, double line_length, double wave, double speed, int
 
 
 // A finite line (the finite-element catenary): one pass from the static state until the leading
-// pantograph is 1 m short of the end; statistics of each contact over the analysis section.
-SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
-  const double T = sys.span() / sys.speed();
-  const int nc = sys.n_contacts();
-  SpeedResult r;
-  r.speed = sys.speed();
-  sys.equilibrate();
-  const double t_end = sys.end_time();
-  if (!(t_end > 0))
-    throw InvalidArgument(fmt::format("the line ({:g} m) is too short for a run", sys.line_length()));
-  const catenary::Section sec = sys.section();
-  check_filter_sampling(o.filter_cutoff, T / o.samples_per_span, sys.speed());
-  std::vector<std::vector<double>> F(static_cast<std::size_t>(nc)), ts(F.size()), xc(F.size()), Fall(F.size());
-  const std::vector<double> xs = sys.support_x();
-  r.support_x = xs;  // then only those in the section
-  r.support_uplift.assign(xs.size(), 0.0);
-  sys.advance(t_end, T / o.samples_per_span, o.integrator, [&](const catenary::Sample& s) {
+// pantograph is 1 m short of the end; statistics of each contact over the analysis section. What one
+// system records over its pass: run_line's and each lane's of run_lanes (one code path).
+class LineRecorder {
+ public:
+  // Equilibrates the system and checks the run (its exceptions are the run's).
+  LineRecorder(catenary::Coupled& sys, const RunOptions& o) : sys_(sys), o_(o) {
+    T_ = sys.span() / sys.speed();
+    const auto nc = static_cast<std::size_t>(sys.n_contacts());
+    r_.speed = sys.speed();
+    sys.equilibrate();
+    t_end_ = sys.end_time();
+    if (!(t_end_ > 0))
+      throw InvalidArgument(fmt::format("the line ({:g} m) is too short for a run", sys.line_length()));
+    sec_ = sys.section();
+    check_filter_sampling(o.filter_cutoff, T_ / o.samples_per_span, sys.speed());
+    F_.resize(nc), ts_.resize(nc), xc_.resize(nc), Fall_.resize(nc);
+    xs_ = sys.support_x();
+    r_.support_x = xs_;  // then only those in the section
+    r_.support_uplift.assign(xs_.size(), 0.0);
+  }
+  double t_end() const { return t_end_; }
+  double dt() const { return T_ / o_.samples_per_span; }
+
+  void sample(const catenary::Sample& s) {
     const auto c = static_cast<std::size_t>(s.contact.index);
     if (c == 0) {
-      r.t.push_back(s.t);
-      const std::vector<double> u = sys.support_uplift();
-      for (std::size_t j = 0; j < u.size(); ++j) r.support_uplift[j] = std::max(r.support_uplift[j], u[j]);
+      r_.t.push_back(s.t);
+      const std::vector<double> u = sys_.support_uplift();
+      for (std::size_t j = 0; j < u.size(); ++j) r_.support_uplift[j] = std::max(r_.support_uplift[j], u[j]);
     }
-    if (s.x_contact >= sec.from && s.x_contact <= sec.to) F[c].push_back(s.force);
-    ts[c].push_back(s.t), xc[c].push_back(s.x_contact), Fall[c].push_back(s.force);
-    if (c == 0) r.F.push_back(s.force);
-  });
-  for (int c = 0; c < nc; ++c) {
-    if (F[static_cast<std::size_t>(c)].empty())
-      throw InvalidArgument(fmt::format(
-          "pantograph {} never passes the analysis section [{:g}, {:g}] m before the end of the line", c + 1, sec.from,
-          sec.to));
-    r.contacts.push_back(statistics(F[static_cast<std::size_t>(c)]));
-    // EN 50317: the same after the 20 Hz low-pass (contact_quality.hpp).
-    const auto cc = static_cast<std::size_t>(c);
-    ContactQuality q = contact_quality(ts[cc], xc[cc], Fall[cc], sec, {.cutoff = o.filter_cutoff, .order = o.filter_order});
-    r.filtered.push_back(q.filtered);
-    r.loss_runs.push_back(std::move(q.loss_runs));
-    if (const std::vector<catenary::Section> parts = sys.overlaps(); !parts.empty()) {
-      const PartStatistics ps = part_statistics(ts[cc], xc[cc], Fall[cc], sec, parts, {.cutoff = o.filter_cutoff, .order = o.filter_order});
-      r.overlap.push_back(ps.raw), r.overlap_filtered.push_back(ps.filtered);
-    }
+    if (s.x_contact >= sec_.from && s.x_contact <= sec_.to) F_[c].push_back(s.force);
+    ts_[c].push_back(s.t), xc_[c].push_back(s.x_contact), Fall_[c].push_back(s.force);
+    if (c == 0) r_.F.push_back(s.force);
   }
-  r.sample_dt = T / o.samples_per_span;
-  r.stats = r.contacts.front();
-  r.spans = static_cast<int>(std::lround(t_end / T));
-  std::vector<double> sx, su;
-  for (std::size_t j = 0; j < xs.size(); ++j)
-    if (xs[j] >= sec.from && xs[j] <= sec.to) sx.push_back(xs[j]), su.push_back(r.support_uplift[j]);
-  r.support_x = std::move(sx), r.support_uplift = std::move(su);
-  return r;
+
+  // The statistics after the pass.
+  SpeedResult finish() {
+    for (std::size_t c = 0; c < F_.size(); ++c) {
+      if (F_[c].empty())
+        throw InvalidArgument(fmt::format(
+            "pantograph {} never passes the analysis section [{:g}, {:g}] m before the end of the line", c + 1, sec_.from,
+            sec_.to));
+      r_.contacts.push_back(statistics(F_[c]));
+      // EN 50317: the same after the 20 Hz low-pass (contact_quality.hpp).
+      ContactQuality q = contact_quality(ts_[c], xc_[c], Fall_[c], sec_, {.cutoff = o_.filter_cutoff, .order = o_.filter_order});
+      r_.filtered.push_back(q.filtered);
+      r_.loss_runs.push_back(std::move(q.loss_runs));
+      if (const std::vector<catenary::Section> parts = sys_.overlaps(); !parts.empty()) {
+        const PartStatistics ps =
+            part_statistics(ts_[c], xc_[c], Fall_[c], sec_, parts, {.cutoff = o_.filter_cutoff, .order = o_.filter_order});
+        r_.overlap.push_back(ps.raw), r_.overlap_filtered.push_back(ps.filtered);
+      }
+    }
+    r_.sample_dt = T_ / o_.samples_per_span;
+    r_.stats = r_.contacts.front();
+    r_.spans = static_cast<int>(std::lround(t_end_ / T_));
+    std::vector<double> sx, su;
+    for (std::size_t j = 0; j < xs_.size(); ++j)
+      if (xs_[j] >= sec_.from && xs_[j] <= sec_.to) sx.push_back(xs_[j]), su.push_back(r_.support_uplift[j]);
+    r_.support_x = std::move(sx), r_.support_uplift = std::move(su);
+    return std::move(r_);
+  }
+
+ private:
+  catenary::Coupled& sys_;
+  const RunOptions& o_;
+  double T_ = 0, t_end_ = 0;
+  catenary::Section sec_;
+  SpeedResult r_;
+  std::vector<std::vector<double>> F_, ts_, xc_, Fall_;  // per contact: in the section; every sample's t, x, F
+  std::vector<double> xs_;
+};
+
+SpeedResult run_line(catenary::Coupled& sys, const RunOptions& o) {
+  LineRecorder rec(sys, o);
+  sys.advance(rec.t_end(), rec.dt(), o.integrator, [&](const catenary::Sample& s) { rec.sample(s); });
+  return rec.finish();
+}
+
+// run_speed's checks of the options and the speed.
+void check_run(const catenary::Coupled& sys, const RunOptions& o) {
+  check(o);
+  check_speed(sys.span(), sys.line_length(), std::numeric_limits<double>::infinity(), sys.speed(), o.max_spans, true);
+}
+
+// What a sweep keeps of a run (no histories) and adds (the line's uplift limit).
+void lighten(SpeedResult& r, const catenary::Catenary& catenary) {
+  r.t.clear(), r.F.clear();
+  r.uplift_limit = catenary.uplift_limit();
+  r.uplift_limited = catenary.uplift_limited();
 }
 }  // namespace
 
@@ -148,8 +188,7 @@ std::string speed_warning(const catenary::Catenary& catenary, double speed) {
 }
 
 SpeedResult run_speed(catenary::Coupled& sys, const RunOptions& o) {
-  check(o);
-  check_speed(sys.span(), sys.line_length(), std::numeric_limits<double>::infinity(), sys.speed(), o.max_spans, true);
+  check_run(sys, o);
   if (std::isfinite(sys.line_length())) return run_line(sys, o);
   const double T = sys.span() / sys.speed();  // one span
   const int nc = sys.n_contacts();
@@ -214,7 +253,7 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
                                const catenary::Catenary& catenary, const std::vector<double>& speeds,
                                const RunOptions& options, const std::function<void(int, int)>& progress) {
   std::vector<SpeedResult> results(speeds.size());
-  std::exception_ptr error;
+  std::vector<std::exception_ptr> errors(speeds.size());
   std::mutex mutex;
   int done = 0;
   check(options);                 // before any work
@@ -225,20 +264,134 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
     try {
       auto sys = catenary.couple(pantographs, speeds[i]);
       SpeedResult r = run_speed(*sys, options);
-      r.t.clear(), r.F.clear();  // keep sweeps light
-      r.uplift_limit = catenary.uplift_limit();
-      r.uplift_limited = catenary.uplift_limited();
+      lighten(r, catenary);  // keep sweeps light
       results[i] = std::move(r);
     } catch (...) {
-      std::lock_guard<std::mutex> lock(mutex);
-      if (!error) error = std::current_exception();
+      errors[i] = std::current_exception();
     }
     std::lock_guard<std::mutex> lock(mutex);
     ++done;
     if (progress) progress(done, static_cast<int>(speeds.size()));
   });
-  if (error) std::rethrow_exception(error);
+  for (const std::exception_ptr& e : errors)  // the first speed's, whichever thread failed first
+    if (e) std::rethrow_exception(e);
   return results;
+}
+
+std::vector<LaneResult> run_lanes(catenary::CoupledLanes& lanes, const RunOptions& o) {
+  const auto n = static_cast<std::size_t>(lanes.lanes());
+  std::vector<LaneResult> out(n);
+  std::vector<std::optional<LineRecorder>> rec(n);
+  for (int i = 0; i < lanes.lanes(); ++i) {
+    if (!lanes.running(i)) continue;
+    catenary::Coupled& sys = lanes.lane(i);
+    if (!std::isfinite(sys.line_length()))
+      throw InvalidArgument("run_lanes: lanes run on a finite line only (a periodic line's runs settle span by span)");
+    try {
+      check_run(sys, o);
+      rec[static_cast<std::size_t>(i)].emplace(sys, o);  // equilibrates: its exception fails this lane alone
+    } catch (...) {
+      lanes.fail(i, std::current_exception());
+    }
+  }
+  const LineRecorder* first = nullptr;
+  for (const auto& r : rec)
+    if (r) {
+      if (!first) first = &*r;
+      if (r->t_end() != first->t_end() || r->dt() != first->dt())
+        throw InvalidArgument(fmt::format("run_lanes: the lanes' runs end at {:g} s and {:g} s: lanes run the same line, "
+                                          "speed and positions", first->t_end(), r->t_end()));
+    }
+  if (first)
+    lanes.advance(first->t_end(), first->dt(), o.integrator,
+                  [&](int i, const catenary::Sample& s) { rec[static_cast<std::size_t>(i)]->sample(s); });
+  for (int i = 0; i < lanes.lanes(); ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    if (lanes.running(i)) try {
+        out[k].result = rec[k]->finish();
+        continue;
+      } catch (...) {
+        lanes.fail(i, std::current_exception());
+      }
+    out[k].error = lanes.error(i);
+  }
+  return out;
+}
+
+namespace {
+// Several trains at one speed on a finite line: their lanes (a sweep's light results), or, if they
+// cannot be coupled together (a train the catenary refuses), each train as sweep runs it.
+std::vector<LaneResult> lanes_at(const std::vector<std::vector<catenary::PantographOnLine>>& trains,
+                                 const catenary::Catenary& catenary, double speed, const RunOptions& o) {
+  std::vector<LaneResult> out(trains.size());
+  std::unique_ptr<catenary::CoupledLanes> lanes;
+  try {
+    lanes = catenary.couple_lanes(trains, speed);
+  } catch (...) {
+    for (std::size_t i = 0; i < trains.size(); ++i) try {
+        auto sys = catenary.couple(trains[i], speed);
+        out[i].result = run_speed(*sys, o);
+        lighten(out[i].result, catenary);
+      } catch (...) {
+        out[i].error = std::current_exception();
+      }
+    return out;
+  }
+  try {
+    out = run_lanes(*lanes, o);
+  } catch (...) {  // not one lane's: every lane's
+    for (LaneResult& r : out) r.error = std::current_exception();
+    return out;
+  }
+  for (LaneResult& r : out)
+    if (!r.error) lighten(r.result, catenary);
+  return out;
+}
+}  // namespace
+
+std::vector<LaneSweep> sweep_lanes(const std::vector<std::vector<catenary::PantographOnLine>>& trains,
+                                   const catenary::Catenary& catenary, const std::vector<double>& speeds,
+                                   const RunOptions& options) {
+  std::vector<LaneSweep> out(trains.size());
+  auto fail_all = [&] {
+    for (LaneSweep& t : out) t.error = std::current_exception();
+  };
+  try {  // sweep's checks before any work: every train's
+    check(options);
+    for (double v : speeds) require(speed_rule, v, "speeds");
+    for (double v : speeds) check_run_speed(catenary, v, options.max_spans, options.allow_supercritical);
+  } catch (...) {
+    fail_all();
+    return out;
+  }
+  if (!std::isfinite(catenary.line_length())) {  // a periodic line: each train's sweep (σ settles per run)
+    tbb::parallel_for(std::size_t{0}, trains.size(), [&](std::size_t i) {
+      try {
+        out[i].results = sweep(trains[i], catenary, speeds, options);
+      } catch (...) {
+        out[i].error = std::current_exception();
+      }
+    });
+    return out;
+  }
+  std::vector<std::size_t> live;  // the trains whose line could be prepared
+  std::vector<std::vector<catenary::PantographOnLine>> run;
+  for (std::size_t i = 0; i < trains.size(); ++i) try {
+      catenary.prepare(trains[i]);  // a finite-element line's modes: once (cached for the positions)
+      live.push_back(i), run.push_back(trains[i]);
+    } catch (...) {
+      out[i].error = std::current_exception();
+    }
+  if (live.empty()) return out;
+  std::vector<std::vector<LaneResult>> at(speeds.size());
+  tbb::parallel_for(std::size_t{0}, speeds.size(), [&](std::size_t k) { at[k] = lanes_at(run, catenary, speeds[k], options); });
+  for (std::size_t j = 0; j < live.size(); ++j) {
+    LaneSweep& t = out[live[j]];
+    for (std::size_t k = 0; k < speeds.size() && !t.error; ++k) t.error = at[k][j].error;  // the first speed's, as sweep
+    if (t.error) continue;
+    for (std::size_t k = 0; k < speeds.size(); ++k) t.results.push_back(std::move(at[k][j].result));
+  }
+  return out;
 }
 
 std::vector<SpeedResult> sweep(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,

@@ -8,6 +8,8 @@
 
 #include <atomic>
 #include <cmath>
+#include <exception>
+#include <optional>
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/periodic.hpp"
@@ -166,19 +168,96 @@ double estimated_evaluation_seconds(const Study& study) {
   return serial / std::max(1, std::min(tbb::info::default_concurrency(), runs));
 }
 
+namespace {
+// A time-domain study's run options: the criteria's filter for the 20 Hz statistics.
+analysis::RunOptions run_options(const Study& study) {
+  analysis::RunOptions o;
+  if (study.limits.acceptance)
+    o.filter_cutoff = study.limits.acceptance->filter_cutoff, o.filter_order = study.limits.acceptance->filter_order;
+  return o;
+}
+
+// A design's train under catenary i: a copy of its pantograph at each of the study's positions.
+std::vector<catenary::PantographOnLine> train_of(const Study& study, const DesignPantographs& d, std::size_t i) {
+  std::vector<catenary::PantographOnLine> train;
+  for (double x0 : study.positions) train.push_back({d.pantographs[i], x0, study.contact});
+  return train;
+}
+}  // namespace
+
 StudyCost evaluate_time(const Study& study, const network::Network& net) {
   // Every (catenary, speed) run in parallel: the catenaries here, their speeds in analysis::sweep.
   const DesignPantographs d = design_pantographs(study, net);
   std::vector<std::vector<analysis::SpeedResult>> sweeps(study.catenaries.size());
+  std::vector<std::exception_ptr> errors(study.catenaries.size());
   tbb::parallel_for(std::size_t{0}, study.catenaries.size(), [&](std::size_t i) {
-    std::vector<catenary::PantographOnLine> train;
-    for (double x0 : study.positions) train.push_back({d.pantographs[i], x0, study.contact});
-    analysis::RunOptions o;
-    if (study.limits.acceptance)  // the criteria's filter for the 20 Hz statistics
-      o.filter_cutoff = study.limits.acceptance->filter_cutoff, o.filter_order = study.limits.acceptance->filter_order;
-    sweeps[i] = analysis::sweep(train, *study.catenaries[i], study.speeds, o);
+    try {
+      sweeps[i] = analysis::sweep(train_of(study, d, i), *study.catenaries[i], study.speeds, run_options(study));
+    } catch (...) {
+      errors[i] = std::current_exception();
+    }
   });
+  for (const std::exception_ptr& e : errors)  // the first catenary's, whichever thread failed first
+    if (e) std::rethrow_exception(e);
   return cost_of(study, sweeps, d.commissioning);
+}
+
+const StudyCost& BatchEvaluation::get() const {
+  if (error) std::rethrow_exception(error);
+  return cost;
+}
+
+std::vector<BatchEvaluation> evaluate_batch(const Study& study, const std::vector<network::Network>& nets) {
+  if (study.method == Study::Method::Time) return evaluate_time_batch(study, nets);
+  std::vector<BatchEvaluation> out(nets.size());
+  for (std::size_t k = 0; k < nets.size(); ++k) try {  // the periodic path: nothing to share between designs
+      out[k].cost = evaluate(study, nets[k]);
+    } catch (...) {
+      out[k].error = std::current_exception();
+    }
+  return out;
+}
+
+std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets) {
+  const std::size_t n = nets.size(), nc = study.catenaries.size();
+  std::vector<BatchEvaluation> out(n);
+  std::vector<std::optional<DesignPantographs>> designs(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {  // commissioning: each design on its own
+    try {
+      designs[k] = design_pantographs(study, nets[k]);
+    } catch (...) {
+      out[k].error = std::current_exception();
+    }
+  });
+  std::vector<std::size_t> live;
+  for (std::size_t k = 0; k < n; ++k)
+    if (designs[k]) live.push_back(k);
+  // Chunks of lane_chunk designs in order; every (chunk, catenary) pair's lanes in parallel.
+  const std::size_t chunks = (live.size() + lane_chunk - 1) / lane_chunk;
+  std::vector<std::vector<analysis::LaneSweep>> got(chunks * nc);
+  tbb::parallel_for(std::size_t{0}, chunks * nc, [&](std::size_t task) {
+    const std::size_t c = task / nc, i = task % nc;
+    std::vector<std::vector<catenary::PantographOnLine>> trains;
+    for (std::size_t j = c * lane_chunk; j < std::min(live.size(), (c + 1) * lane_chunk); ++j)
+      trains.push_back(train_of(study, *designs[live[j]], i));
+    got[task] = analysis::sweep_lanes(trains, *study.catenaries[i], study.speeds, run_options(study));
+  });
+  for (std::size_t j = 0; j < live.size(); ++j) {
+    const std::size_t k = live[j], c = j / lane_chunk, lane = j % lane_chunk;
+    std::vector<std::vector<analysis::SpeedResult>> sweeps(nc);
+    for (std::size_t i = 0; i < nc && !out[k].error; ++i) {  // the first catenary's exception, as evaluate_time
+      analysis::LaneSweep& s = got[c * nc + i][lane];
+      out[k].error = s.error;
+      sweeps[i] = std::move(s.results);
+    }
+    if (out[k].error) continue;
+    try {
+      out[k].cost = cost_of(study, sweeps, designs[k]->commissioning);
+    } catch (...) {
+      out[k].error = std::current_exception();
+    }
+  }
+  return out;
 }
 
 network::Network design_network(const std::string& layout, const network::Params& values) {
@@ -208,16 +287,38 @@ std::vector<std::string> free_parameters(const std::string& layout) {
   return names;
 }
 
+namespace {
+// What the search minimises of a design's evaluation.
+DesignCost design_cost_of(const StudyCost& c) { return {c.penalised(), c.unstable_speed > 0, c.J, c.excess}; }
+// A rigid suspension locks the pantograph (with_suspension refuses it): no design.
+bool rigid(const network::Network& net) { return network::simplify(net).kind == network::Network::Kind::Rigid; }
+}  // namespace
+
 DesignCost design_cost(const Study& study, const std::string& layout, const network::Params& params) {
   const network::Network net = network::resolve(layout, params);
-  // A rigid suspension locks the pantograph (with_suspension refuses it): no design.
-  if (network::simplify(net).kind == network::Network::Kind::Rigid) return {static_cast<double>(INFINITY), false};
+  if (rigid(net)) return {static_cast<double>(INFINITY), false};
   try {
-    const StudyCost c = evaluate(study, net);
-    return {c.penalised(), c.unstable_speed > 0, c.J, c.excess};
+    return design_cost_of(evaluate(study, net));
   } catch (const NumericalError&) {
     return {static_cast<double>(INFINITY), false};  // no static equilibrium or steady state for these values
   }
+}
+
+std::vector<DesignCost> design_costs(const Study& study, const std::string& layout,
+                                     const std::vector<network::Params>& params) {
+  std::vector<DesignCost> out(params.size(), DesignCost{static_cast<double>(INFINITY), false});
+  std::vector<network::Network> nets;
+  std::vector<std::size_t> which;
+  for (std::size_t k = 0; k < params.size(); ++k) {
+    network::Network net = network::resolve(layout, params[k]);
+    if (!rigid(net)) nets.push_back(std::move(net)), which.push_back(k);
+  }
+  const std::vector<BatchEvaluation> got = evaluate_batch(study, nets);
+  for (std::size_t j = 0; j < got.size(); ++j) try {
+      out[which[j]] = design_cost_of(got[j].get());
+    } catch (const NumericalError&) {  // as design_cost: no design (INFINITY)
+    }
+  return out;
 }
 
 namespace {

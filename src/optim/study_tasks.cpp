@@ -23,6 +23,32 @@ CheckResult run_check(const Study& study, const CheckTask& task) {
   return r;
 }
 
+std::vector<CheckResult> run_checks(const Study& study, const std::vector<CheckTask>& tasks) {
+  // The designs by kind of evaluation: the time domain (lanes) and the study's own periodic path.
+  std::vector<network::Network> time, own;
+  std::vector<std::size_t> time_at, own_at;
+  for (std::size_t k = 0; k < tasks.size(); ++k) {
+    const CheckTask& t = tasks[k];
+    network::Network net = t.layout.empty() ? default_suspension(study) : design_network(t.layout, t.values);
+    if (t.time || study.method == Study::Method::Time)
+      time.push_back(std::move(net)), time_at.push_back(k);
+    else
+      own.push_back(std::move(net)), own_at.push_back(k);
+  }
+  std::vector<BatchEvaluation> got(tasks.size());
+  const std::vector<BatchEvaluation> a = evaluate_time_batch(study, time), b = evaluate_batch(study, own);
+  for (std::size_t j = 0; j < a.size(); ++j) got[time_at[j]] = a[j];
+  for (std::size_t j = 0; j < b.size(); ++j) got[own_at[j]] = b[j];
+  std::vector<CheckResult> out(tasks.size());
+  for (std::size_t k = 0; k < tasks.size(); ++k) try {  // as run_check; another exception: the first task's
+      out[k].cost = got[k].get();
+    } catch (const NumericalError& e) {
+      out[k].failure = e.what();
+      out[k].cost.J = INFINITY;
+    }
+  return out;
+}
+
 ModelCheckResult run_check(const ModelStudy& study, const CheckTask& task) {
   if (task.time) throw InvalidArgument(study.source + ": a model study has no time-domain check");
   const network::Network net = task.layout.empty() ? default_network(study) : design_network(task.layout, task.values);
@@ -44,8 +70,20 @@ std::size_t best_design(const std::vector<double>& penalised) {
 }
 
 namespace {
+// A search here: a time-domain study's polls through design_costs (the designs in lanes); a model study's
+// and a periodic study's as optimise_layout evaluates them (in threads).
+LayoutResult search_task(const Study& study, const SearchTask& task, const numerics::Progress& progress) {
+  DesignBatch lanes;
+  if (study.method == Study::Method::Time)
+    lanes = [&](const std::vector<network::Params>& params) { return design_costs(study, task.layout, params); };
+  return run_search(study, task, progress, lanes);
+}
+ModelLayoutResult search_task(const ModelStudy& study, const SearchTask& task, const numerics::Progress& progress) {
+  return run_search(study, task, progress);
+}
+
 // LocalExecutor's searches, either kind: the networks of one size in parallel (as optimise_all), named
-// layouts one after another (each search's polls in parallel).
+// layouts one after another (each search's polls in parallel, or in lanes).
 template <class S, class Result>
 std::vector<Result> search_here(const S& study, const std::vector<SearchTask>& tasks,
                                 const StudyExecutor::Done<Result>& done, const StudyExecutor::Searching& searching) {
@@ -53,7 +91,7 @@ std::vector<Result> search_here(const S& study, const std::vector<SearchTask>& t
   if (std::any_of(tasks.begin(), tasks.end(), [](const SearchTask& t) { return t.network; })) {
     std::mutex mutex;
     tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t i) {
-      out[i] = run_search(study, tasks[i]);
+      out[i] = search_task(study, tasks[i], {});
       std::lock_guard<std::mutex> lock(mutex);
       if (done) done(i, out[i]);
     });
@@ -62,16 +100,9 @@ std::vector<Result> search_here(const S& study, const std::vector<SearchTask>& t
   for (std::size_t i = 0; i < tasks.size(); ++i) {
     numerics::Progress p;
     if (searching) p = [&](int start, int evals, double best) { searching(i, start, evals, best); };
-    out[i] = run_search(study, tasks[i], p);
+    out[i] = search_task(study, tasks[i], p);
     if (done) done(i, out[i]);
   }
-  return out;
-}
-
-template <class S>
-auto check_here(const S& study, const std::vector<CheckTask>& tasks) {
-  std::vector<decltype(run_check(study, CheckTask{}))> out;
-  for (const auto& t : tasks) out.push_back(run_check(study, t));
   return out;
 }
 }  // namespace
@@ -85,10 +116,12 @@ std::vector<ModelLayoutResult> LocalExecutor::search(const ModelStudy& study, co
   return search_here(study, tasks, done, searching);
 }
 std::vector<CheckResult> LocalExecutor::check(const Study& study, const std::vector<CheckTask>& tasks) {
-  return check_here(study, tasks);
+  return run_checks(study, tasks);
 }
 std::vector<ModelCheckResult> LocalExecutor::check(const ModelStudy& study, const std::vector<CheckTask>& tasks) {
-  return check_here(study, tasks);
+  std::vector<ModelCheckResult> out;
+  for (const auto& t : tasks) out.push_back(run_check(study, t));
+  return out;
 }
 
 }  // namespace inerta::optim

@@ -1,6 +1,7 @@
 #pragma once
 // Contact-quality statistics (spec/06 §6.1) and the speed run that produces them.
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -107,7 +108,8 @@ double estimated_sweep_seconds(const std::vector<catenary::PantographOnLine>& pa
 
 /// Speed sweep (spec/06 §6.1): couples the pantographs to the catenary at every speed and runs them
 /// in parallel (oneTBB). `progress(done, total)` is called after each speed (from worker threads,
-/// serialised). Results are in the order of `speeds`; the first failure is rethrown.
+/// serialised). Results are in the order of `speeds`; the failure of the first speed that fails is
+/// rethrown (every speed runs).
 std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pantographs,
                                const catenary::Catenary& catenary, const std::vector<double>& speeds,
                                const RunOptions& options, const std::function<void(int, int)>& progress = {});
@@ -115,6 +117,30 @@ std::vector<SpeedResult> sweep(const std::vector<catenary::PantographOnLine>& pa
 std::vector<SpeedResult> sweep(const pantograph::Pantograph& pantograph, const catenary::Catenary& catenary,
                                const catenary::Contact& contact, const std::vector<double>& speeds,
                                const RunOptions& options, const std::function<void(int, int)>& progress = {});
+
+/// One lane's run of run_lanes: what run_speed of its train coupled alone gives, or the exception it throws.
+struct LaneResult {
+  SpeedResult result;
+  std::exception_ptr error;  ///< nullptr: `result` holds
+};
+/// run_speed of every lane of a finite line's CoupledLanes (issue 50), stepped together: each lane checked
+/// and equilibrated (an exception fails that lane alone), then one pass of the running lanes; per lane its
+/// statistics as run_speed computes them (the same recorder), in lane order. A lane's Coupled must answer
+/// support_uplift() for its own state from inside its observer call. InvalidArgument on a periodic line.
+std::vector<LaneResult> run_lanes(catenary::CoupledLanes& lanes, const RunOptions& options);
+
+/// One train's sweep of sweep_lanes: what sweep gives, or the exception it throws (the first failing speed's).
+struct LaneSweep {
+  std::vector<SpeedResult> results;  ///< in the order of speeds; empty if `error`
+  std::exception_ptr error;
+};
+/// sweep of several trains (designs: the same pantograph positions) on one catenary, per train bit for bit its
+/// own sweep's result or exception. A finite line: at each speed the trains' lanes (Catenary::couple_lanes,
+/// run_lanes), the speeds in parallel (oneTBB); trains that cannot be coupled together are run one by one. A
+/// periodic line (no lanes: its runs settle span by span): each train's sweep, the trains in parallel.
+std::vector<LaneSweep> sweep_lanes(const std::vector<std::vector<catenary::PantographOnLine>>& trains,
+                                   const catenary::Catenary& catenary, const std::vector<double>& speeds,
+                                   const RunOptions& options);
 
 /// The same runs on two catenaries (two formulations of one line: e.g. the finite-element line's
 /// direct and modal solves), one speed after the other, each timed (coupling, start and run, s).

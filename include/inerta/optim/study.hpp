@@ -2,6 +2,8 @@
 // Structure-based suspension design (spec/07): for each candidate layout, optimise its free element
 // values by pattern search to minimise J2 = max over catenary variants of σ_max over the speeds.
 #include <cmath>
+#include <cstddef>
+#include <exception>
 #include <map>
 #include <memory>
 #include <optional>
@@ -178,6 +180,27 @@ network::Network default_suspension(const Study& study);
 /// A design whose periodic solution is unstable at some speed costs J = +∞ (unstable_speed set).
 StudyCost evaluate(const Study& study, const network::Network& net);
 
+/// One design's result of evaluate_batch: its cost, or the exception evaluate throws for it.
+struct BatchEvaluation {
+  StudyCost cost;
+  std::exception_ptr error;  ///< nullptr: `cost` holds
+  /// The cost, or the design's exception rethrown.
+  const StudyCost& get() const;
+};
+/// How many designs a batch steps together on one line (the lanes of Catenary::couple_lanes): a batch is
+/// cut into chunks of at most this many, in the given order. Eight keeps a chunk's states (the finite-element
+/// line's B states of the contact rows) small beside the line's shared matrices, and a study's polls and
+/// re-checks (a few to a dozen designs) in one or two chunks.
+inline constexpr std::size_t lane_chunk = 8;
+/// evaluate of several designs, each design's result bit for bit evaluate's (or its exception): a time-domain
+/// study runs them through evaluate_time_batch; the periodic fast path evaluates them one after another.
+std::vector<BatchEvaluation> evaluate_batch(const Study& study, const std::vector<network::Network>& nets);
+/// evaluate_time of several designs, each bit for bit evaluate_time's (or its exception): each design
+/// commissioned on its own (design_pantographs; its exception is the design's), then per catenary the designs'
+/// trains in lanes (analysis::sweep_lanes, lane_chunk at a time), the (chunk, catenary) pairs and their speeds
+/// in parallel; a design's exception is its first failing catenary's.
+std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets);
+
 /// The limits applied to the sweeps of each catenary (sets J, penalised, feasible, violation and the
 /// worst limited quantities); `sweeps[i]` under study.catenaries[i].
 StudyCost cost_of(const Study& study, const std::vector<std::vector<analysis::SpeedResult>>& sweeps,
@@ -250,6 +273,11 @@ struct DesignCost {
   double excess = 0;    ///< Σ relative excess of the limits (StudyCost::excess; 0: feasible)
 };
 DesignCost design_cost(const Study& study, const std::string& layout, const network::Params& params);
+
+/// design_cost of several designs of one layout, in order, through evaluate_batch (the engine's local
+/// DesignBatch). An exception other than a NumericalError is rethrown (the first design's in order).
+std::vector<DesignCost> design_costs(const Study& study, const std::string& layout,
+                                     const std::vector<network::Params>& params);
 
 /// The design costs of several designs at once, in order (e.g. on a cluster: inerta.distributed);
 /// each must equal design_cost's.

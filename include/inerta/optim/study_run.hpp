@@ -58,6 +58,10 @@ struct CheckResult {
 };
 /// What a check task computes: evaluate or evaluate_time of the design.
 CheckResult run_check(const Study& study, const CheckTask& task);
+/// run_check of several tasks, each bit for bit run_check's: the time-domain ones (task.time, or a time-domain
+/// study's) in lanes (evaluate_time_batch), the others one after another (LocalExecutor's checks: the screen,
+/// the re-checks). An exception other than a NumericalError is rethrown, the first task's in order.
+std::vector<CheckResult> run_checks(const Study& study, const std::vector<CheckTask>& tasks);
 struct ModelCheckResult {
   ModelCost cost;
   std::string failure;  ///< a NumericalError's message (cost.J = ∞), else ""
@@ -89,8 +93,9 @@ class StudyExecutor {
   virtual std::vector<ModelCheckResult> check(const ModelStudy& study, const std::vector<CheckTask>& tasks) = 0;
 };
 
-/// This process: named layouts one after another (each search's evaluations in parallel), the
-/// networks of one size in parallel (oneTBB), checks one after another (each in parallel inside).
+/// This process: named layouts one after another (each search's evaluations in parallel; a time-domain
+/// study's polls in lanes, design_costs), the networks of one size in parallel (oneTBB), a J2 study's checks
+/// together (run_checks), a model study's one after another (each in parallel inside).
 class LocalExecutor : public StudyExecutor {
  public:
   std::vector<LayoutResult> search(const Study& study, const std::vector<SearchTask>& tasks, const Done<LayoutResult>& done,
