@@ -484,6 +484,12 @@ EXCLUDED = {
                               "Python chooses it with FeCatenaryData.solver",
     "catenary::make_direct_solver": "makes an FeLineSolver (see there)",
     "catenary::make_modal_solver": "makes an FeLineSolver (see there)",
+    "catenary::FeLineLanes": "the solvers of several lanes stepped together inside CoupledLanes (a per-step "
+                             "workspace, see catenary::FeLineSolver); evaluate_batch is its Python face",
+    "catenary::make_modal_lanes": "makes an FeLineLanes (see there)",
+    "catenary::make_separate_lanes": "makes an FeLineLanes (see there)",
+    "optim::LaneBatcher": "the local engine's rendezvous of refinements running side by side on threads; "
+                          "evaluate_batch is the batch it runs",
     "catenary::FeModalLine": "the modes' cache inside FeCatenary: a catenary held in Python keeps it",
     "catenary::FeSectionLine": "a tension section inside FeCatenary as its runs see it; its data are FeCatenaryData.linked_sections()",
     "catenary::FeWindow": "a window of FeModalLine (see there)",

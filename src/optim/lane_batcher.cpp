@@ -13,10 +13,10 @@ void LaneBatcher::run_locked(std::unique_lock<std::mutex>& lock) {
   running_ = true;
   std::vector<Request*> batch;
   batch.swap(pending_);
-  std::vector<Design> all;
+  std::vector<network::Network> all;
   for (const Request* r : batch) all.insert(all.end(), r->designs->begin(), r->designs->end());
   lock.unlock();
-  std::vector<Outcome<Result>> out;
+  std::vector<BatchEvaluation> out;
   std::exception_ptr failed;
   try {
     out = evaluate_(all);
@@ -40,7 +40,7 @@ void LaneBatcher::run_locked(std::unique_lock<std::mutex>& lock) {
   cv_.notify_all();
 }
 
-std::vector<LaneBatcher::Result> LaneBatcher::ask(const std::vector<Design>& designs) {
+std::vector<BatchEvaluation> LaneBatcher::ask(const std::vector<network::Network>& designs) {
   Request me{&designs, {}, false};
   std::unique_lock<std::mutex> lock(mutex_);
   pending_.push_back(&me);
@@ -50,12 +50,7 @@ std::vector<LaneBatcher::Result> LaneBatcher::ask(const std::vector<Design>& des
     if (!running_ && static_cast<int>(pending_.size()) >= active_) run_locked(lock);
     else cv_.wait(lock);
   }
-  std::vector<Result> out;
-  for (auto& o : me.out) {
-    if (o.error) std::rethrow_exception(o.error);
-    out.push_back(std::move(o.value));
-  }
-  return out;
+  return std::move(me.out);
 }
 
 void LaneBatcher::done() {

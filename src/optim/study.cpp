@@ -305,7 +305,7 @@ DesignCost design_cost(const Study& study, const std::string& layout, const netw
 }
 
 std::vector<DesignCost> design_costs(const Study& study, const std::string& layout,
-                                     const std::vector<network::Params>& params) {
+                                     const std::vector<network::Params>& params, const BatchEvaluator& evaluate) {
   std::vector<DesignCost> out(params.size(), DesignCost{static_cast<double>(INFINITY), false});
   std::vector<network::Network> nets;
   std::vector<std::size_t> which;
@@ -313,7 +313,8 @@ std::vector<DesignCost> design_costs(const Study& study, const std::string& layo
     network::Network net = network::resolve(layout, params[k]);
     if (!rigid(net)) nets.push_back(std::move(net)), which.push_back(k);
   }
-  const std::vector<BatchEvaluation> got = evaluate_batch(study, nets);
+  const std::vector<BatchEvaluation> got = evaluate ? evaluate(nets) : evaluate_batch(study, nets);
+  if (got.size() != nets.size()) throw std::logic_error("design_costs: the evaluator gave a wrong number of results");
   for (std::size_t j = 0; j < got.size(); ++j) try {
       out[which[j]] = design_cost_of(got[j].get());
     } catch (const NumericalError&) {  // as design_cost: no design (INFINITY)

@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <thread>
+#include <type_traits>
 
 #include "inerta/error.hpp"
+#include "inerta/optim/lane_batcher.hpp"
 #include "inerta/optim/study_run.hpp"
 
 namespace inerta::optim {
@@ -82,6 +85,50 @@ ModelLayoutResult search_task(const ModelStudy& study, const SearchTask& task, c
   return run_search(study, task, progress);
 }
 
+// A time-domain study's refinements (multi-fidelity `layouts: all`) run side by side: each on a thread of
+// its own, their searches' evaluations gathered by a LaneBatcher into one batch whenever every
+// refinement still running waits (issue 50: the designs stepped together as lanes, each design's cost
+// its lone evaluation's, so each refinement's path is the one it takes alone).
+bool side_by_side(const Study& study, const std::vector<SearchTask>& tasks) {
+  return study.method == Study::Method::Time && tasks.size() > 1 &&
+         std::all_of(tasks.begin(), tasks.end(), [](const SearchTask& t) { return t.refine && !t.network && !t.coarse; });
+}
+std::vector<LayoutResult> refine_side_by_side(const Study& study, const std::vector<SearchTask>& tasks,
+                                              const StudyExecutor::Done<LayoutResult>& done,
+                                              const StudyExecutor::Searching& searching) {
+  std::vector<LayoutResult> out(tasks.size());
+  LaneBatcher batcher(static_cast<int>(tasks.size()),
+                      [&](const std::vector<network::Network>& nets) { return evaluate_batch(study, nets); });
+  std::mutex mutex;  // the callers' callbacks, one at a time
+  std::vector<std::exception_ptr> errors(tasks.size());
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < tasks.size(); ++i)
+    threads.emplace_back([&, i] {
+      try {
+        numerics::Progress p;
+        if (searching)
+          p = [&](int start, int evals, double best) {
+            std::lock_guard<std::mutex> lock(mutex);
+            searching(i, start, evals, best);
+          };
+        const DesignBatch lanes = [&](const std::vector<network::Params>& params) {
+          return design_costs(study, tasks[i].layout, params,
+                              [&](const std::vector<network::Network>& nets) { return batcher.ask(nets); });
+        };
+        out[i] = run_search(study, tasks[i], p, lanes);
+        std::lock_guard<std::mutex> lock(mutex);
+        if (done) done(i, out[i]);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+      batcher.done();
+    });
+  for (std::thread& t : threads) t.join();
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return out;
+}
+
 // LocalExecutor's searches, either kind: the networks of one size in parallel (as optimise_all), named
 // layouts one after another (each search's polls in parallel, or in lanes).
 template <class S, class Result>
@@ -97,6 +144,8 @@ std::vector<Result> search_here(const S& study, const std::vector<SearchTask>& t
     });
     return out;
   }
+  if constexpr (std::is_same_v<S, Study>)
+    if (side_by_side(study, tasks)) return refine_side_by_side(study, tasks, done, searching);
   for (std::size_t i = 0; i < tasks.size(); ++i) {
     numerics::Progress p;
     if (searching) p = [&](int start, int evals, double best) { searching(i, start, evals, best); };

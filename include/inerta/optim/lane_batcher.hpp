@@ -9,7 +9,6 @@
 #include <exception>
 #include <functional>
 #include <mutex>
-#include <string>
 #include <vector>
 
 #include "inerta/optim/study.hpp"
@@ -18,26 +17,14 @@ namespace inerta::optim {
 
 class LaneBatcher {
  public:
-  /// One design asked for: its layout and values.
-  struct Design {
-    std::string layout;
-    network::Params params;
-  };
-  /// What a batch returns for one design: its value, or the exception its evaluation threw.
-  template <class T>
-  struct Outcome {
-    T value{};
-    std::exception_ptr error;
-  };
-  using Result = StudyCost;
-  /// Evaluates several designs (in order), each result independent of the others.
-  using Evaluate = std::function<std::vector<Outcome<Result>>(const std::vector<Design>&)>;
+  /// Evaluates several designs (in order), each result independent of the others (evaluate_batch).
+  using Evaluate = std::function<std::vector<BatchEvaluation>(const std::vector<network::Network>&)>;
 
   /// `searches`: how many threads will ask (each calls done() when it stops asking).
   LaneBatcher(int searches, Evaluate evaluate);
-  /// The designs' results, in order, once a batch with them has run (blocks; may run the batch).
-  /// Rethrows a design's exception.
-  std::vector<Result> ask(const std::vector<Design>& designs);
+  /// The designs' results, in order, once a batch with them has run (blocks; may run the batch). An
+  /// exception of the whole batch is each design's.
+  std::vector<BatchEvaluation> ask(const std::vector<network::Network>& designs);
   /// This thread's search asks no more (also when it fails).
   void done();
   /// Batches run so far, and the designs in them.
@@ -46,8 +33,8 @@ class LaneBatcher {
 
  private:
   struct Request {
-    const std::vector<Design>* designs;
-    std::vector<Outcome<Result>> out;
+    const std::vector<network::Network>* designs;
+    std::vector<BatchEvaluation> out;
     bool ready = false;
   };
   void run_locked(std::unique_lock<std::mutex>& lock);  // runs every pending request (the lock released meanwhile)

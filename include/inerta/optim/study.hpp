@@ -274,10 +274,13 @@ struct DesignCost {
 };
 DesignCost design_cost(const Study& study, const std::string& layout, const network::Params& params);
 
-/// design_cost of several designs of one layout, in order, through evaluate_batch (the engine's local
-/// DesignBatch). An exception other than a NumericalError is rethrown (the first design's in order).
+/// Evaluates designs in order, each result independent of the others (evaluate_batch's contract).
+using BatchEvaluator = std::function<std::vector<BatchEvaluation>(const std::vector<network::Network>&)>;
+/// design_cost of several designs of one layout, in order, through evaluate_batch or `evaluate` (the
+/// engine's local DesignBatch; refinements side by side: their LaneBatcher). An exception other than a
+/// NumericalError is rethrown (the first design's in order).
 std::vector<DesignCost> design_costs(const Study& study, const std::string& layout,
-                                     const std::vector<network::Params>& params);
+                                     const std::vector<network::Params>& params, const BatchEvaluator& evaluate = {});
 
 /// The design costs of several designs at once, in order (e.g. on a cluster: inerta.distributed);
 /// each must equal design_cost's.
