@@ -5,11 +5,16 @@
 // runs reuse it (a sweep or a study decomposes once).
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/simulate.hpp"
 #include "inerta/catenary/fe_catenary.hpp"
 #include "inerta/io/catenary_file.hpp"
 #include "inerta/io/model_file.hpp"
+#include "inerta/io/study_file.hpp"
+#include "inerta/network/layouts.hpp"
+#include "inerta/optim/study.hpp"
 
 using namespace inerta;
 
@@ -194,3 +199,72 @@ static void BM_FeSectionOne3Mass300kmhWarm(benchmark::State& state) { run_train(
 BENCHMARK(BM_FeSectionOne3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(1);
 static void BM_FeSectionTwo3Mass300kmhWarm(benchmark::State& state) { run_train(state, kFeStitched, {0, 200}); }
 BENCHMARK(BM_FeSectionTwo3Mass300kmhWarm)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Issue 50: one evaluation of studies/hsx-real-line.yaml's stock design (27 runs on the nine stitched,
+// irregular lines and its commissioning on the reference line), and 8 designs of that study evaluated
+// together (optim::evaluate_batch: lanes) against the same 8 one at a time (optim::evaluate), in one run.
+// The lines' modes are decomposed before the timing (as a study's first evaluation does once).
+namespace {
+const char* kRealLine = INERTA_SOURCE_DIR "/studies/hsx-real-line.yaml";
+
+const optim::Study& real_line_study() {
+  static const optim::Study s = [] {
+    optim::Study study = io::load_study(kRealLine);
+    std::vector<catenary::PantographOnLine> train;
+    for (double x0 : study.positions) train.push_back({study.pantograph, x0, study.contact});
+    for (const auto& c : study.catenaries) c->prepare(train);
+    if (study.reference) study.reference->prepare(train);
+    return study;
+  }();
+  return s;
+}
+
+// The stock suspension (k-c) and 7 variants within the study's bounds (inerter ≤ 1000 kg, spring ≤ 1e6 N/m,
+// damper ≤ 1e5 N·s/m), each of at most four elements.
+std::vector<network::Network> eight_designs(const optim::Study& s) {
+  using P = network::Params;
+  return {optim::default_suspension(s),
+          network::resolve("k-c", P{{"k", 0.7 * 141e3}, {"c", 1.3 * 10.44e3}}),
+          network::resolve("k-c", P{{"k", 1.3 * 141e3}, {"c", 0.7 * 10.44e3}}),
+          network::resolve("k-(b|c)", P{{"k", 141e3}, {"b", 5}, {"c", 10.44e3}}),
+          network::resolve("k-(b|c)", P{{"k", 8e4}, {"b", 20}, {"c", 5e3}}),
+          network::resolve("b|c", P{{"b", 10}, {"c", 3e3}}),
+          network::resolve("(k-c)|b", P{{"k", 1e5}, {"c", 8e3}, {"b", 2}}),
+          network::resolve("c|k", P{{"c", 6e3}, {"k", 2e3}})};
+}
+}  // namespace
+
+static void BM_RealLineEvaluation(benchmark::State& state) {
+  const optim::Study& s = real_line_study();
+  const network::Network stock = optim::default_suspension(s);
+  for (auto _ : state) {
+    const optim::StudyCost c = optim::evaluate(s, stock);
+    benchmark::DoNotOptimize(c.J);
+    state.counters["J"] = c.J;
+  }
+}
+BENCHMARK(BM_RealLineEvaluation)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+static void BM_Lockstep(benchmark::State& state) {
+  const optim::Study& s = real_line_study();
+  const std::vector<network::Network> designs = eight_designs(s);
+  using clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    const auto t0 = clock::now();
+    const std::vector<optim::BatchEvaluation> batch = optim::evaluate_batch(s, designs);
+    const auto t1 = clock::now();
+    std::vector<optim::StudyCost> alone;
+    for (const network::Network& d : designs) alone.push_back(optim::evaluate(s, d));
+    const auto t2 = clock::now();
+    for (std::size_t k = 0; k < designs.size(); ++k)
+      if (batch[k].error || batch[k].cost.J != alone[k].J) {
+        state.SkipWithError("a design's cost in the batch differs from its own evaluation");
+        return;
+      }
+    const double lockstep = std::chrono::duration<double>(t1 - t0).count(), one = std::chrono::duration<double>(t2 - t1).count();
+    state.counters["lockstep_s"] = lockstep;
+    state.counters["one_at_a_time_s"] = one;
+    state.counters["throughput_ratio"] = one / lockstep;
+  }
+}
+BENCHMARK(BM_Lockstep)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
