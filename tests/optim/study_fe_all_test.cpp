@@ -91,7 +91,9 @@ TEST(StudyFeAll, TheRefinedRankingEqualsABruteForceEvaluationOfTheSameCandidates
   ASSERT_EQ(candidates.size(), 3u);
   ASSERT_EQ(o.results.size(), 3u);
   ASSERT_EQ(o.refinements.size(), 3u);
-  // ... each refined on the FE line from its coarse optimum, and every final design evaluated there again.
+  // ... each refined on the FE line from its coarse optimum, one after another, and every final design
+  // evaluated there again (run_study refines the three side by side, their evaluations gathered into
+  // lanes by a LaneBatcher: issue 50 — the same paths, bit for bit).
   struct Row {
     std::string expression;
     double J, penalised;
