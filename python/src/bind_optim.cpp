@@ -276,14 +276,22 @@ void bind_design_costs(py::module_& m) {
   m.def("evaluate_batch", [](const Study& s, const py::list& designs) {
     // Every design read first (a wrong one raises before any run), as evaluate reads its one.
     std::vector<network::Network> nets;
+    std::size_t i = 0;
     for (const py::handle d : designs) {
       const auto design = py::reinterpret_borrow<py::object>(d);
-      if ((py::isinstance<py::tuple>(design) || py::isinstance<py::list>(design)) && py::len(design) == 2) {
-        const py::sequence t = design.cast<py::sequence>();
-        nets.push_back(net_arg(t[0], t[1]));
-      } else {
-        nets.push_back(net_arg(design, py::none()));
+      try {
+        if ((py::isinstance<py::tuple>(design) || py::isinstance<py::list>(design)) && py::len(design) == 2) {
+          const py::sequence t = design.cast<py::sequence>();
+          nets.push_back(net_arg(t[0], t[1]));
+        } else {
+          nets.push_back(net_arg(design, py::none()));
+        }
+      } catch (const py::cast_error&) {  // the design's form, not its values (those raise their own errors)
+        throw py::type_error("evaluate_batch: designs[" + std::to_string(i) + "] = " +
+                             py::repr(design).cast<std::string>() +
+                             ": expected a (layout or expression, params) pair, a layout or expression, or a Network");
       }
+      ++i;
     }
     const std::vector<optim::BatchEvaluation> got = run(py::none(), [&](Call&) { return optim::evaluate_batch(s, nets); });
     std::vector<optim::StudyCost> costs;

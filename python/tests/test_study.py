@@ -248,6 +248,10 @@ layouts: [S2-5]
     with pytest.raises(inerta.ModelError) as batch:
         inerta.evaluate_batch(s, [("k", {"k": 1e4}), ("k", {"k": float("inf")}), ("c", {"c": 1e3})])
     assert str(batch.value) == str(alone.value)
+    # A design of the wrong form names its place in the list and the forms expected, before any run.
+    for bad in [("k",), 42]:
+        with pytest.raises(TypeError, match=r"designs\[1\] = .*expected a \(layout or expression, params\) pair"):
+            inerta.evaluate_batch(s, [("k", {"k": 1e4}), bad])
 
 
 def test_evaluate_batch_on_the_periodic_path(study):

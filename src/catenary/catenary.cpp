@@ -45,6 +45,7 @@ std::unique_ptr<CoupledLanes> Catenary::couple_lanes(const std::vector<std::vect
   if (trains.empty()) throw InvalidArgument("couple_lanes: no train given");
   std::vector<std::vector<PantographOnLine>> run;
   for (std::size_t i = 0; i < trains.size(); ++i) {
+    run.push_back(running(trains[i], speed));  // couple's checks first (a NaN x0 is named as such)
     if (trains[i].size() != trains.front().size())
       throw InvalidArgument(fmt::format("couple_lanes: train {} has {} pantograph(s), train 1 has {}", i + 1,
                                         trains[i].size(), trains.front().size()));
@@ -53,7 +54,6 @@ std::unique_ptr<CoupledLanes> Catenary::couple_lanes(const std::vector<std::vect
         throw InvalidArgument(fmt::format("couple_lanes: pantograph {} of train {} is at x0 = {:g} m, of train 1 at {:g} m; "
                                           "lanes run at the same positions",
                                           k + 1, i + 1, trains[i][k].x0, trains.front()[k].x0));
-    run.push_back(running(trains[i], speed));
   }
   return make_lanes(run, speed);
 }

@@ -4,6 +4,7 @@
 // direct-solve lines, for the 3-mass and the HSX; a lane that fails stops alone.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -139,6 +140,13 @@ TEST(FeLanes, TrainsAtOtherPlacesAreRefusedAndALaneAloneCannotAdvance) {
   const auto panto = io::load_pantograph(kModels + "pantograph-3mass.yaml");
   EXPECT_THROW((void)c.catenary->couple_lanes({{{panto, 0.0, kPenalty}}, {{panto, 10.0, kPenalty}}}, 70.0), InvalidArgument);
   EXPECT_THROW((void)c.catenary->couple_lanes({}, 70.0), InvalidArgument);
+  try {  // a NaN position is named as couple names it, not as a mismatch between trains
+    (void)c.catenary->couple_lanes({{{panto, NAN, kPenalty}}, {{panto, NAN, kPenalty}}}, 70.0);
+    ADD_FAILURE() << "a NaN x0 was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("position x0 = nan"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)c.catenary->couple_lanes({{{panto, 0.0, kPenalty}}}, -70.0), InvalidArgument);
   auto L = c.catenary->couple_lanes({{{panto, 0.0, kPenalty}}, {{panto, 0.0, kPenalty}}}, 70.0);
   L->lane(0).equilibrate();
   EXPECT_THROW(L->lane(0).advance(0.1, 1e-3, kOptions, {}), std::logic_error);
