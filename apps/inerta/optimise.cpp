@@ -142,7 +142,7 @@ namespace {
 struct OptimiseArgs {
   std::string study, out;
   int map = 15;
-  bool no_plots = false, force = false;
+  bool no_plots = false, force = false, no_early_stops = false;
   int workers = 0;        ///< > 0: a local Dask cluster of this many processes
   std::string scheduler;  ///< a Dask scheduler's address
   double max_seconds = 0;  ///< > 0: refuse a study whose estimate (at its limit of evaluations) is above
@@ -161,6 +161,7 @@ int run_distributed(const OptimiseArgs& a) {
   if (!a.out.empty()) args.insert(args.end(), {"--out", a.out});
   if (a.force) args.push_back("--force");
   if (a.no_plots) args.push_back("--no-plots");
+  if (a.no_early_stops) args.push_back("--no-early-stops");
   const char* old = std::getenv("PYTHONPATH");
   const std::string path = inerta::cli::python_package_dir() + (old && *old ? std::string(":") + old : std::string());
   ::setenv("PYTHONPATH", path.c_str(), 1);
@@ -296,6 +297,11 @@ class Printer : public optim::StudyEvents {
         fmt::print("  {:<44} {:>13.4f} {:>13}  ({})\n", e.reduced, e.J, "failed", c.failure);
         continue;
       }
+      if (c.stopped) {  // early stops: behind the best, its remaining runs skipped
+        fmt::print("  {:<44} {:>13.4f} {:>13} {:>9} {:>6}  stopped: J2 ≥ {:.4f} N{}\n", e.reduced, e.J, "-", "-", c.periodic_rank,
+                   c.time.J, c.time.feasible ? "" : ", outside: " + c.time.violation);
+        continue;
+      }
       const double J = c.time.J, settle = c.settling_spans;
       const bool slow = settle > analysis::RunOptions{}.max_spans;
       fmt::print("  {:<44} {:>13.4f} {:>13.4f} {:>+8.2f}% {:>6} {:>9}{}\n", e.reduced, e.J, J, 100 * (e.J - J) / J,
@@ -320,9 +326,13 @@ class Printer : public optim::StudyEvents {
       fmt::print("  {:>4} {:<44} {:>10} {:>6} {:>10}  {}\n", "rank", "network", "coarse", "c.rank", J, "");
       for (std::size_t k = 0; k < o.screened.size(); ++k) {
         const optim::Screened& c = o.screened[k];
-        fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10.4f}  {}{}\n", k + 1, o.entries[c.entry].reduced, o.entries[c.entry].J,
-                   c.coarse_rank, c.cost.J, c.refined ? "refined" : "",
-                   !c.failure.empty() ? "failed: " + c.failure : c.cost.feasible ? "" : "; outside: " + c.cost.violation);
+        if (c.stopped)  // early stops: it could no longer be among the refined
+          fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10}  stopped: {} ≥ {:.4f}{}\n", k + 1, o.entries[c.entry].reduced,
+                     o.entries[c.entry].J, c.coarse_rank, "-", J, c.cost.J, c.cost.feasible ? "" : ", outside: " + c.cost.violation);
+        else
+          fmt::print("  {:>4} {:<44} {:>10.4f} {:>6} {:>10.4f}  {}{}\n", k + 1, o.entries[c.entry].reduced, o.entries[c.entry].J,
+                     c.coarse_rank, c.cost.J, c.refined ? "refined" : "",
+                     !c.failure.empty() ? "failed: " + c.failure : c.cost.feasible ? "" : "; outside: " + c.cost.violation);
       }
     }
     fmt::print("\nthe refined networks{}, ranked by this study's {} (default {:.4f}{}):\n",
@@ -439,6 +449,7 @@ int cmd_optimise(const OptimiseArgs& a) {
   optim::StudyOptions options;
   options.report = !a.out.empty();  // the figures' data: what --out writes
   options.report_options.map_size = a.map;
+  options.early_stops = !a.no_early_stops;
   Printer printer(study, tty);
   const optim::StudyOutcome o = optim::run_study(study, options, &printer);
   if (!a.out.empty()) {
@@ -504,6 +515,9 @@ Command add_optimise_command(CLI::App& app) {
                   "Refuse (exit 2) a study whose estimate — every stage: the search or coarse search, the refinements at "
                   "their limit — is above S seconds (default: no limit; the estimate is printed beyond 10 s)")
       ->check(number_rule(analysis::max_seconds_rule));
+  opt->add_flag("--no-early-stops", oa.no_early_stops,
+                "Evaluate every time-domain re-check and screened design in full (the early stops are exact: the same "
+                "winner and networks refined; a stopped design's J is a lower bound)");
   opt->add_flag("--force", oa.force,
                 "Use an --out folder that is not empty: the files a study writes there are removed first");
   return {opt, [] { return cmd_optimise(oa); }};

@@ -55,7 +55,7 @@ def sweep(model, catenary, speeds, *, client=None, **kwargs):
 sweep.__doc__ += "\n\nThe library's sweep:\n" + (_inerta.sweep.__doc__ or "")
 
 
-def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, force=False, stats=None):
+def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, force=False, stats=None, early_stops=True):
     """Runs a whole design study in one call (the library's study engine, optim::run_study; docs/python.md):
     the default design, the searches, a ``layouts: all`` study's time-domain re-checks, the verified best
     design, the admittance bounds and, with ``out``, the report's data and every file ``inerta optimise
@@ -67,7 +67,9 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
     the outcome equal to the serial run's; ``checkpoint`` (default ``out/checkpoint.pkl``) keeps what
     finished, and the same call again resumes there. progress(event, *values): see run_study. force:
     replace the result files in ``out`` (and start afresh). stats: a dict that receives the Dask tasks
-    sent ("designs_sent", "searches_sent", "checks_sent")."""
+    sent ("designs_sent", "searches_sent", "checks_sent"). early_stops: stop the re-checks and a screen's
+    evaluations once they cannot win (exact: the same winner and networks refined; a stopped design's J is a
+    lower bound, ``stopped`` set); False evaluates every one in full."""
     import os
 
     # The arguments checked here, by name (issue 52), not deep inside a running study.
@@ -78,6 +80,8 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
         raise TypeError(f"optimise: study: expected a Study, a ModelStudy or a study file's path, got {type(study).__name__}")
     if progress is not None and not callable(progress):
         raise TypeError(f"optimise: progress: expected a callable progress(event, *values), got {type(progress).__name__}")
+    if not isinstance(early_stops, bool):
+        raise TypeError(f"optimise: early_stops: expected True or False, got {type(early_stops).__name__}")
     if out is not None and not isinstance(out, (str, os.PathLike)):
         raise TypeError(f"optimise: out: expected a folder's path, got {type(out).__name__}")
     if client is None:
@@ -106,7 +110,7 @@ def optimise(study, *, out=None, client=None, progress=None, checkpoint=None, fo
         resuming = executor is not None and checkpoint is not None and os.path.exists(checkpoint)
         if not resuming:  # a folder with its study's checkpoint is this study's: resume there
             _inerta.prepare_output_folder(out, _inerta.study_output_names(), force)
-    outcome = _inerta.run_study(study, _inerta.StudyOptions(report=out is not None), progress=progress,
+    outcome = _inerta.run_study(study, _inerta.StudyOptions(report=out is not None, early_stops=early_stops), progress=progress,
                                 executor=executor)
     if out is not None:
         _inerta.write_study_outcome(outcome, out)

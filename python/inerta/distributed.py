@@ -237,7 +237,7 @@ class DaskExecutor(_inerta.StudyExecutor):
         return results
 
     def check(self, study, tasks):
-        keys = [(t.layout, _params_key(t.values), t.time) for t in tasks]
+        keys = [(t.layout, _params_key(t.values), t.time, t.stop_above) for t in tasks]
         missing = [i for i, k in enumerate(keys) if k not in self.checks]
         futures = [self.client.submit(_check_task, self.path, self.stamp, tasks[i], pure=False) for i in missing]
         self.stats["checks_sent"] += len(futures)
@@ -249,11 +249,12 @@ class DaskExecutor(_inerta.StudyExecutor):
         return [self.checks[k] for k in keys]
 
 
-def optimise(study, client, *, out=None, checkpoint=None, progress=None, stats=None, force=False):
+def optimise(study, client, *, out=None, checkpoint=None, progress=None, stats=None, force=False, early_stops=True):
     """inerta.optimise(study, client=client, ...): the study engine with its evaluations on the cluster."""
     from . import optimise as _optimise
 
-    return _optimise(study, out=out, client=client, progress=progress, checkpoint=checkpoint, force=force, stats=stats)
+    return _optimise(study, out=out, client=client, progress=progress, checkpoint=checkpoint, force=force, stats=stats,
+                     early_stops=early_stops)
 
 
 def _j2_progress(study):
@@ -304,8 +305,9 @@ def _j2_progress(study):
                 print("  time-domain re-check (ranked by the time-domain J2):")
                 for c in o.rechecks:
                     e = o.entries[c.entry]
-                    print(f"    {e.reduced:<44} periodic {e.J:.4f} N, time "
-                          + (f"{c.time.J:.4f} N" if not c.failure else f"failed ({c.failure})"))
+                    time = (f"failed ({c.failure})" if c.failure else f"stopped: J2 ≥ {c.time.J:.4f} N" if c.stopped
+                            else f"{c.time.J:.4f} N")
+                    print(f"    {e.reduced:<44} periodic {e.J:.4f} N, time {time}")
             else:
                 print(_inerta.study_table(study, o.default_cost, o.results), end="")
             print(f"default suspension {objective} = {o.default_cost.J:.4f}{unit} at {o.default_cost.speed * 3.6:.0f} km/h; "
@@ -380,6 +382,8 @@ def _main(argv=None):
     o.add_argument("--force", action="store_true", help="replace the result files in --out")
     o.add_argument("--checkpoint", default=None, help="default: OUT/checkpoint.pkl with --out")
     o.add_argument("--no-plots", action="store_true")
+    o.add_argument("--no-early-stops", action="store_true",
+                   help="evaluate every re-check and screened design in full (the early stops are exact)")
     args = p.parse_args(argv)
     if args.workers is not None and not 1 <= args.workers <= 1024:  # the CLI's range (inerta optimise --workers)
         p.error(f"--workers: {args.workers} is out of range; expected 1 ... 1024")
@@ -396,7 +400,8 @@ def _main(argv=None):
 
         report = _model_progress(study) if isinstance(study, _inerta.ModelStudy) else _j2_progress(study)
         out = args.out or None
-        o = optimise(args.study, client, out=out, checkpoint=checkpoint, progress=report, force=args.force)
+        o = optimise(args.study, client, out=out, checkpoint=checkpoint, progress=report, force=args.force,
+                     early_stops=not args.no_early_stops)
     finally:
         client.close()
         if cluster is not None:

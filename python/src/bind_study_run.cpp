@@ -1,5 +1,7 @@
 // The study engine (optim/study_run.hpp): run_study with progress events, the executor interface that
 // inerta.distributed implements with a Dask client, the outcome and its files.
+#include <cmath>
+
 #include <pybind11/functional.h>
 
 #include "common.hpp"
@@ -98,23 +100,30 @@ static void bind_study_tasks(py::module_& m) {
   py::class_<optim::CheckTask>(m, "CheckTask",
                                "One design to evaluate: the default suspension (layout '') or a layout's values, by the "
                                "study's method or (time) in the time domain.")
-      .def(py::init([](std::string layout, network::Params values, bool time) {
-             return optim::CheckTask{std::move(layout), std::move(values), time};
+      .def(py::init([](std::string layout, network::Params values, bool time, double stop_above) {
+             return optim::CheckTask{std::move(layout), std::move(values), time, stop_above};
            }),
-           py::arg("layout") = "", py::arg("values") = network::Params{}, py::arg("time") = false)
+           py::arg("layout") = "", py::arg("values") = network::Params{}, py::arg("time") = false,
+           py::arg("stop_above") = INFINITY)
       .def_readonly("layout", &optim::CheckTask::layout)
       .def_readonly("values", &optim::CheckTask::values)
       .def_readonly("time", &optim::CheckTask::time)
-      .def(py::pickle([](const optim::CheckTask& t) { return py::make_tuple(t.layout, t.values, t.time); },
+      .def_readonly("stop_above", &optim::CheckTask::stop_above,
+                    "a feasible incumbent's J: a time-domain evaluation stops once the design ranks behind it (inf: none)")
+      .def(py::pickle([](const optim::CheckTask& t) { return py::make_tuple(t.layout, t.values, t.time, t.stop_above); },
                       [](const py::tuple& t) {
-                        return optim::CheckTask{t[0].cast<std::string>(), t[1].cast<network::Params>(), t[2].cast<bool>()};
+                        return optim::CheckTask{t[0].cast<std::string>(), t[1].cast<network::Params>(), t[2].cast<bool>(),
+                                                t.size() > 3 ? t[3].cast<double>() : INFINITY};
                       }));
   py::class_<optim::CheckResult>(m, "CheckResult", "A design's cost, or why its evaluation failed.")
       .def_readonly("cost", &optim::CheckResult::cost)
       .def_readonly("failure", &optim::CheckResult::failure, "a numerical failure's message, or ''")
-      .def(py::pickle([](const optim::CheckResult& r) { return py::make_tuple(r.cost, r.failure); },
+      .def_readonly("stopped", &optim::CheckResult::stopped, "stopped early behind the incumbent: cost.J is a lower bound")
+      .def(py::pickle([](const optim::CheckResult& r) { return py::make_tuple(r.cost, r.failure, r.stopped); },
                       [](const py::tuple& t) {
-                        return optim::CheckResult{t[0].cast<optim::StudyCost>(), t[1].cast<std::string>()};
+                        // a checkpoint written before the early stops: (cost, failure)
+                        return optim::CheckResult{t[0].cast<optim::StudyCost>(), t[1].cast<std::string>(),
+                                                  t.size() > 2 && t[2].cast<bool>()};
                       }));
   m.def("run_search", [](const optim::Study& s, const optim::SearchTask& task, const py::object& batch) {
     optim::DesignBatch designs;
@@ -175,23 +184,28 @@ static void bind_study_tasks(py::module_& m) {
 void bind_study_run(py::module_& m) {
   bind_study_tasks(m);
   py::class_<optim::StudyOptions>(m, "StudyOptions", "What run_study computes besides the searches.")
-      .def(py::init([](bool report, const py::object& ro, int rechecks) {
+      .def(py::init([](bool report, const py::object& ro, int rechecks, bool early_stops) {
              optim::StudyOptions o;
              o.report = report;
              if (!ro.is_none()) o.report_options = ro.cast<optim::ReportOptions>();
              o.rechecks = rechecks;
+             o.early_stops = early_stops;
              return o;
            }),
-           py::kw_only(), py::arg("report") = false, py::arg("report_options") = py::none(), py::arg("rechecks") = 5)
+           py::kw_only(), py::arg("report") = false, py::arg("report_options") = py::none(), py::arg("rechecks") = 5,
+           py::arg("early_stops") = true)
       .def_readwrite("report", &optim::StudyOptions::report, "compute the report's data (what out= writes)")
       .def_readwrite("report_options", &optim::StudyOptions::report_options)
-      .def_readwrite("rechecks", &optim::StudyOptions::rechecks, "layouts: all: designs re-checked in the time domain");
+      .def_readwrite("rechecks", &optim::StudyOptions::rechecks, "layouts: all: designs re-checked in the time domain")
+      .def_readwrite("early_stops", &optim::StudyOptions::early_stops,
+                     "stop the re-checks and a screen's evaluations that can no longer win (exact; stopped: J a lower bound)");
   py::class_<optim::Recheck>(m, "Recheck", "A layouts: all design re-checked in the time domain.")
       .def_readonly("entry", &optim::Recheck::entry, "index in StudyOutcome.entries")
       .def_readonly("periodic_rank", &optim::Recheck::periodic_rank)
       .def_readonly("time", &optim::Recheck::time, "its J2 in the time domain")
       .def_readonly("failure", &optim::Recheck::failure)
-      .def_readonly("settling_spans", &optim::Recheck::settling_spans);
+      .def_readonly("settling_spans", &optim::Recheck::settling_spans)
+      .def_readonly("stopped", &optim::Recheck::stopped, "stopped early behind the best: time.J is a lower bound");
   py::class_<optim::Refinement>(m, "Refinement", "Multi-fidelity layouts: all: where a refined network came from.")
       .def_readonly("entry", &optim::Refinement::entry, "index in StudyOutcome.entries (the coarse search's)")
       .def_readonly("coarse_rank", &optim::Refinement::coarse_rank,
@@ -202,7 +216,8 @@ void bind_study_run(py::module_& m) {
       .def_readonly("coarse_rank", &optim::Screened::coarse_rank, "its rank among the screened by the coarse search")
       .def_readonly("cost", &optim::Screened::cost, "on this study at its coarse optimum")
       .def_readonly("failure", &optim::Screened::failure)
-      .def_readonly("refined", &optim::Screened::refined);
+      .def_readonly("refined", &optim::Screened::refined)
+      .def_readonly("stopped", &optim::Screened::stopped, "stopped early behind the refined: cost.J is a lower bound");
   py::class_<optim::BestDesign>(m, "BestDesign", "The design a study recommends.")
       .def_readonly("index", &optim::BestDesign::index, "in StudyOutcome.results (a model study: model.results)")
       .def_readonly("layout", &optim::BestDesign::layout)

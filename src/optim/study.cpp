@@ -218,8 +218,12 @@ std::vector<BatchEvaluation> evaluate_batch(const Study& study, const std::vecto
   return out;
 }
 
-std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets) {
-  const std::size_t n = nets.size(), nc = study.catenaries.size();
+std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets,
+                                                 const std::vector<double>& stop_above) {
+  const std::size_t n = nets.size(), nc = study.catenaries.size(), ns = study.speeds.size();
+  if (!stop_above.empty() && stop_above.size() != n)
+    throw InvalidArgument(fmt::format("evaluate_time_batch: {} stop bounds for {} designs", stop_above.size(), n));
+  auto bound = [&](std::size_t k) { return stop_above.empty() ? INFINITY : stop_above[k]; };
   std::vector<BatchEvaluation> out(n);
   std::vector<std::optional<DesignPantographs>> designs(n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {  // commissioning: each design on its own
@@ -232,26 +236,85 @@ std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::
   std::vector<std::size_t> live;
   for (std::size_t k = 0; k < n; ++k)
     if (designs[k]) live.push_back(k);
-  // Chunks of lane_chunk designs in order; every (chunk, catenary) pair's lanes in parallel.
-  const std::size_t chunks = (live.size() + lane_chunk - 1) / lane_chunk;
-  std::vector<std::vector<analysis::LaneSweep>> got(chunks * nc);
-  tbb::parallel_for(std::size_t{0}, chunks * nc, [&](std::size_t task) {
-    const std::size_t c = task / nc, i = task % nc;
-    std::vector<std::vector<catenary::PantographOnLine>> trains;
-    for (std::size_t j = c * lane_chunk; j < std::min(live.size(), (c + 1) * lane_chunk); ++j)
-      trains.push_back(train_of(study, *designs[live[j]], i));
-    got[task] = analysis::sweep_lanes(trains, *study.catenaries[i], study.speeds, run_options(study));
-  });
-  for (std::size_t j = 0; j < live.size(); ++j) {
-    const std::size_t k = live[j], c = j / lane_chunk, lane = j % lane_chunk;
+  // The rounds (speed indices): every speed at once; with early stops one speed a round, the fastest first.
+  std::vector<std::size_t> order(ns);
+  for (std::size_t s = 0; s < ns; ++s) order[s] = s;
+  std::vector<std::vector<std::size_t>> rounds{order};
+  if (std::any_of(live.begin(), live.end(), [&](std::size_t k) { return std::isfinite(bound(k)); })) {
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return study.speeds[a] > study.speeds[b]; });
+    rounds.clear();
+    for (std::size_t s : order) rounds.push_back({s});
+  }
+  // Per design and catenary: each speed's result, and the exception of its first failing speed (as sweep).
+  struct Runs {
+    std::vector<std::optional<analysis::SpeedResult>> at;
+    std::exception_ptr error;
+    std::size_t error_at = 0;
+  };
+  std::vector<std::vector<Runs>> runs(n, std::vector<Runs>(nc));
+  for (auto& d : runs)
+    for (Runs& r : d) r.at.resize(ns);
+  auto failed = [&](std::size_t k) {
+    return std::any_of(runs[k].begin(), runs[k].end(), [](const Runs& r) { return r.error != nullptr; });
+  };
+  // The runs done so far in the study's order (moved out; put_back returns them).
+  auto take = [&](std::size_t k) {
     std::vector<std::vector<analysis::SpeedResult>> sweeps(nc);
-    for (std::size_t i = 0; i < nc && !out[k].error; ++i) {  // the first catenary's exception, as evaluate_time
-      analysis::LaneSweep& s = got[c * nc + i][lane];
-      out[k].error = s.error;
-      sweeps[i] = std::move(s.results);
+    for (std::size_t i = 0; i < nc; ++i)
+      for (auto& x : runs[k][i].at)
+        if (x) sweeps[i].push_back(std::move(*x));
+    return sweeps;
+  };
+  auto put_back = [&](std::size_t k, std::vector<std::vector<analysis::SpeedResult>>& sweeps) {
+    for (std::size_t i = 0; i < nc; ++i) {
+      std::size_t q = 0;
+      for (auto& x : runs[k][i].at)
+        if (x) *x = std::move(sweeps[i][q++]);
     }
+  };
+  for (std::size_t round = 0; round < rounds.size(); ++round) {
+    std::vector<std::size_t> run;
+    for (std::size_t k : live)
+      if (!out[k].stopped) run.push_back(k);
+    if (run.empty()) break;
+    std::vector<double> speeds;
+    for (std::size_t s : rounds[round]) speeds.push_back(study.speeds[s]);
+    // Chunks of lane_chunk designs in order; every (chunk, catenary) pair's lanes in parallel.
+    const std::size_t chunks = (run.size() + lane_chunk - 1) / lane_chunk;
+    std::vector<std::vector<analysis::LaneSweep>> got(chunks * nc);
+    tbb::parallel_for(std::size_t{0}, chunks * nc, [&](std::size_t task) {
+      const std::size_t c = task / nc, i = task % nc;
+      std::vector<std::vector<catenary::PantographOnLine>> trains;
+      for (std::size_t j = c * lane_chunk; j < std::min(run.size(), (c + 1) * lane_chunk); ++j)
+        trains.push_back(train_of(study, *designs[run[j]], i));
+      got[task] = analysis::sweep_lanes(trains, *study.catenaries[i], speeds, run_options(study));
+    });
+    const std::size_t first = *std::min_element(rounds[round].begin(), rounds[round].end());
+    for (std::size_t j = 0; j < run.size(); ++j)
+      for (std::size_t i = 0; i < nc; ++i) {
+        analysis::LaneSweep& s = got[(j / lane_chunk) * nc + i][j % lane_chunk];
+        Runs& r = runs[run[j]][i];
+        if (s.error) {
+          if (!r.error || first < r.error_at) r.error = s.error, r.error_at = first;
+          continue;
+        }
+        for (std::size_t q = 0; q < speeds.size(); ++q) r.at[rounds[round][q]] = std::move(s.results[q]);
+      }
+    if (round + 1 == rounds.size()) break;
+    for (std::size_t k : run) {  // the stop rule: J over the runs done is a lower bound of J
+      if (!std::isfinite(bound(k)) || failed(k)) continue;
+      auto sweeps = take(k);
+      StudyCost c = cost_of(study, sweeps, designs[k]->commissioning);
+      put_back(k, sweeps);
+      if (!c.feasible || !(c.J <= bound(k))) out[k].cost = std::move(c), out[k].stopped = true;
+    }
+  }
+  for (std::size_t k : live) {
+    if (out[k].stopped) continue;
+    for (std::size_t i = 0; i < nc && !out[k].error; ++i) out[k].error = runs[k][i].error;  // the first catenary's
     if (out[k].error) continue;
     try {
+      auto sweeps = take(k);
       out[k].cost = cost_of(study, sweeps, designs[k]->commissioning);
     } catch (...) {
       out[k].error = std::current_exception();

@@ -15,23 +15,26 @@
 namespace inerta::optim {
 
 std::string StudyOutcome::recheck_csv() const {
-  std::string csv = "network,reduced,J2_periodic,J2_time,v_kmh_time,periodic_rank,settling_spans\n";
+  // stopped: the time-domain run stopped behind the best (early stops): J2_time is a lower bound.
+  std::string csv = "network,reduced,J2_periodic,J2_time,v_kmh_time,periodic_rank,settling_spans,stopped\n";
   for (const Recheck& c : rechecks) {
     if (!c.failure.empty()) continue;
     const auto& e = entries[c.entry];
-    csv += fmt::format("\"{}\",\"{}\",{:.10g},{:.10g},{:.6g},{},{:.6g}\n", e.expression, e.reduced, e.J, c.time.J,
-                       c.time.speed * 3.6, c.periodic_rank, c.settling_spans);
+    csv += fmt::format("\"{}\",\"{}\",{:.10g},{:.10g},{:.6g},{},{:.6g},{}\n", e.expression, e.reduced, e.J, c.time.J,
+                       c.time.speed * 3.6, c.periodic_rank, c.settling_spans, c.stopped ? 1 : 0);
   }
   return csv;
 }
 
 std::string StudyOutcome::screened_csv() const {
-  std::string csv = "screen_rank,network,reduced,coarse_rank,J_coarse,J,feasible,violation,refined,failure\n";
+  // stopped: the evaluation stopped once it could not be among the refined (early stops): J is a lower bound.
+  std::string csv = "screen_rank,network,reduced,coarse_rank,J_coarse,J,feasible,violation,refined,failure,stopped\n";
   for (std::size_t k = 0; k < screened.size(); ++k) {
     const Screened& c = screened[k];
     const StructureEntry& e = entries[c.entry];
-    csv += fmt::format("{},\"{}\",\"{}\",{},{:.10g},{:.10g},{},\"{}\",{},\"{}\"\n", k + 1, e.expression, e.reduced, c.coarse_rank,
-                       e.J, c.cost.J, c.cost.feasible ? 1 : 0, c.cost.violation, c.refined ? 1 : 0, c.failure);
+    csv += fmt::format("{},\"{}\",\"{}\",{},{:.10g},{:.10g},{},\"{}\",{},\"{}\",{}\n", k + 1, e.expression, e.reduced,
+                       c.coarse_rank, e.J, c.cost.J, c.cost.feasible ? 1 : 0, c.cost.violation, c.refined ? 1 : 0, c.failure,
+                       c.stopped ? 1 : 0);
   }
   return csv;
 }
@@ -73,9 +76,27 @@ namespace {
 
 class NoEvents : public StudyEvents {};
 
+// Checks with exact early stops (issue 50): the first `lead` tasks in full; if each is feasible, the worst of
+// their costs is the incumbent the others must beat (CheckTask::stop_above), else the others run in full too.
+// Whichever `lead` designs rank first among all, the stopped ones rank behind every one of the lead.
+std::vector<CheckResult> checks_behind(const Study& study, const std::vector<CheckTask>& tasks, std::size_t lead,
+                                       StudyExecutor& ex) {
+  if (lead == 0 || lead >= tasks.size()) return ex.check(study, tasks);
+  std::vector<CheckResult> out = ex.check(study, std::vector<CheckTask>(tasks.begin(), tasks.begin() + static_cast<std::ptrdiff_t>(lead)));
+  double bound = -INFINITY;
+  for (const CheckResult& c : out)
+    bound = c.failure.empty() && c.cost.feasible && std::isfinite(c.cost.J) ? std::max(bound, c.cost.J) : INFINITY;
+  std::vector<CheckTask> rest(tasks.begin() + static_cast<std::ptrdiff_t>(lead), tasks.end());
+  for (CheckTask& t : rest) t.stop_above = bound;
+  for (CheckResult& c : ex.check(study, rest)) out.push_back(std::move(c));
+  return out;
+}
+
 // The best few distinct feasible designs of the fast path, re-checked in the time domain (the reference),
 // ranked by their time-domain J2 (issue 24: the fast path can be off by a few per cent).
-std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntry>& entries, int count, StudyExecutor& ex) {
+// Early stops: the fast path's best first, in full (the incumbent); the others stop once they rank behind it.
+std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntry>& entries, int count, bool early_stops,
+                             StudyExecutor& ex) {
   std::vector<std::string> seen;
   std::vector<Recheck> out;
   std::vector<CheckTask> tasks;
@@ -89,9 +110,9 @@ std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntr
     out.push_back(c);
     tasks.push_back({e.expression, e.values, true});
   }
-  const std::vector<CheckResult> checked = ex.check(study, tasks);
+  const std::vector<CheckResult> checked = checks_behind(study, tasks, early_stops ? 1 : tasks.size(), ex);
   for (std::size_t k = 0; k < out.size(); ++k) {
-    out[k].time = checked[k].cost, out[k].failure = checked[k].failure;
+    out[k].time = checked[k].cost, out[k].failure = checked[k].failure, out[k].stopped = checked[k].stopped;
     if (!out[k].failure.empty()) continue;
     // The slowest free vibration (Floquet multiplier of the periodic path): a time-domain run shorter
     // than its decay measures the transient's beating, not the steady state (issue 24 item 4).
@@ -101,7 +122,10 @@ std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntr
     } catch (const NumericalError&) {
     }
   }
-  std::stable_sort(out.begin(), out.end(), [](const Recheck& x, const Recheck& y) { return x.time.J < y.time.J; });
+  // By the time domain's penalised cost (within the limits first), the stopped behind the others.
+  std::stable_sort(out.begin(), out.end(), [](const Recheck& x, const Recheck& y) {
+    return x.stopped != y.stopped ? y.stopped : x.time.penalised() < y.time.penalised();
+  });
   return out;
 }
 
@@ -159,7 +183,8 @@ LayoutResult stock_result(const network::Network& baseline, const StudyCost& cos
 // Multi-fidelity `layouts: all`: the study's refine_networks best distinct reduced networks of the coarse
 // search (feasible first, by the coarse ranking), each refined here from its coarse optimum; ranked by the
 // cost here (penalised: within the limits first), ties by the coarse rank. Sets o.refinements.
-std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, StudyExecutor& ex, StudyEvents& events) {
+std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, bool early_stops, StudyExecutor& ex,
+                                          StudyEvents& events) {
   // The candidates: the best distinct reduced networks of the coarse search (screen of them, or
   // refine_networks without a screen), each at its coarse optimum.
   struct Candidate {
@@ -190,15 +215,18 @@ std::vector<LayoutResult> refine_networks(const Study& study, StudyOutcome& o, S
     std::vector<CheckTask> checks;
     for (const Candidate& c : cands) entries.push_back(c.entry), checks.push_back({c.layout, c.values, false});
     events.screening(entries);
-    const std::vector<CheckResult> got = ex.check(study, checks);
+    // Early stops: the first best_networks in full; a later candidate stops once it cannot be among the refined.
+    const auto m = static_cast<std::size_t>(study.refine_networks);
+    const std::vector<CheckResult> got = checks_behind(study, checks, early_stops ? m : checks.size(), ex);
     std::stable_sort(pick.begin(), pick.end(), [&](std::size_t a, std::size_t b) {
-      return got[a].cost.penalised() < got[b].cost.penalised();
+      return got[a].stopped != got[b].stopped ? got[b].stopped : got[a].cost.penalised() < got[b].cost.penalised();
     });
     for (std::size_t r = 0; r < pick.size(); ++r) {
       const std::size_t k = pick[r];
       screen_rank[k] = static_cast<int>(r) + 1;
       Screened sc;
       sc.entry = cands[k].entry, sc.coarse_rank = static_cast<int>(k) + 1, sc.cost = got[k].cost, sc.failure = got[k].failure;
+      sc.stopped = got[k].stopped;
       sc.refined = r < static_cast<std::size_t>(study.refine_networks);
       o.screened.push_back(std::move(sc));
     }
@@ -322,7 +350,7 @@ StudyOutcome run_engine(const S& study, const StudyOptions& options, StudyEvents
         [&](const StructureProgress& p) { events.network(p); });
     o.order = ranking(entries);
     if constexpr (j2)
-      if (coarse) results = refine_networks(study, o, ex, events);  // the best distinct reduced networks refined here
+      if (coarse) results = refine_networks(study, o, options.early_stops, ex, events);  // the best distinct reduced networks refined here
     if (!coarse)
       for (std::size_t i : o.order) results.push_back(all[i]);  // ranked: results.csv best first
   } else if constexpr (j2) {  // independent searches
@@ -350,7 +378,7 @@ StudyOutcome run_engine(const S& study, const StudyOptions& options, StudyEvents
   int verified = -1;
   if constexpr (j2) {
     if (study.all && !study.coarse) {
-      o.rechecks = recheck(study, o.entries, options.rechecks, ex);
+      o.rechecks = recheck(study, o.entries, options.rechecks, options.early_stops, ex);
       if (!o.rechecks.empty() && o.rechecks.front().failure.empty())  // the time domain has the last word
         verified = static_cast<int>(std::find(o.order.begin(), o.order.end(), o.rechecks.front().entry) - o.order.begin());
     }

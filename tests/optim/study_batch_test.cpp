@@ -4,6 +4,7 @@
 // the periodic fast path and the time domain on a lumped line one after another.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -215,6 +216,59 @@ TEST(StudyBatch, ThePeriodicPathAndTheTimeDomainOnALumpedLineGiveEachDesignItsOw
   for (std::size_t k = 0; k < few.size(); ++k)
     expect_same(time[k], alone([&] { return optim::evaluate_time(s, few[k]); }), "time design " + std::to_string(k));
   EXPECT_TRUE(time[2].error);  // rigid
+}
+
+TEST(StudyBatch, EarlyStopsSkipOnlyDesignsThatCannotBeatTheIncumbentAndLeaveTheOthersBitForBit) {
+  // Early stops (issue 50 item 2): with a bound (a feasible incumbent's J) the speeds run in rounds, the fastest
+  // first; a design is stopped once its J over the runs done exceeds the bound. A stopped design is worse than the
+  // bound in full, its J a lower bound from the fastest speed's runs alone; every other design's result is
+  // evaluate's bit for bit (a failing design's exception too).
+  const optim::Study s = io::load_study(write_study("batch_stops.yaml", kFe));
+  ASSERT_EQ(s.speeds.size(), 2u);
+  const std::vector<network::Network> d = designs(s, false);
+  std::vector<Alone> full;
+  std::vector<double> feasible_J;
+  for (const network::Network& n : d) {
+    full.push_back(alone([&] { return optim::evaluate(s, n); }));
+    if (full.back().message.empty() && full.back().cost.feasible) feasible_J.push_back(full.back().cost.J);
+  }
+  ASSERT_GE(feasible_J.size(), 3u);
+  std::sort(feasible_J.begin(), feasible_J.end());
+  const double bound = feasible_J[feasible_J.size() / 2];  // the median: designs on both sides of it
+  const std::vector<optim::BatchEvaluation> got = optim::evaluate_time_batch(s, d, std::vector<double>(d.size(), bound));
+  ASSERT_EQ(got.size(), d.size());
+  int stopped = 0, kept = 0;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const std::string what = "design " + std::to_string(k) + " " + network::to_string(d[k], true);
+    if (!got[k].stopped) {
+      ++kept;
+      expect_same(got[k], full[k], what);
+      continue;
+    }
+    ++stopped;
+    ASSERT_TRUE(full[k].message.empty()) << what << ": a failing design runs to the end";
+    EXPECT_TRUE(full[k].cost.J > bound || !full[k].cost.feasible) << what << " could have won";
+    EXPECT_LE(got[k].cost.J, full[k].cost.J) << what;  // a lower bound
+    EXPECT_EQ(got[k].cost.speed, std::max(s.speeds[0], s.speeds[1])) << what << ": only the fastest speed ran";
+    // The same stop for the design alone (a Dask task's run_check of a CheckTask with the bound).
+    const std::vector<optim::CheckTask> as_task{{"", {}},           {"k", {{"k", 1e4}}},  {"k", {{"k", INFINITY}}},
+                                                {"c", {{"c", 1e3}}}, {"k-c", {{"k", 1e9}, {"c", 1e-3}}},
+                                                {"b|c", {{"b", 10}, {"c", 100}}}};  // designs(s, false) as check tasks
+    optim::CheckTask task = as_task.at(k);
+    task.time = true, task.stop_above = bound;
+    const optim::CheckResult one = optim::run_check(s, task);
+    EXPECT_TRUE(one.stopped) << what;
+    EXPECT_EQ(one.cost.J, got[k].cost.J) << what;
+  }
+  EXPECT_GT(stopped, 0);
+  EXPECT_GT(kept, 3);  // the failing ones, the bound's own design and the better
+  // No bound (+∞) is evaluate_time_batch without bounds; a bound per design or none.
+  const std::vector<optim::BatchEvaluation> none = optim::evaluate_time_batch(s, {d[0], d[1]}, {INFINITY, INFINITY});
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_FALSE(none[k].stopped);
+    expect_same(none[k], full[k], "no bound " + std::to_string(k));
+  }
+  EXPECT_THROW(optim::evaluate_time_batch(s, d, {bound}), InvalidArgument);
 }
 
 }  // namespace test_optim_study_batch

@@ -135,6 +135,8 @@ TEST(StudyFeAll, TheScreenRefinesTheBestOfTheCoarseCandidatesByTheFineStage) {
   const std::string old_refine = "refine: {best_networks: 3, initial_step: 0.3, min_step: 0.1, max_evaluations: 5}\n";
   text.replace(text.find(old_refine), old_refine.size(),
                "refine: {best_networks: 2, screen: 4, initial_step: 0.3, min_step: 0.1, max_evaluations: 2}\n");
+  // Two speeds: the early stops run the faster first and may stop a candidate after it (issue 50).
+  text.replace(text.find("speeds: {from: 200, to: 200, step: 10"), 37, "speeds: {from: 200, to: 250, step: 50");
   const optim::Study s = io::load_study(write_study("fe_screen.yaml", text));
   ASSERT_EQ(s.refine_screen, 4);
   const optim::StudyOutcome o = optim::run_study(s);
@@ -152,18 +154,35 @@ TEST(StudyFeAll, TheScreenRefinesTheBestOfTheCoarseCandidatesByTheFineStage) {
   }
   ASSERT_EQ(candidates.size(), 4u);
   ASSERT_EQ(o.screened.size(), 4u);
+  // Each candidate evaluated here in full, by hand: the screen without early stops (issue 50). The first two by
+  // the coarse rank run in full; a later one stops once it is worse than both (its J a lower bound).
+  std::vector<double> full(4);
+  for (std::size_t r = 0; r < 4; ++r)
+    full[r] = optim::evaluate(s, optim::design_network(candidates[r].second.first, candidates[r].second.second)).penalised();
+  std::vector<std::size_t> by_hand{0, 1, 2, 3};
+  std::stable_sort(by_hand.begin(), by_hand.end(), [&](std::size_t a, std::size_t b) { return full[a] < full[b]; });
   for (std::size_t k = 0; k < o.screened.size(); ++k) {
     const optim::Screened& c = o.screened[k];
     ASSERT_GE(c.coarse_rank, 1);
-    const auto& [entry, design] = candidates[static_cast<std::size_t>(c.coarse_rank - 1)];
+    const auto r = static_cast<std::size_t>(c.coarse_rank - 1);
+    const auto& [entry, design] = candidates[r];
     EXPECT_EQ(c.entry, entry);
-    const optim::StudyCost here = optim::evaluate(s, optim::design_network(design.first, design.second));
-    EXPECT_EQ(c.cost.J, here.J) << design.first;  // the same design on the same line: bit for bit
     EXPECT_EQ(c.refined, k < 2);
+    if (c.stopped) {
+      EXPECT_GE(r, 2u) << design.first;  // the first two are the incumbents
+      EXPECT_LE(c.cost.J, full[r]) << design.first;
+      EXPECT_GT(full[r], std::max(full[0], full[1])) << design.first;
+      continue;
+    }
+    EXPECT_EQ(c.cost.penalised(), full[r]) << design.first;  // the same design on the same line: bit for bit
+    if (k < 2) {
+      EXPECT_EQ(by_hand[k], r) << "rank " << k + 1;  // the refined are the full evaluations' best two
+    }
     if (k > 0) {
       EXPECT_LE(o.screened[k - 1].cost.penalised(), c.cost.penalised());  // best first
     }
   }
+  EXPECT_GE(std::count_if(o.screened.begin(), o.screened.end(), [](const auto& c) { return c.stopped; }), 1);
   // The refined networks are the screen's best two, each refined from the point the screen evaluated.
   ASSERT_EQ(o.results.size(), 2u);
   std::vector<std::size_t> refined_entries;

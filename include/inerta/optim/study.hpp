@@ -184,6 +184,9 @@ StudyCost evaluate(const Study& study, const network::Network& net);
 struct BatchEvaluation {
   StudyCost cost;
   std::exception_ptr error;  ///< nullptr: `cost` holds
+  /// Stopped early (evaluate_time_batch's `stop_above`): `cost` is of the runs done, J a lower bound of the
+  /// design's J; either that J already exceeds the bound or a limit is broken (cost.feasible false).
+  bool stopped = false;
   /// The cost, or the design's exception rethrown.
   const StudyCost& get() const;
 };
@@ -199,7 +202,14 @@ std::vector<BatchEvaluation> evaluate_batch(const Study& study, const std::vecto
 /// commissioned on its own (design_pantographs; its exception is the design's), then per catenary the designs'
 /// trains in lanes (analysis::sweep_lanes, lane_chunk at a time), the (chunk, catenary) pairs and their speeds
 /// in parallel; a design's exception is its first failing catenary's.
-std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets);
+/// Early stops (issue 50): `stop_above[k]` (empty, or one per design; +∞: none) is a feasible incumbent's J.
+/// With a finite bound the speeds run in rounds, the fastest first (every catenary's run at that speed); after
+/// a round a design whose J over the runs done (J is a maximum over runs: a lower bound) exceeds its bound, or
+/// that has broken a limit, cannot rank ahead of the incumbent: its remaining runs are skipped (stopped). A
+/// design that is not stopped gets evaluate_time's cost bit for bit; one whose run failed runs to the end
+/// (its exception is evaluate_time's).
+std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets,
+                                                 const std::vector<double>& stop_above = {});
 
 /// The limits applied to the sweeps of each catenary (sets J, penalised, feasible, violation and the
 /// worst limited quantities); `sweeps[i]` under study.catenaries[i].

@@ -51,10 +51,15 @@ struct CheckTask {
   std::string layout;
   network::Params values;
   bool time = false;
+  /// Early stop (a time-domain evaluation; issue 50): a feasible incumbent's J. The evaluation stops once the
+  /// design cannot rank ahead of it (evaluate_time_batch's stop_above); +∞: evaluated in full.
+  double stop_above = INFINITY;
 };
 struct CheckResult {
   StudyCost cost;
   std::string failure;  ///< a NumericalError's message (cost.J = ∞), else ""
+  /// Stopped early (CheckTask::stop_above): cost is of the runs done, its J a lower bound; it ranks behind the incumbent.
+  bool stopped = false;
 };
 /// What a check task computes: evaluate or evaluate_time of the design.
 CheckResult run_check(const Study& study, const CheckTask& task);
@@ -140,6 +145,11 @@ struct StudyOptions {
   bool report = false;
   ReportOptions report_options;
   int rechecks = 5;  ///< `layouts: all` (J2): re-check the best few distinct feasible designs in the time domain
+  /// Early stops where they are exact (issue 50): the re-checks after the fast path's best (their incumbent) and
+  /// a screen's candidates after the first best_networks (the incumbent: the worst of those to be refined) stop
+  /// once they cannot rank ahead of it. The winner, the networks refined and every design evaluated in full are
+  /// the same without them; a stopped design is reported with its J as a lower bound ("stopped: J ≥ x").
+  bool early_stops = true;
 };
 
 /// A `layouts: all` J2 study's time-domain re-check of one design.
@@ -149,6 +159,7 @@ struct Recheck {
   StudyCost time;          ///< its J2 in the time domain (J = ∞ if it failed)
   std::string failure;     ///< why the time-domain run failed, or ""
   double settling_spans = 0;  ///< the slowest free vibration's decay (periodic path), spans; 0 if unknown
+  bool stopped = false;       ///< stopped early behind the best (StudyOptions::early_stops): time.J is a lower bound
 };
 
 /// Multi-fidelity `layouts: all`: where a refined network came from.
@@ -166,6 +177,7 @@ struct Screened {
   StudyCost cost;         ///< here, at its coarse optimum (J = ∞ if the evaluation failed)
   std::string failure;    ///< why the evaluation failed, or ""
   bool refined = false;   ///< among the best_networks best by `cost`: refined
+  bool stopped = false;   ///< stopped early, behind the refined (StudyOptions::early_stops): cost.J is a lower bound
 };
 
 /// The design a study recommends.
