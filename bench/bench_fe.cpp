@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "inerta/analysis/contact_statistics.hpp"
 #include "inerta/analysis/simulate.hpp"
@@ -15,6 +16,7 @@
 #include "inerta/io/study_file.hpp"
 #include "inerta/network/layouts.hpp"
 #include "inerta/optim/study.hpp"
+#include "inerta/optim/study_run.hpp"
 
 using namespace inerta;
 
@@ -268,3 +270,67 @@ static void BM_Lockstep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_Lockstep)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+// A re-check with the early stops (issue 50 item 4): the incumbent evaluated in full first, the other seven
+// in lanes with its J as their bound (optim::StudyOptions::early_stops: the fastest speed first, a design
+// stopped once it cannot rank ahead), against the eight one at a time. Two incumbents: the best of the eight
+// (a fast path that ranked right) and the stock suspension (arg 0). The winner and every design not stopped
+// are checked against the one-at-a-time costs.
+static void BM_LockstepRecheck(benchmark::State& state) {
+  const optim::Study& s = real_line_study();
+  const std::vector<network::Network> designs = eight_designs(s);
+  using clock = std::chrono::steady_clock;
+  for (auto _ : state) {
+    const auto t0 = clock::now();
+    std::vector<optim::StudyCost> alone;
+    for (const network::Network& d : designs) alone.push_back(optim::evaluate(s, d));
+    const auto t1 = clock::now();
+    std::vector<double> pen;
+    for (const auto& c : alone) pen.push_back(c.penalised());
+    const std::size_t best = optim::best_design(pen);
+    const std::size_t lead = state.range(0) == 0 ? 0 : best;
+    const auto t2 = clock::now();
+    const optim::StudyCost incumbent = optim::evaluate_batch(s, {designs[lead]}).at(0).get();
+    std::vector<network::Network> rest;
+    std::vector<std::size_t> at;
+    for (std::size_t k = 0; k < designs.size(); ++k)
+      if (k != lead) rest.push_back(designs[k]), at.push_back(k);
+    const optim::EarlyStop stop = optim::EarlyStop::behind(incumbent);
+    const double bound = stop.above;
+    const std::vector<optim::BatchEvaluation> got = optim::evaluate_time_batch(s, rest, std::vector<optim::EarlyStop>(rest.size(), stop));
+    const auto t3 = clock::now();
+    int stopped = 0;
+    std::vector<double> ranked(designs.size(), INFINITY);
+    ranked[lead] = incumbent.penalised();
+    for (std::size_t j = 0; j < rest.size(); ++j) {
+      const std::size_t k = at[j];
+      if (got[j].error) {
+        state.SkipWithError("a design failed");
+        return;
+      }
+      if (got[j].stopped) {
+        ++stopped;
+        if (!(alone[k].penalised() > bound)) {
+          state.SkipWithError("a stopped design could have won");
+          return;
+        }
+        continue;
+      }
+      if (got[j].cost.J != alone[k].J) {
+        state.SkipWithError("a design's cost differs from its own evaluation");
+        return;
+      }
+      ranked[k] = got[j].cost.penalised();
+    }
+    if (optim::best_design(ranked) != best) {
+      state.SkipWithError("the early stops changed the winner");
+      return;
+    }
+    const double one = std::chrono::duration<double>(t1 - t0).count(), recheck = std::chrono::duration<double>(t3 - t2).count();
+    state.counters["one_at_a_time_s"] = one;
+    state.counters["recheck_s"] = recheck;
+    state.counters["stopped"] = stopped;
+    state.counters["throughput_ratio"] = one / recheck;
+  }
+}
+BENCHMARK(BM_LockstepRecheck)->Arg(1)->Arg(0)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();

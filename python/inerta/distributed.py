@@ -237,7 +237,8 @@ class DaskExecutor(_inerta.StudyExecutor):
         return results
 
     def check(self, study, tasks):
-        keys = [(t.layout, _params_key(t.values), t.time, t.stop_above) for t in tasks]
+        keys = [(t.layout, _params_key(t.values), t.time, t.stop_above, t.stop_catenary,
+                 t.stop_speed if t.stop_speed == t.stop_speed else None) for t in tasks]  # NaN: no key equals it
         missing = [i for i, k in enumerate(keys) if k not in self.checks]
         futures = [self.client.submit(_check_task, self.path, self.stamp, tasks[i], pure=False) for i in missing]
         self.stats["checks_sent"] += len(futures)

@@ -100,20 +100,27 @@ static void bind_study_tasks(py::module_& m) {
   py::class_<optim::CheckTask>(m, "CheckTask",
                                "One design to evaluate: the default suspension (layout '') or a layout's values, by the "
                                "study's method or (time) in the time domain.")
-      .def(py::init([](std::string layout, network::Params values, bool time, double stop_above) {
-             return optim::CheckTask{std::move(layout), std::move(values), time, stop_above};
+      .def(py::init([](std::string layout, network::Params values, bool time, double above, int catenary, double speed) {
+             return optim::CheckTask{std::move(layout), std::move(values), time, optim::EarlyStop{above, catenary, speed}};
            }),
            py::arg("layout") = "", py::arg("values") = network::Params{}, py::arg("time") = false,
-           py::arg("stop_above") = INFINITY)
+           py::arg("stop_above") = INFINITY, py::arg("stop_catenary") = -1, py::arg("stop_speed") = NAN)
       .def_readonly("layout", &optim::CheckTask::layout)
       .def_readonly("values", &optim::CheckTask::values)
       .def_readonly("time", &optim::CheckTask::time)
-      .def_readonly("stop_above", &optim::CheckTask::stop_above,
-                    "a feasible incumbent's J: a time-domain evaluation stops once the design ranks behind it (inf: none)")
-      .def(py::pickle([](const optim::CheckTask& t) { return py::make_tuple(t.layout, t.values, t.time, t.stop_above); },
+      .def_property_readonly("stop_above", [](const optim::CheckTask& t) { return t.stop.above; },
+                             "a feasible incumbent's J: a time-domain evaluation stops once the design ranks behind it (inf: none)")
+      .def_property_readonly("stop_catenary", [](const optim::CheckTask& t) { return t.stop.catenary; },
+                             "the incumbent's worst run, run first: its catenary (index; -1 unknown)")
+      .def_property_readonly("stop_speed", [](const optim::CheckTask& t) { return t.stop.speed; }, "and its speed, m/s")
+      .def(py::pickle([](const optim::CheckTask& t) {
+                        return py::make_tuple(t.layout, t.values, t.time, t.stop.above, t.stop.catenary, t.stop.speed);
+                      },
                       [](const py::tuple& t) {
-                        return optim::CheckTask{t[0].cast<std::string>(), t[1].cast<network::Params>(), t[2].cast<bool>(),
-                                                t.size() > 3 ? t[3].cast<double>() : INFINITY};
+                        optim::CheckTask task{t[0].cast<std::string>(), t[1].cast<network::Params>(), t[2].cast<bool>(), {}};
+                        if (t.size() > 5)  // a checkpoint written before the early stops has three
+                          task.stop = {t[3].cast<double>(), t[4].cast<int>(), t[5].cast<double>()};
+                        return task;
                       }));
   py::class_<optim::CheckResult>(m, "CheckResult", "A design's cost, or why its evaluation failed.")
       .def_readonly("cost", &optim::CheckResult::cost)

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <map>
 #include <optional>
 
 #include "inerta/analysis/contact_statistics.hpp"
@@ -218,12 +219,61 @@ std::vector<BatchEvaluation> evaluate_batch(const Study& study, const std::vecto
   return out;
 }
 
+EarlyStop EarlyStop::behind(const StudyCost& incumbent) {
+  EarlyStop e;
+  if (!incumbent.feasible || !std::isfinite(incumbent.J)) return e;
+  e.above = incumbent.J, e.catenary = incumbent.catenary, e.speed = incumbent.speed;
+  return e;
+}
+
+namespace {
+// Runs of one catenary at some of the study's speeds (indices, in the study's order).
+struct Piece {
+  std::size_t catenary = 0;
+  std::vector<std::size_t> speeds;
+};
+using Round = std::vector<Piece>;
+
+// A design's rounds: without a bound every run at once; with one, the incumbent's worst run, the other
+// catenaries at its speed, then each other speed (the fastest first) on every catenary.
+std::vector<Round> rounds_of(const Study& study, const EarlyStop& stop) {
+  const std::size_t nc = study.catenaries.size(), ns = study.speeds.size();
+  std::vector<Round> rounds;
+  if (!std::isfinite(stop.above)) {
+    Round all;
+    for (std::size_t i = 0; i < nc; ++i) {
+      all.push_back({i, {}});
+      for (std::size_t s = 0; s < ns; ++s) all.back().speeds.push_back(s);
+    }
+    return {all};
+  }
+  std::vector<std::size_t> order(ns);
+  for (std::size_t s = 0; s < ns; ++s) order[s] = s;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return study.speeds[a] > study.speeds[b]; });
+  const auto hint = std::find(study.speeds.begin(), study.speeds.end(), stop.speed);
+  const bool worst = hint != study.speeds.end() && stop.catenary >= 0 && static_cast<std::size_t>(stop.catenary) < nc;
+  const std::size_t first = worst ? static_cast<std::size_t>(hint - study.speeds.begin()) : order.front();
+  if (worst) rounds.push_back({{static_cast<std::size_t>(stop.catenary), {first}}});
+  Round rest;
+  for (std::size_t i = 0; i < nc; ++i)
+    if (!worst || i != static_cast<std::size_t>(stop.catenary)) rest.push_back({i, {first}});
+  if (!rest.empty()) rounds.push_back(rest);
+  for (std::size_t s : order) {
+    if (s == first) continue;
+    Round r;
+    for (std::size_t i = 0; i < nc; ++i) r.push_back({i, {s}});
+    rounds.push_back(r);
+  }
+  return rounds;
+}
+}  // namespace
+
 std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets,
-                                                 const std::vector<double>& stop_above) {
+                                                 const std::vector<EarlyStop>& stops) {
   const std::size_t n = nets.size(), nc = study.catenaries.size(), ns = study.speeds.size();
-  if (!stop_above.empty() && stop_above.size() != n)
-    throw InvalidArgument(fmt::format("evaluate_time_batch: {} stop bounds for {} designs", stop_above.size(), n));
-  auto bound = [&](std::size_t k) { return stop_above.empty() ? INFINITY : stop_above[k]; };
+  if (!stops.empty() && stops.size() != n)
+    throw InvalidArgument(fmt::format("evaluate_time_batch: {} early stops for {} designs", stops.size(), n));
+  auto stop_of = [&](std::size_t k) { return stops.empty() ? EarlyStop{} : stops[k]; };
   std::vector<BatchEvaluation> out(n);
   std::vector<std::optional<DesignPantographs>> designs(n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t k) {  // commissioning: each design on its own
@@ -234,17 +284,10 @@ std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::
     }
   });
   std::vector<std::size_t> live;
+  std::vector<std::vector<Round>> rounds(n);
+  std::size_t most = 0;
   for (std::size_t k = 0; k < n; ++k)
-    if (designs[k]) live.push_back(k);
-  // The rounds (speed indices): every speed at once; with early stops one speed a round, the fastest first.
-  std::vector<std::size_t> order(ns);
-  for (std::size_t s = 0; s < ns; ++s) order[s] = s;
-  std::vector<std::vector<std::size_t>> rounds{order};
-  if (std::any_of(live.begin(), live.end(), [&](std::size_t k) { return std::isfinite(bound(k)); })) {
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return study.speeds[a] > study.speeds[b]; });
-    rounds.clear();
-    for (std::size_t s : order) rounds.push_back({s});
-  }
+    if (designs[k]) live.push_back(k), rounds[k] = rounds_of(study, stop_of(k)), most = std::max(most, rounds[k].size());
   // Per design and catenary: each speed's result, and the exception of its first failing speed (as sweep).
   struct Runs {
     std::vector<std::optional<analysis::SpeedResult>> at;
@@ -272,41 +315,56 @@ std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::
         if (x) *x = std::move(sweeps[i][q++]);
     }
   };
-  for (std::size_t round = 0; round < rounds.size(); ++round) {
-    std::vector<std::size_t> run;
+  for (std::size_t r = 0; r < most; ++r) {
+    // The round's pieces, each with the designs that run it: lanes of at most lane_chunk designs, and at least
+    // as many lanes groups as cores while designs remain to share them.
+    std::map<std::pair<std::size_t, std::vector<std::size_t>>, std::vector<std::size_t>> groups;
     for (std::size_t k : live)
-      if (!out[k].stopped) run.push_back(k);
-    if (run.empty()) break;
-    std::vector<double> speeds;
-    for (std::size_t s : rounds[round]) speeds.push_back(study.speeds[s]);
-    // Chunks of lane_chunk designs in order; every (chunk, catenary) pair's lanes in parallel.
-    const std::size_t chunks = (run.size() + lane_chunk - 1) / lane_chunk;
-    std::vector<std::vector<analysis::LaneSweep>> got(chunks * nc);
-    tbb::parallel_for(std::size_t{0}, chunks * nc, [&](std::size_t task) {
-      const std::size_t c = task / nc, i = task % nc;
+      if (!out[k].stopped && r < rounds[k].size())
+        for (const Piece& p : rounds[k][r]) groups[{p.catenary, p.speeds}].push_back(k);
+    if (groups.empty()) break;
+    struct Task {
+      std::size_t catenary;
+      const std::vector<std::size_t>* speeds;
+      std::vector<std::size_t> designs;
+      std::vector<analysis::LaneSweep> got;
+    };
+    std::vector<Task> tasks;
+    const std::size_t cores = static_cast<std::size_t>(std::max(1, tbb::info::default_concurrency()));
+    const std::size_t per_group = (cores + groups.size() - 1) / groups.size();
+    for (const auto& [piece, ks] : groups) {
+      const std::size_t chunks = std::max((ks.size() + lane_chunk - 1) / lane_chunk, std::min(ks.size(), per_group));
+      for (std::size_t c = 0; c < chunks; ++c) {
+        Task t{piece.first, &piece.second, {}, {}};
+        for (std::size_t j = c * ks.size() / chunks; j < (c + 1) * ks.size() / chunks; ++j) t.designs.push_back(ks[j]);
+        tasks.push_back(std::move(t));
+      }
+    }
+    tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t q) {
+      Task& t = tasks[q];
       std::vector<std::vector<catenary::PantographOnLine>> trains;
-      for (std::size_t j = c * lane_chunk; j < std::min(run.size(), (c + 1) * lane_chunk); ++j)
-        trains.push_back(train_of(study, *designs[run[j]], i));
-      got[task] = analysis::sweep_lanes(trains, *study.catenaries[i], speeds, run_options(study));
+      for (std::size_t k : t.designs) trains.push_back(train_of(study, *designs[k], t.catenary));
+      std::vector<double> speeds;
+      for (std::size_t s : *t.speeds) speeds.push_back(study.speeds[s]);
+      t.got = analysis::sweep_lanes(trains, *study.catenaries[t.catenary], speeds, run_options(study));
     });
-    const std::size_t first = *std::min_element(rounds[round].begin(), rounds[round].end());
-    for (std::size_t j = 0; j < run.size(); ++j)
-      for (std::size_t i = 0; i < nc; ++i) {
-        analysis::LaneSweep& s = got[(j / lane_chunk) * nc + i][j % lane_chunk];
-        Runs& r = runs[run[j]][i];
-        if (s.error) {
-          if (!r.error || first < r.error_at) r.error = s.error, r.error_at = first;
+    for (Task& t : tasks)
+      for (std::size_t j = 0; j < t.designs.size(); ++j) {
+        analysis::LaneSweep& s = t.got[j];
+        Runs& x = runs[t.designs[j]][t.catenary];
+        if (s.error) {  // its first speed's (the speeds in the study's order)
+          if (!x.error || t.speeds->front() < x.error_at) x.error = s.error, x.error_at = t.speeds->front();
           continue;
         }
-        for (std::size_t q = 0; q < speeds.size(); ++q) r.at[rounds[round][q]] = std::move(s.results[q]);
+        for (std::size_t q = 0; q < t.speeds->size(); ++q) x.at[(*t.speeds)[q]] = std::move(s.results[q]);
       }
-    if (round + 1 == rounds.size()) break;
-    for (std::size_t k : run) {  // the stop rule: J over the runs done is a lower bound of J
-      if (!std::isfinite(bound(k)) || failed(k)) continue;
+    for (std::size_t k : live) {  // the stop rule: J over the runs done is a lower bound of J
+      const EarlyStop stop = stop_of(k);
+      if (out[k].stopped || r + 1 >= rounds[k].size() || !std::isfinite(stop.above) || failed(k)) continue;
       auto sweeps = take(k);
       StudyCost c = cost_of(study, sweeps, designs[k]->commissioning);
       put_back(k, sweeps);
-      if (!c.feasible || !(c.J <= bound(k))) out[k].cost = std::move(c), out[k].stopped = true;
+      if (!c.feasible || !(c.J <= stop.above)) out[k].cost = std::move(c), out[k].stopped = true;
     }
   }
   for (std::size_t k : live) {

@@ -77,17 +77,24 @@ namespace {
 class NoEvents : public StudyEvents {};
 
 // Checks with exact early stops (issue 50): the first `lead` tasks in full; if each is feasible, the worst of
-// their costs is the incumbent the others must beat (CheckTask::stop_above), else the others run in full too.
+// them is the incumbent the others must beat (CheckTask::stop: its J, its worst run first), else the others
+// run in full too.
 // Whichever `lead` designs rank first among all, the stopped ones rank behind every one of the lead.
 std::vector<CheckResult> checks_behind(const Study& study, const std::vector<CheckTask>& tasks, std::size_t lead,
                                        StudyExecutor& ex) {
   if (lead == 0 || lead >= tasks.size()) return ex.check(study, tasks);
   std::vector<CheckResult> out = ex.check(study, std::vector<CheckTask>(tasks.begin(), tasks.begin() + static_cast<std::ptrdiff_t>(lead)));
-  double bound = -INFINITY;
-  for (const CheckResult& c : out)
-    bound = c.failure.empty() && c.cost.feasible && std::isfinite(c.cost.J) ? std::max(bound, c.cost.J) : INFINITY;
+  EarlyStop stop = EarlyStop::behind(out.front().cost);  // the lead's worst: its J and worst run
+  for (const CheckResult& c : out) {
+    const EarlyStop e = EarlyStop::behind(c.cost);
+    if (!c.failure.empty() || !std::isfinite(e.above)) {
+      stop = EarlyStop{};  // an incumbent outside the limits or failed: no stops
+      break;
+    }
+    if (e.above > stop.above) stop = e;
+  }
   std::vector<CheckTask> rest(tasks.begin() + static_cast<std::ptrdiff_t>(lead), tasks.end());
-  for (CheckTask& t : rest) t.stop_above = bound;
+  for (CheckTask& t : rest) t.stop = stop;
   for (CheckResult& c : ex.check(study, rest)) out.push_back(std::move(c));
   return out;
 }

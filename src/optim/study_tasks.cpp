@@ -18,8 +18,8 @@ CheckResult run_check(const Study& study, const CheckTask& task) {
   const network::Network net = task.layout.empty() ? default_suspension(study) : design_network(task.layout, task.values);
   CheckResult r;
   try {
-    if ((task.time || study.method == Study::Method::Time) && std::isfinite(task.stop_above)) {
-      const BatchEvaluation b = evaluate_time_batch(study, {net}, {task.stop_above}).at(0);
+    if ((task.time || study.method == Study::Method::Time) && std::isfinite(task.stop.above)) {
+      const BatchEvaluation b = evaluate_time_batch(study, {net}, {task.stop}).at(0);
       r.cost = b.get(), r.stopped = b.stopped;
     } else {
       r.cost = task.time ? evaluate_time(study, net) : evaluate(study, net);
@@ -35,17 +35,17 @@ std::vector<CheckResult> run_checks(const Study& study, const std::vector<CheckT
   // The designs by kind of evaluation: the time domain (lanes) and the study's own periodic path.
   std::vector<network::Network> time, own;
   std::vector<std::size_t> time_at, own_at;
-  std::vector<double> stop_above;
+  std::vector<EarlyStop> stops;
   for (std::size_t k = 0; k < tasks.size(); ++k) {
     const CheckTask& t = tasks[k];
     network::Network net = t.layout.empty() ? default_suspension(study) : design_network(t.layout, t.values);
     if (t.time || study.method == Study::Method::Time)
-      time.push_back(std::move(net)), time_at.push_back(k), stop_above.push_back(t.stop_above);
+      time.push_back(std::move(net)), time_at.push_back(k), stops.push_back(t.stop);
     else
       own.push_back(std::move(net)), own_at.push_back(k);
   }
   std::vector<BatchEvaluation> got(tasks.size());
-  const std::vector<BatchEvaluation> a = evaluate_time_batch(study, time, stop_above), b = evaluate_batch(study, own);
+  const std::vector<BatchEvaluation> a = evaluate_time_batch(study, time, stops), b = evaluate_batch(study, own);
   for (std::size_t j = 0; j < a.size(); ++j) got[time_at[j]] = a[j];
   for (std::size_t j = 0; j < b.size(); ++j) got[own_at[j]] = b[j];
   std::vector<CheckResult> out(tasks.size());

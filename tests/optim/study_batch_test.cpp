@@ -219,23 +219,27 @@ TEST(StudyBatch, ThePeriodicPathAndTheTimeDomainOnALumpedLineGiveEachDesignItsOw
 }
 
 TEST(StudyBatch, EarlyStopsSkipOnlyDesignsThatCannotBeatTheIncumbentAndLeaveTheOthersBitForBit) {
-  // Early stops (issue 50 item 2): with a bound (a feasible incumbent's J) the speeds run in rounds, the fastest
-  // first; a design is stopped once its J over the runs done exceeds the bound. A stopped design is worse than the
-  // bound in full, its J a lower bound from the fastest speed's runs alone; every other design's result is
-  // evaluate's bit for bit (a failing design's exception too).
+  // Early stops (issue 50 item 2): behind an incumbent (its J, its worst run first, then that speed's other
+  // catenary, then the other speed) a design is stopped once its J over the runs done exceeds the incumbent's.
+  // A stopped design is worse than the incumbent in full, its J a lower bound from the incumbent's worst speed;
+  // every other design's result is evaluate's bit for bit (a failing design's exception too).
   const optim::Study s = io::load_study(write_study("batch_stops.yaml", kFe));
   ASSERT_EQ(s.speeds.size(), 2u);
   const std::vector<network::Network> d = designs(s, false);
   std::vector<Alone> full;
-  std::vector<double> feasible_J;
+  std::vector<std::size_t> feasible;
   for (const network::Network& n : d) {
     full.push_back(alone([&] { return optim::evaluate(s, n); }));
-    if (full.back().message.empty() && full.back().cost.feasible) feasible_J.push_back(full.back().cost.J);
+    if (full.back().message.empty() && full.back().cost.feasible) feasible.push_back(full.size() - 1);
   }
-  ASSERT_GE(feasible_J.size(), 3u);
-  std::sort(feasible_J.begin(), feasible_J.end());
-  const double bound = feasible_J[feasible_J.size() / 2];  // the median: designs on both sides of it
-  const std::vector<optim::BatchEvaluation> got = optim::evaluate_time_batch(s, d, std::vector<double>(d.size(), bound));
+  ASSERT_GE(feasible.size(), 3u);
+  std::sort(feasible.begin(), feasible.end(), [&](std::size_t a, std::size_t b) { return full[a].cost.J < full[b].cost.J; });
+  // The incumbent: the median design (designs on both sides of it).
+  const optim::EarlyStop stop = optim::EarlyStop::behind(full[feasible[feasible.size() / 2]].cost);
+  const double bound = stop.above;
+  ASSERT_TRUE(std::isfinite(bound));
+  ASSERT_GE(stop.catenary, 0);
+  const std::vector<optim::BatchEvaluation> got = optim::evaluate_time_batch(s, d, std::vector<optim::EarlyStop>(d.size(), stop));
   ASSERT_EQ(got.size(), d.size());
   int stopped = 0, kept = 0;
   for (std::size_t k = 0; k < d.size(); ++k) {
@@ -249,26 +253,34 @@ TEST(StudyBatch, EarlyStopsSkipOnlyDesignsThatCannotBeatTheIncumbentAndLeaveTheO
     ASSERT_TRUE(full[k].message.empty()) << what << ": a failing design runs to the end";
     EXPECT_TRUE(full[k].cost.J > bound || !full[k].cost.feasible) << what << " could have won";
     EXPECT_LE(got[k].cost.J, full[k].cost.J) << what;  // a lower bound
-    EXPECT_EQ(got[k].cost.speed, std::max(s.speeds[0], s.speeds[1])) << what << ": only the fastest speed ran";
+    EXPECT_EQ(got[k].cost.speed, stop.speed) << what << ": only the incumbent's worst speed ran";
     // The same stop for the design alone (a Dask task's run_check of a CheckTask with the bound).
     const std::vector<optim::CheckTask> as_task{{"", {}},           {"k", {{"k", 1e4}}},  {"k", {{"k", INFINITY}}},
                                                 {"c", {{"c", 1e3}}}, {"k-c", {{"k", 1e9}, {"c", 1e-3}}},
                                                 {"b|c", {{"b", 10}, {"c", 100}}}};  // designs(s, false) as check tasks
     optim::CheckTask task = as_task.at(k);
-    task.time = true, task.stop_above = bound;
+    task.time = true, task.stop = stop;
     const optim::CheckResult one = optim::run_check(s, task);
     EXPECT_TRUE(one.stopped) << what;
     EXPECT_EQ(one.cost.J, got[k].cost.J) << what;
+    if (stopped == 1) {  // without the worst run: the fastest speed first
+      task.stop = {bound, -1, NAN};
+      const optim::CheckResult fastest = optim::run_check(s, task);
+      if (fastest.stopped) {
+        EXPECT_EQ(fastest.cost.speed, std::max(s.speeds[0], s.speeds[1])) << what;
+      }
+      EXPECT_LE(fastest.cost.J, full[k].cost.J) << what;
+    }
   }
   EXPECT_GT(stopped, 0);
   EXPECT_GT(kept, 3);  // the failing ones, the bound's own design and the better
   // No bound (+∞) is evaluate_time_batch without bounds; a bound per design or none.
-  const std::vector<optim::BatchEvaluation> none = optim::evaluate_time_batch(s, {d[0], d[1]}, {INFINITY, INFINITY});
+  const std::vector<optim::BatchEvaluation> none = optim::evaluate_time_batch(s, {d[0], d[1]}, {{}, {}});
   for (std::size_t k = 0; k < 2; ++k) {
     EXPECT_FALSE(none[k].stopped);
     expect_same(none[k], full[k], "no bound " + std::to_string(k));
   }
-  EXPECT_THROW(optim::evaluate_time_batch(s, d, {bound}), InvalidArgument);
+  EXPECT_THROW(optim::evaluate_time_batch(s, d, {{bound, -1, NAN}}), InvalidArgument);
 }
 
 }  // namespace test_optim_study_batch

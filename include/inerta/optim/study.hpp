@@ -184,7 +184,7 @@ StudyCost evaluate(const Study& study, const network::Network& net);
 struct BatchEvaluation {
   StudyCost cost;
   std::exception_ptr error;  ///< nullptr: `cost` holds
-  /// Stopped early (evaluate_time_batch's `stop_above`): `cost` is of the runs done, J a lower bound of the
+  /// Stopped early (evaluate_time_batch's `stops`): `cost` is of the runs done, J a lower bound of the
   /// design's J; either that J already exceeds the bound or a limit is broken (cost.feasible false).
   bool stopped = false;
   /// The cost, or the design's exception rethrown.
@@ -198,18 +198,26 @@ inline constexpr std::size_t lane_chunk = 8;
 /// evaluate of several designs, each design's result bit for bit evaluate's (or its exception): a time-domain
 /// study runs them through evaluate_time_batch; the periodic fast path evaluates them one after another.
 std::vector<BatchEvaluation> evaluate_batch(const Study& study, const std::vector<network::Network>& nets);
+/// An early stop (issue 50): a feasible incumbent's J, and the run where it reached it (its worst, run first).
+struct EarlyStop {
+  double above = INFINITY;  ///< the incumbent's J; +∞: no stop
+  int catenary = -1;        ///< its worst run: the index in study.catenaries (-1: unknown)
+  double speed = NAN;       ///< and its speed, m/s (one of study.speeds)
+  /// Behind an incumbent: its J and worst run if it is feasible, else no stop.
+  static EarlyStop behind(const StudyCost& incumbent);
+};
 /// evaluate_time of several designs, each bit for bit evaluate_time's (or its exception): each design
 /// commissioned on its own (design_pantographs; its exception is the design's), then per catenary the designs'
 /// trains in lanes (analysis::sweep_lanes, lane_chunk at a time), the (chunk, catenary) pairs and their speeds
 /// in parallel; a design's exception is its first failing catenary's.
-/// Early stops (issue 50): `stop_above[k]` (empty, or one per design; +∞: none) is a feasible incumbent's J.
-/// With a finite bound the speeds run in rounds, the fastest first (every catenary's run at that speed); after
-/// a round a design whose J over the runs done (J is a maximum over runs: a lower bound) exceeds its bound, or
-/// that has broken a limit, cannot rank ahead of the incumbent: its remaining runs are skipped (stopped). A
-/// design that is not stopped gets evaluate_time's cost bit for bit; one whose run failed runs to the end
-/// (its exception is evaluate_time's).
+/// Early stops (`stops`: empty, or one per design): a design with a bound runs in rounds — the incumbent's worst
+/// run, the other catenaries at that speed, then each other speed, the fastest first — and after a round, a
+/// design whose J over the runs done (J is a maximum over runs: a lower bound) exceeds the bound, or that has
+/// broken a limit, cannot rank ahead of the incumbent: its remaining runs are skipped (stopped). Which runs a
+/// design does depends on its own bound alone (a batch or a lone design: the same). A design that is not
+/// stopped gets evaluate_time's cost bit for bit; one whose run failed runs to the end (evaluate_time's exception).
 std::vector<BatchEvaluation> evaluate_time_batch(const Study& study, const std::vector<network::Network>& nets,
-                                                 const std::vector<double>& stop_above = {});
+                                                 const std::vector<EarlyStop>& stops = {});
 
 /// The limits applied to the sweeps of each catenary (sets J, penalised, feasible, violation and the
 /// worst limited quantities); `sweeps[i]` under study.catenaries[i].

@@ -51,14 +51,14 @@ struct CheckTask {
   std::string layout;
   network::Params values;
   bool time = false;
-  /// Early stop (a time-domain evaluation; issue 50): a feasible incumbent's J. The evaluation stops once the
-  /// design cannot rank ahead of it (evaluate_time_batch's stop_above); +∞: evaluated in full.
-  double stop_above = INFINITY;
+  /// Early stop (a time-domain evaluation; issue 50): a feasible incumbent's J and worst run. The evaluation stops
+  /// once the design cannot rank ahead of it (evaluate_time_batch's stops); none: evaluated in full.
+  EarlyStop stop = {};
 };
 struct CheckResult {
   StudyCost cost;
   std::string failure;  ///< a NumericalError's message (cost.J = ∞), else ""
-  /// Stopped early (CheckTask::stop_above): cost is of the runs done, its J a lower bound; it ranks behind the incumbent.
+  /// Stopped early (CheckTask::stop): cost is of the runs done, its J a lower bound; it ranks behind the incumbent.
   bool stopped = false;
 };
 /// What a check task computes: evaluate or evaluate_time of the design.
