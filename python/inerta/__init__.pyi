@@ -22,5 +22,5 @@ def sweep(model: Any, catenary: Any, speeds: Any, *, client: Any = None, contact
     """Speed sweep in the time domain; with client (dask.distributed.Client) one task per speed."""
 
 def optimise(study: Any, *, out: Any = None, client: Any = None, progress: Any = None, checkpoint: Any = None,
-             force: bool = False, stats: Optional[dict] = None) -> StudyOutcome:
+             force: bool = False, stats: Optional[dict] = None, early_stops: bool = True) -> StudyOutcome:
     """A whole study in one call (run_study); with client its evaluations on Dask, with out its files."""

@@ -63,11 +63,16 @@ class CheckTask:
     layout: str
     values: dict[str, float]
     time: bool
-    def __init__(self, layout: str = "", values: dict[str, float] = ..., time: bool = False) -> None: ...
+    stop_above: float
+    stop_catenary: int
+    stop_speed: float
+    def __init__(self, layout: str = "", values: dict[str, float] = ..., time: bool = False, stop_above: float = ...,
+                 stop_catenary: int = -1, stop_speed: float = ...) -> None: ...
 
 class CheckResult:
     cost: StudyCost
     failure: str
+    stopped: bool
 
 class ModelCheckResult:
     cost: ModelCost
@@ -104,8 +109,9 @@ class StudyOptions:
     report: bool
     report_options: ReportOptions
     rechecks: int
+    early_stops: bool
     def __init__(self, *, report: bool = False, report_options: Optional[ReportOptions] = None,
-                 rechecks: int = 5) -> None: ...
+                 rechecks: int = 5, early_stops: bool = True) -> None: ...
 
 class Recheck:
     entry: int
@@ -113,6 +119,7 @@ class Recheck:
     time: StudyCost
     failure: str
     settling_spans: float
+    stopped: bool
 
 class Refinement:
     entry: int
@@ -125,6 +132,7 @@ class Screened:
     cost: StudyCost
     failure: str
     refined: bool
+    stopped: bool
 
 class BestDesign:
     index: int

@@ -234,6 +234,7 @@ def test_the_study_calls_check_their_arguments_by_name():
         (lambda: inerta.run_study(inerta.load_study(path), progress=5), "run_study: progress: expected a callable"),
         (lambda: inerta.optimise(path, client=object()), "optimise: client: expected a dask.distributed.Client"),
         (lambda: inerta.optimise(path, progress=5), "optimise: progress: expected a callable"),
+        (lambda: inerta.optimise(path, early_stops="no"), "optimise: early_stops: expected True or False"),
     ]:
         with pytest.raises(TypeError, match=re.escape(message)):
             call()
