@@ -225,8 +225,11 @@ class Printer : public optim::StudyEvents {
                "optimum (one evaluation each: {} catenaries × {} speeds); the best {} by that are refined\n",
                entries.size(), study_.catenaries.size(), study_.speeds.size(), study_.refine_networks);
     std::fflush(stdout);
+    screen_start_ = std::chrono::steady_clock::now();
   }
   void refining(const std::vector<std::size_t>& entries) override {
+    if (screen_start_)
+      fmt::print("the screen: {:.0f} s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - *screen_start_).count());
     fmt::print("\nrefining the best {} distinct reduced networks of the {} on this study ({} catenaries × {} "
                "speeds, {}; at most {} evaluations each):\n",
                entries.size(), study_.refine_screen > study_.refine_networks ? "screen" : "coarse search", study_.catenaries.size(), study_.speeds.size(),
@@ -287,7 +290,7 @@ class Printer : public optim::StudyEvents {
   // be wrong: issue 24).
   void print_rechecks(const optim::StudyOutcome& o) const {
     fmt::print("\ntime-domain re-check of the best {} distinct designs (analysis::sweep, all catenaries and speeds), "
-               "ranked by the time-domain J2:\n",
+               "ranked by the time-domain J2 (within the limits first):\n",
                std::min<std::size_t>(5, o.entries.size()));
     fmt::print("  {:<44} {:>13} {:>13} {:>9} {:>6} {:>9}\n", "reduced network", "periodic [N]", "time [N]", "periodic", "rank",
                "settles");
@@ -389,6 +392,7 @@ class Printer : public optim::StudyEvents {
   const optim::Study& study_;
   bool tty_;
   const char* u_;  ///< the objective's unit ("N" or "")
+  std::optional<std::chrono::steady_clock::time_point> screen_start_;  ///< a screen's start (its time, printed)
   optim::StructureProgressFn structure_;
   std::function<void(const optim::AdmittanceBound&)> bound_;
   std::string current_;
