@@ -533,6 +533,8 @@ EXCLUDED = {
     "optim::evaluate_time_batch": "inside evaluate_batch (a time-domain study) and the engine's re-checks; "
                                   "evaluate_time one design at a time gives the same",
     "optim::design_costs": "the engine's local DesignBatch (lanes); design_cost one design at a time gives the same",
+    "optim::EarlyStop": "a check's early stop: CheckTask(stop_above=, stop_catenary=, stop_speed=) and "
+                        "StudyOptions(early_stops=)",
     "optim::run_checks": "the LocalExecutor's checks; run_check one task at a time gives the same",
     "analysis::run_lanes": "lanes of designs on a finite line, run by evaluate_batch; run_speed gives one train's",
     "analysis::sweep_lanes": "lanes of designs, run by evaluate_batch; sweep gives one train's",
