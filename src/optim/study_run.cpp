@@ -100,7 +100,7 @@ std::vector<CheckResult> checks_behind(const Study& study, const std::vector<Che
 }
 
 // The best few distinct feasible designs of the fast path, re-checked in the time domain (the reference),
-// ranked by their time-domain J2 (issue 24: the fast path can be off by a few per cent).
+// ranked by their time-domain cost, within the limits first (issue 24: the fast path can be off by a few per cent).
 // Early stops: the fast path's best first, in full (the incumbent); the others stop once they rank behind it.
 std::vector<Recheck> recheck(const Study& study, const std::vector<StructureEntry>& entries, int count, bool early_stops,
                              StudyExecutor& ex) {
